@@ -1,0 +1,1 @@
+# rostest and ROS-layer gtests.

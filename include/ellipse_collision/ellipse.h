@@ -1,0 +1,26 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+
+namespace ellipse_collision {
+
+/// A closed 2D ellipse: {center + R(angle) * diag(radius_x, radius_y) * u : |u| <= 1}.
+struct Ellipse {
+  Eigen::Vector2d center{0.0, 0.0};  ///< [m]
+  double radius_x{1.0};              ///< semi-axis along the ellipse's own x axis [m], > 0
+  double radius_y{1.0};              ///< semi-axis along the ellipse's own y axis [m], > 0
+  double angle{0.0};                 ///< counter-clockwise from the frame's x axis to the ellipse's x axis [rad]
+};
+
+/// Why `ellipse` cannot be checked, naming the field and its value ("radius_x = -1 must be > 0"),
+/// or an empty string when it is valid: all fields finite, both radii > 0.
+std::string invalidReason(const Ellipse& ellipse);
+
+/// Radius of the smallest circle about the centre that contains the ellipse [m].
+inline double boundingRadius(const Ellipse& e) { return e.radius_x > e.radius_y ? e.radius_x : e.radius_y; }
+
+/// Radius of the largest circle about the centre that the ellipse contains [m].
+inline double inscribedRadius(const Ellipse& e) { return e.radius_x < e.radius_y ? e.radius_x : e.radius_y; }
+
+}  // namespace ellipse_collision

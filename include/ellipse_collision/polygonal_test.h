@@ -1,0 +1,24 @@
+#pragma once
+
+#include "ellipse_collision/ellipse.h"
+
+namespace ellipse_collision {
+
+/// What the polygonal test could prove. `Unknown` means it ran out of iterations: it is never
+/// a "no collision".
+enum class PolygonalResult { Overlap, Separate, Unknown };
+
+const char* toString(PolygonalResult result);
+
+/// Iteration cap used by overlap(); each iteration halves the angular width of the arcs examined.
+constexpr int kDefaultPolygonalIterations = 6;
+
+/// Niemitalo's polygonal test: the larger ellipse is mapped to the unit circle, and the rim of the
+/// other is enclosed between inscribed and circumscribed polygons that are refined by bisection
+/// around the part of the rim near the circle, at most `max_iterations` times. A hit on an
+/// inscribed polygon proves overlap, a miss of every circumscribed triangle proves separation.
+/// Decisions within a relative rounding margin of the rim are left `Unknown`.
+PolygonalResult polygonalTest(const Ellipse& a, const Ellipse& b,
+                              int max_iterations = kDefaultPolygonalIterations);
+
+}  // namespace ellipse_collision
