@@ -1,0 +1,35 @@
+#pragma once
+
+#include <limits>
+
+#include "relative_shape.h"
+
+namespace ellipse_collision::detail {
+
+/// Q(s) = sum_i weight[i] * s (1 - s) / (lambda[i] (1 - s) + s): the eigenvalue test's function in
+/// the eigenbasis of the other ellipse's shape matrix, in the frame where the unit ellipse is the
+/// unit circle. max over s in (0, 1) of Q is t*^2.
+struct QFunction {
+  double weight[2];  ///< squared components of the centre offset along the eigenvectors
+  double lambda[2];  ///< eigenvalues of axes * axes^T, > 0
+
+  static QFunction fromShape(const RelativeShape& shape);
+};
+
+/// Bounds on max Q: lower <= max Q <= upper (up to rounding).
+struct QMaximum {
+  double lower{0.0};
+  double upper{0.0};
+  int iterations{0};
+};
+
+/// Pass as decision_threshold to converge fully, without the decision exits.
+inline constexpr double kNoDecision = std::numeric_limits<double>::quiet_NaN();
+
+/// Bracketed, safeguarded Newton on Q'. Stops as soon as lower > decision_threshold or
+/// upper <= decision_threshold (certified decisions), or when the bounds agree to ~1e-15.
+QMaximum maximizeQ(const QFunction& q, double decision_threshold);
+
+bool eigenvalueOverlapRelative(const RelativeShape& shape);
+
+}  // namespace ellipse_collision::detail
