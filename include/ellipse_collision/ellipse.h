@@ -13,8 +13,15 @@ struct Ellipse {
   double angle{0.0};                 ///< counter-clockwise from the frame's x axis to the ellipse's x axis [rad]
 };
 
+/// The lengths the collision tests accept [m]. Far wider than any robot needs, and narrow enough
+/// that no ratio or square formed by the tests can overflow or underflow a double.
+constexpr double kMinRadius = 1e-9;
+constexpr double kMaxRadius = 1e9;
+constexpr double kMaxCoordinate = 1e9;
+
 /// Why `ellipse` cannot be checked, naming the field and its value ("radius_x = -1 must be > 0"),
-/// or an empty string when it is valid: all fields finite, both radii > 0.
+/// or an empty string when it is valid: all fields finite, both radii > 0 and within
+/// [kMinRadius, kMaxRadius], centre coordinates within [-kMaxCoordinate, kMaxCoordinate].
 std::string invalidReason(const Ellipse& ellipse);
 
 /// Radius of the smallest circle about the centre that contains the ellipse [m].

@@ -137,14 +137,12 @@ QMaximum maximizeQ(const QFunction& q, double decision_threshold) {
 }  // namespace detail
 
 bool eigenvalueOverlap(const Ellipse& a, const Ellipse& b) {
-  const bool a_is_unit = detail::isLargerUnit(a, b);
-  const auto shape = a_is_unit ? detail::relativeShape(a, b) : detail::relativeShape(b, a);
+  const auto shape = detail::canonicalRelativeShape(a, b);
   return detail::eigenvalueOverlapRelative(shape);
 }
 
 double contactScale(const Ellipse& a, const Ellipse& b) {
-  const bool a_is_unit = detail::isLargerUnit(a, b);
-  const auto shape = a_is_unit ? detail::relativeShape(a, b) : detail::relativeShape(b, a);
+  const auto shape = detail::canonicalRelativeShape(a, b);
   const auto maximum =
       detail::maximizeQ(detail::QFunction::fromShape(shape), detail::kNoDecision);
   return std::sqrt(maximum.lower);

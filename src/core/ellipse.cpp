@@ -31,6 +31,22 @@ std::string invalidReason(const Ellipse& ellipse) {
   if (!(ellipse.radius_y > 0.0)) {
     return "radius_y = " + formatValue(ellipse.radius_y) + " must be > 0";
   }
+  const std::pair<const char*, double> radii[] = {{"radius_x", ellipse.radius_x},
+                                                  {"radius_y", ellipse.radius_y}};
+  for (const auto& [name, value] : radii) {
+    if (value < kMinRadius || value > kMaxRadius) {
+      return std::string(name) + " = " + formatValue(value) + " is outside [" +
+             formatValue(kMinRadius) + ", " + formatValue(kMaxRadius) + "] m";
+    }
+  }
+  const std::pair<const char*, double> coordinates[] = {{"center.x", ellipse.center.x()},
+                                                        {"center.y", ellipse.center.y()}};
+  for (const auto& [name, value] : coordinates) {
+    if (std::abs(value) > kMaxCoordinate) {
+      return std::string(name) + " = " + formatValue(value) + " is outside [-" +
+             formatValue(kMaxCoordinate) + ", " + formatValue(kMaxCoordinate) + "] m";
+    }
+  }
   return {};
 }
 

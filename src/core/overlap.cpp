@@ -20,8 +20,7 @@ bool overlap(const Ellipse& a, const Ellipse& b) {
   const double inscribed = inscribedRadius(a) + inscribedRadius(b);
   if (distance_sq < inscribed * inscribed * (1.0 - kCircleMargin)) return true;
 
-  const auto shape = detail::isLargerUnit(a, b) ? detail::relativeShape(a, b)
-                                                : detail::relativeShape(b, a);
+  const auto shape = detail::canonicalRelativeShape(a, b);
   switch (detail::polygonalTestRelative(shape, kDefaultPolygonalIterations)) {
     case PolygonalResult::Overlap:
       return true;

@@ -140,8 +140,7 @@ PolygonalResult polygonalTestRelative(const RelativeShape& shape, int max_iterat
 }  // namespace detail
 
 PolygonalResult polygonalTest(const Ellipse& a, const Ellipse& b, int max_iterations) {
-  const auto shape = detail::isLargerUnit(a, b) ? detail::relativeShape(a, b)
-                                                : detail::relativeShape(b, a);
+  const auto shape = detail::canonicalRelativeShape(a, b);
   return detail::polygonalTestRelative(shape, max_iterations);
 }
 

@@ -1,6 +1,7 @@
 #include "relative_shape.h"
 
 #include <cmath>
+#include <tuple>
 
 namespace ellipse_collision::detail {
 
@@ -30,6 +31,21 @@ RelativeShape relativeShape(const Ellipse& unit, const Ellipse& other) {
       -s * unit.radius_x * inv_ory, c * unit.radius_y * inv_ory;
   shape.determinant = (other.radius_x * inv_rx) * (other.radius_y * inv_ry);
   return shape;
+}
+
+namespace {
+
+bool precedesAsUnit(const Ellipse& a, const Ellipse& b) {
+  return std::make_tuple(a.radius_x * a.radius_y, a.radius_x, a.radius_y, a.angle, a.center.x(),
+                         a.center.y()) >= std::make_tuple(b.radius_x * b.radius_y, b.radius_x,
+                                                          b.radius_y, b.angle, b.center.x(),
+                                                          b.center.y());
+}
+
+}  // namespace
+
+RelativeShape canonicalRelativeShape(const Ellipse& a, const Ellipse& b) {
+  return precedesAsUnit(a, b) ? relativeShape(a, b) : relativeShape(b, a);
 }
 
 }  // namespace ellipse_collision::detail

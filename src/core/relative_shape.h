@@ -18,10 +18,10 @@ struct RelativeShape {
 
 RelativeShape relativeShape(const Ellipse& unit, const Ellipse& other);
 
-/// The ellipse with the larger area is taken as the unit circle: then det(axes) <= 1 and the
-/// maximiser of Q(s) lies in the half of (0, 1) where s is represented most finely.
-inline bool isLargerUnit(const Ellipse& a, const Ellipse& b) {
-  return a.radius_x * a.radius_y >= b.radius_x * b.radius_y;
-}
+/// The pair in the frame of the ellipse with the larger area: then det(axes) <= 1 and the
+/// maximiser of Q(s) lies where s is represented most finely. Ties are broken by a total order
+/// on the fields, so that (a, b) and (b, a) compute the very same numbers: every test built on
+/// this is exactly symmetric.
+RelativeShape canonicalRelativeShape(const Ellipse& a, const Ellipse& b);
 
 }  // namespace ellipse_collision::detail

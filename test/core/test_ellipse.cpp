@@ -49,10 +49,24 @@ TEST(InvalidReason, ValueIsPrintedExactlyEnoughToReadBack) {
   EXPECT_EQ(invalidReason(e), "radius_x = -1e-300 must be > 0");
 }
 
-TEST(InvalidReason, TinyButPositiveRadiusIsValid) {
+TEST(InvalidReason, AcceptsTheWholeDocumentedRange) {
+  Ellipse e = valid();
+  e.radius_x = kMinRadius;
+  e.radius_y = kMaxRadius;
+  e.center = {-kMaxCoordinate, kMaxCoordinate};
+  EXPECT_EQ(invalidReason(e), "");
+}
+
+TEST(InvalidReason, RejectsLengthsOutsideTheRangeTheTestsAreExactIn) {
   Ellipse e = valid();
   e.radius_x = std::numeric_limits<double>::denorm_min();
-  EXPECT_EQ(invalidReason(e), "");
+  EXPECT_EQ(invalidReason(e), "radius_x = 5e-324 is outside [1e-09, 1e+09] m");
+  e = valid();
+  e.radius_y = 1e300;
+  EXPECT_EQ(invalidReason(e), "radius_y = 1e+300 is outside [1e-09, 1e+09] m");
+  e = valid();
+  e.center.y() = -2e9;
+  EXPECT_EQ(invalidReason(e), "center.y = -2e+09 is outside [-1e+09, 1e+09] m");
 }
 
 TEST(BoundingRadii, AreTheLargerAndSmallerSemiAxis) {
