@@ -1,0 +1,1 @@
+# Collision benchmarks: pair tests, scene checks, service round trip.
