@@ -1,0 +1,1 @@
+# Demo robot: driver node and install rules.

@@ -1,0 +1,1 @@
+# Demo test: headless rviz screenshot check.

@@ -1,0 +1,1 @@
+# Hostile-input rostest battery, bad-configuration start-up tests, load test.
