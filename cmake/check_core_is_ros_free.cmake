@@ -1,7 +1,8 @@
 # Fails the configure step when a core source or public core header includes a ROS header.
-file(GLOB_RECURSE _core_files
-  ${CMAKE_CURRENT_SOURCE_DIR}/src/core/*
-  ${CMAKE_CURRENT_SOURCE_DIR}/include/ellipse_collision/*.h)
+# Public core headers are the top level of include/ellipse_collision/ (the ROS layer's are in ros/).
+file(GLOB_RECURSE _core_sources ${CMAKE_CURRENT_SOURCE_DIR}/src/core/*)
+file(GLOB _core_headers ${CMAKE_CURRENT_SOURCE_DIR}/include/ellipse_collision/*.h)
+set(_core_files ${_core_sources} ${_core_headers})
 foreach(_file ${_core_files})
   file(STRINGS ${_file} _ros_includes
     REGEX "#include *[<\"](ros|tf2|tf2_ros|tf2_eigen|std_msgs|geometry_msgs|visualization_msgs|diagnostic_msgs|xmlrpcpp|ellipse_collision/ros)/")
