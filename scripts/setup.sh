@@ -1,0 +1,73 @@
+#!/usr/bin/env bash
+# Installs everything needed to build, test and run ellipse_collision from Debian 12's own
+# packages (ROS 1 included: no ROS apt repository, nothing built from source but this package).
+# Runs as root, or through sudo otherwise. Does nothing, quickly, when all is already installed.
+set -euo pipefail
+
+# ------------------------------------------------------------------------------------------------
+# THE dependency list: every Debian package the build, the tests and the demo need.
+# Add new dependencies here (and to package.xml when they are ROS packages).
+DEBIAN_PACKAGES=(
+  # toolchain
+  g++
+  cmake
+  make
+  python3
+  # ROS 1 build system and client library
+  catkin
+  ros-core-dev
+  libroscpp-dev
+  ros-message-generation
+  # ROS messages and tf
+  libstd-msgs-dev
+  libgeometry-msgs-dev
+  libvisualization-msgs-dev
+  libdiagnostic-msgs-dev
+  libtf2-ros-dev
+  libtf2-eigen-dev
+  libtf2-geometry-msgs-dev
+  # ROS command-line tools (rosrun, roslaunch, rostest and the introspection tools tests use)
+  rosbash
+  python3-roslaunch
+  python3-rostest
+  python3-rosservice
+  python3-rostopic
+  python3-rosnode
+  librostest-dev
+  # libraries
+  libeigen3-dev
+  libgtest-dev
+  libbenchmark-dev
+  libfcl-dev
+)
+# ------------------------------------------------------------------------------------------------
+
+# dpkg-query exits non-zero for packages it has never heard of; their lines are simply missing.
+installed="$(dpkg-query -W -f='${Package} ${db:Status-Status}\n' "${DEBIAN_PACKAGES[@]}" 2>/dev/null \
+  | awk '$2 == "installed" { print $1 }' || true)"
+missing=()
+for package in "${DEBIAN_PACKAGES[@]}"; do
+  if ! grep -qx -- "${package}" <<<"${installed}"; then
+    missing+=("${package}")
+  fi
+done
+
+if ((${#missing[@]} == 0)); then
+  echo "setup.sh: all ${#DEBIAN_PACKAGES[@]} Debian packages are installed"
+  exit 0
+fi
+
+if ((EUID == 0)); then
+  as_root=()
+elif command -v sudo >/dev/null; then
+  as_root=(sudo)
+else
+  echo "setup.sh: must run as root (or with sudo available) to install: ${missing[*]}" >&2
+  exit 1
+fi
+
+echo "setup.sh: installing ${#missing[@]} Debian packages: ${missing[*]}"
+# A fresh machine has empty package lists, so always update before installing.
+"${as_root[@]}" apt-get update
+"${as_root[@]}" env DEBIAN_FRONTEND=noninteractive \
+  apt-get install -y --no-install-recommends "${missing[@]}"
