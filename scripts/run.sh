@@ -14,19 +14,7 @@ set +u
 source "${repo}/build/ws/devel/setup.bash"
 set -u
 
-# The main job. Replace the body of this function to change what run.sh demonstrates.
-main_job() {
-  echo "run.sh: rosrun ellipse_collision check_ellipses < examples/pairs.txt"
-  local status=0
-  rosrun ellipse_collision check_ellipses <"${repo}/examples/pairs.txt" || status=$?
-  # The example holds one deliberate bad line to show the error format, so status 1 is expected.
-  if ((status == 1)); then
-    echo "run.sh: check_ellipses exited with 1 because examples/pairs.txt has one deliberate" \
-      "bad line (the 'error' line above); that is the expected result."
-  elif ((status != 0)); then
-    echo "run.sh: check_ellipses failed with exit status ${status}" >&2
-    return "${status}"
-  fi
-}
-
-main_job
+# The main job: the demo robot, the node and rviz (headless under Xvfb with periodic screenshots
+# when there is no display). exec, so that Ctrl-C reaches demo.sh, which ends everything it started.
+# For the command-line tool alone: rosrun ellipse_collision check_ellipses < examples/pairs.txt
+exec bash "${repo}/scripts/demo.sh" "$@"

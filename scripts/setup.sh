@@ -34,6 +34,15 @@ DEBIAN_PACKAGES=(
   python3-rostopic
   python3-rosnode
   librostest-dev
+  # demo: robot model, tf from joint states, rviz headless and its screenshot
+  libstd-srvs-dev
+  libsensor-msgs-dev
+  ros-robot-state-publisher
+  rviz
+  xvfb
+  xauth
+  imagemagick
+  libx11-dev
   # libraries
   libeigen3-dev
   libgtest-dev

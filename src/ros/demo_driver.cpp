@@ -1,0 +1,181 @@
+#include "demo_driver.h"
+
+#include <sensor_msgs/JointState.h>
+
+#include <cmath>
+#include <set>
+
+#include "ellipse_collision/ros/conversions.h"
+#include "ellipse_collision/ros/messages.h"
+
+namespace ellipse_collision {
+namespace {
+
+std::string fullName(const ros::NodeHandle& nh, const std::string& key) {
+  return nh.resolveName(key);
+}
+
+/// The keys of the dict parameter `key`, refusing any not in `allowed` so that a typo cannot
+/// silently leave a default in place. `key` empty means the private namespace itself.
+std::set<std::string> dictKeys(const ros::NodeHandle& nh, const std::string& key,
+                               const std::set<std::string>& allowed) {
+  XmlRpc::XmlRpcValue value;
+  const std::string name = key.empty() ? nh.getNamespace() : fullName(nh, key);
+  if (!ros::param::get(name, value) || value.getType() != XmlRpc::XmlRpcValue::TypeStruct) {
+    throw DemoConfigError("parameter " + name + ": expected a dict, got " +
+                          (value.valid() ? "another type" : "nothing"));
+  }
+  std::set<std::string> keys;
+  for (auto it = value.begin(); it != value.end(); ++it) {
+    if (!allowed.empty() && !allowed.count(it->first)) {
+      std::string expected;
+      for (const std::string& a : allowed) expected += (expected.empty() ? "" : ", ") + a;
+      throw DemoConfigError("parameter " + name + "/" + it->first +
+                            ": unknown key (expected one of " + expected + ")");
+    }
+    keys.insert(it->first);
+  }
+  return keys;
+}
+
+/// A finite number; roscpp accepts YAML ints here too.
+double number(const ros::NodeHandle& nh, const std::string& key) {
+  double value = 0.0;
+  if (!nh.getParam(key, value)) {
+    throw DemoConfigError("parameter " + fullName(nh, key) + ": expected a number, got " +
+                          (nh.hasParam(key) ? "another type" : "nothing"));
+  }
+  if (!std::isfinite(value)) {
+    throw DemoConfigError("parameter " + fullName(nh, key) + ": expected a finite number, got " +
+                          formatNumber(value));
+  }
+  return value;
+}
+
+double positive(const ros::NodeHandle& nh, const std::string& key) {
+  const double value = number(nh, key);
+  if (!(value > 0.0)) {
+    throw DemoConfigError("parameter " + fullName(nh, key) + ": expected a number > 0, got " +
+                          formatNumber(value));
+  }
+  return value;
+}
+
+std::string frameOr(const ros::NodeHandle& nh, const std::string& key,
+                    const std::string& fallback) {
+  if (!nh.hasParam(key)) return fallback;
+  std::string frame;
+  if (!nh.getParam(key, frame) || frame.empty() || frame.front() == '/') {
+    throw DemoConfigError("parameter " + fullName(nh, key) +
+                          ": expected a tf2 frame id (non-empty, no leading '/')");
+  }
+  return frame;
+}
+
+}  // namespace
+
+DemoDriver::DemoDriver(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
+    : nh_(nh), private_nh_(private_nh) {
+  const ros::NodeHandle& p = private_nh_;
+  dictKeys(p, "", {"rate", "odom_frame", "base_frame", "base_path", "joints", "moving_obstacle"});
+  const double rate_hz = p.hasParam("rate") ? positive(p, "rate") : 30.0;
+  odom_frame_ = frameOr(p, "odom_frame", "odom");
+  base_frame_ = frameOr(p, "base_frame", "base_link");
+
+  dictKeys(p, "base_path", {"center_x", "center_y", "radius_x", "radius_y", "period"});
+  trajectory_.base.center = {number(p, "base_path/center_x"), number(p, "base_path/center_y")};
+  trajectory_.base.radius_x = positive(p, "base_path/radius_x");
+  trajectory_.base.radius_y = positive(p, "base_path/radius_y");
+  trajectory_.base.period_s = positive(p, "base_path/period");
+
+  for (const std::string& joint : dictKeys(p, "joints", {})) {
+    const std::string key = "joints/" + joint;
+    dictKeys(p, key, {"offset", "amplitude", "period", "phase"});
+    NamedJointMotion motion;
+    motion.joint = joint;
+    motion.motion.offset = number(p, key + "/offset");
+    motion.motion.amplitude = number(p, key + "/amplitude");
+    motion.motion.period_s = positive(p, key + "/period");
+    motion.motion.phase = number(p, key + "/phase");
+    trajectory_.joints.push_back(motion);
+  }
+
+  const std::string o = "moving_obstacle";
+  dictKeys(
+      p, o,
+      {"name", "radius_x", "radius_y", "angle", "start_x", "start_y", "end_x", "end_y", "period"});
+  if (!p.getParam(o + "/name", obstacle_.name) || obstacle_.name.empty()) {
+    throw DemoConfigError("parameter " + fullName(p, o + "/name") + ": expected a non-empty name");
+  }
+  obstacle_.frame_id = odom_frame_;
+  obstacle_.radius_x = positive(p, o + "/radius_x");
+  obstacle_.radius_y = positive(p, o + "/radius_y");
+  obstacle_.angle = number(p, o + "/angle");
+  trajectory_.obstacle.start = {number(p, o + "/start_x"), number(p, o + "/start_y")};
+  trajectory_.obstacle.end = {number(p, o + "/end_x"), number(p, o + "/end_y")};
+  trajectory_.obstacle.period_s = positive(p, o + "/period");
+
+  joint_states_pub_ = nh_.advertise<sensor_msgs::JointState>("joint_states", 10);
+  obstacles_pub_ = nh_.advertise<EllipseArray>("obstacles", 10);
+  pause_service_ = private_nh_.advertiseService("pause", &DemoDriver::onPause, this);
+
+  started_ = ros::Time::now();
+  timer_ = nh_.createTimer(ros::Duration(1.0 / rate_hz), &DemoDriver::onTimer, this);
+  ROS_INFO_STREAM("demo_driver: moving " << base_frame_ << " in " << odom_frame_ << ", "
+                                         << trajectory_.joints.size() << " joints and obstacle '"
+                                         << obstacle_.name << "' at " << rate_hz << " Hz");
+}
+
+double DemoDriver::demoTime(const ros::Time& now) const {
+  return paused_ ? clock_at_start_s_ : clock_at_start_s_ + (now - started_).toSec();
+}
+
+bool DemoDriver::onPause(std_srvs::SetBool::Request& request,
+                         std_srvs::SetBool::Response& response) {
+  const ros::Time now = ros::Time::now();
+  // Freeze or resume the clock where it stands, so the motion continues without a jump.
+  clock_at_start_s_ = demoTime(now);
+  started_ = now;
+  paused_ = request.data;
+  response.success = true;
+  response.message = std::string(paused_ ? "paused" : "running") + " at demo time " +
+                     formatNumber(clock_at_start_s_) + " s";
+  ROS_INFO_STREAM("demo_driver: " << response.message);
+  return true;
+}
+
+void DemoDriver::onTimer(const ros::TimerEvent&) {
+  const ros::Time now = ros::Time::now();
+  const double t = demoTime(now);
+
+  const Pose2D base = trajectory_.base.at(t);
+  geometry_msgs::TransformStamped odom_to_base;
+  odom_to_base.header.stamp = now;
+  odom_to_base.header.frame_id = odom_frame_;
+  odom_to_base.child_frame_id = base_frame_;
+  odom_to_base.transform.translation.x = base.position.x();
+  odom_to_base.transform.translation.y = base.position.y();
+  odom_to_base.transform.rotation.z = std::sin(base.yaw / 2);
+  odom_to_base.transform.rotation.w = std::cos(base.yaw / 2);
+  tf_broadcaster_.sendTransform(odom_to_base);
+
+  sensor_msgs::JointState joints;
+  joints.header.stamp = now;
+  for (const NamedJointMotion& joint : trajectory_.joints) {
+    joints.name.push_back(joint.joint);
+    joints.position.push_back(joint.motion.at(t));
+  }
+  joint_states_pub_.publish(joints);
+
+  EllipseSpec obstacle = obstacle_;
+  const Eigen::Vector2d position = trajectory_.obstacle.at(t);
+  obstacle.x = position.x();
+  obstacle.y = position.y();
+  EllipseArray obstacles;
+  obstacles.header.stamp = now;
+  obstacles.header.frame_id = odom_frame_;
+  obstacles.ellipses.push_back(toMsg(obstacle));
+  obstacles_pub_.publish(obstacles);
+}
+
+}  // namespace ellipse_collision

@@ -1,0 +1,55 @@
+#pragma once
+
+#include <ros/ros.h>
+#include <std_srvs/SetBool.h>
+#include <tf2_ros/transform_broadcaster.h>
+
+#include <stdexcept>
+#include <string>
+
+#include "demo_trajectory.h"
+#include "ellipse_collision/ros/ellipse_spec.h"
+
+namespace ellipse_collision {
+
+/// A demo parameter the driver cannot run with; what() names the parameter.
+class DemoConfigError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// demo_driver: moves the demo robot and one obstacle along DemoTrajectory. Publishes joint_states
+/// (for robot_state_publisher), the odom -> base transform, and the moving obstacle as an
+/// EllipseArray on `obstacles` (remapped to the collision node's ~obstacles). The service ~pause
+/// (std_srvs/SetBool) stops and restarts the demo clock; while paused everything is still
+/// published, with fresh stamps, at the same pose, so tf stays current and the scene stays still.
+class DemoDriver {
+ public:
+  /// Reads the private parameters (config/demo.yaml, `demo_driver:`); throws DemoConfigError.
+  DemoDriver(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh);
+
+ private:
+  void onTimer(const ros::TimerEvent& event);
+  bool onPause(std_srvs::SetBool::Request& request, std_srvs::SetBool::Response& response);
+  /// The demo clock [s]: ROS time since start, minus the time spent paused.
+  double demoTime(const ros::Time& now) const;
+
+  ros::NodeHandle nh_;
+  ros::NodeHandle private_nh_;
+  std::string odom_frame_;
+  std::string base_frame_;
+  DemoTrajectory trajectory_;
+  EllipseSpec obstacle_;  ///< the moving obstacle's shape; x, y follow trajectory_.obstacle
+
+  tf2_ros::TransformBroadcaster tf_broadcaster_;
+  ros::Publisher joint_states_pub_;
+  ros::Publisher obstacles_pub_;
+  ros::ServiceServer pause_service_;
+  ros::Timer timer_;
+
+  bool paused_{false};
+  double clock_at_start_s_{0.0};  ///< demo clock when it last (re)started or paused [s]
+  ros::Time started_;             ///< ROS time at which it last (re)started
+};
+
+}  // namespace ellipse_collision

@@ -1,0 +1,55 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+namespace ellipse_collision {
+
+/// offset + amplitude * sin(2 pi t / period_s + phase): one joint's sweep [rad].
+struct SineMotion {
+  double offset{0.0};     ///< [rad]
+  double amplitude{0.0};  ///< [rad]
+  double period_s{1.0};   ///< [s], > 0
+  double phase{0.0};      ///< [rad]
+  double at(double t_s) const;
+};
+
+/// A planar pose: position [m] and heading [rad] in the odometry frame.
+struct Pose2D {
+  Eigen::Vector2d position{0.0, 0.0};
+  double yaw{0.0};
+};
+
+/// The base drives counter-clockwise around an axis-aligned ellipse, heading along its tangent,
+/// starting at (center_x + radius_x, center_y).
+struct LoopPath {
+  Eigen::Vector2d center{0.0, 0.0};  ///< [m]
+  double radius_x{1.0};              ///< [m], > 0
+  double radius_y{1.0};              ///< [m], > 0
+  double period_s{1.0};              ///< one lap [s], > 0
+  Pose2D at(double t_s) const;
+};
+
+/// Back and forth between two points with a smooth (cosine) speed profile, at `start` for t = 0.
+struct ShuttleMotion {
+  Eigen::Vector2d start{0.0, 0.0};  ///< [m]
+  Eigen::Vector2d end{0.0, 0.0};    ///< [m]
+  double period_s{1.0};             ///< there and back [s], > 0
+  Eigen::Vector2d at(double t_s) const;
+};
+
+struct NamedJointMotion {
+  std::string joint;  ///< URDF joint name
+  SineMotion motion;
+};
+
+/// Everything the demo driver moves, as a function of the demo's own clock (which stops while the
+/// driver is paused).
+struct DemoTrajectory {
+  LoopPath base;
+  std::vector<NamedJointMotion> joints;
+  ShuttleMotion obstacle;
+};
+
+}  // namespace ellipse_collision

@@ -1,0 +1,316 @@
+// rostest client for launch/demo.launch in a virtual X server (see demo_screenshot.test): waits
+// until the demo has been both in collision and clear, freezes it (demo_driver/pause) at a moment
+// with a collision, grabs the screen and checks that rviz draws every colliding ellipse red and
+// every clear one green, at the pixels the view in rviz/demo.rviz maps it to.
+#include <std_srvs/SetBool.h>
+#include <tf2_ros/transform_listener.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <mutex>
+#include <set>
+#include <sstream>
+#include <thread>
+
+#include "ellipse_collision/ros/conversions.h"
+#include "ellipse_collision/ros/node_config.h"
+#include "ellipse_collision/ros/scene_placement.h"
+#include "ellipse_collision/scene_check.h"
+#include "node_test_utils.h"
+#include "rviz_top_down_view.h"
+#include "screen_image.h"
+
+namespace ellipse_collision {
+namespace test {
+namespace {
+
+// Marker colours are red (0.9, 0.1, 0.1) or green (0.1, 0.8, 0.1), alpha 0.6, over a grey
+// background and under the half-transparent grey robot: the dominant channel stays clear of the
+// other two by at least ~60 of 255.
+constexpr int kHueMargin = 30;
+// Pixels this close to an ellipse's outline [px] are skipped: anti-aliasing mixes them.
+constexpr double kEdgeMarginPx = 3.0;
+// Around every tf frame origin [m]: rviz's TF display draws red, green and blue axes there.
+constexpr double kAxesRadiusM = 0.1;
+// An ellipse is judged on at least this many pixels that it alone covers, or not at all.
+constexpr int kMinPixels = 20;
+// Share of an ellipse's pixels that must have its expected hue, and the most the other may have.
+constexpr double kMinExpectedShare = 0.5;
+constexpr double kMaxOtherShare = 0.1;
+
+enum class Hue { Red, Green, Other };
+
+Hue hueOf(const Rgb& colour) {
+  const int r = colour[0];
+  const int g = colour[1];
+  const int b = colour[2];
+  if (r - std::max(g, b) >= kHueMargin) return Hue::Red;
+  if (g - std::max(r, b) >= kHueMargin) return Hue::Green;
+  return Hue::Other;
+}
+
+/// ((u / radius_x)^2 + (v / radius_y)^2)^(1/2) for `point` in the ellipse's own axes (u, v) after
+/// growing both radii by `grow_m`: <= 1 inside.
+double normalisedRadius(const Ellipse& e, const Eigen::Vector2d& point, double grow_m) {
+  const Eigen::Vector2d d = point - e.center;
+  const double c = std::cos(e.angle);
+  const double s = std::sin(e.angle);
+  const double u = (c * d.x() + s * d.y()) / (e.radius_x + grow_m);
+  const double v = (-s * d.x() + c * d.y()) / (e.radius_y + grow_m);
+  return std::sqrt(u * u + v * v);
+}
+
+struct HueCount {
+  int red{0};
+  int green{0};
+  int other{0};
+  int total() const { return red + green + other; }
+};
+
+/// The hues of the screen pixels that show `target` and nothing else: inside it by at least the
+/// edge margin, outside every other ellipse by the same margin and away from tf axes.
+HueCount countHues(const ScreenImage& image, const TopDownView& view, const PanelRect& panel,
+                   const NamedEllipse& target, const std::vector<NamedEllipse>& all,
+                   const std::vector<Eigen::Vector2d>& frame_origins) {
+  const double margin_m = kEdgeMarginPx / view.scale_px_per_m;
+  const double reach_m = boundingRadius(target.ellipse);
+  const Eigen::Vector2d low =
+      toPixel(view, panel, target.ellipse.center + Eigen::Vector2d(-reach_m, reach_m));
+  const Eigen::Vector2d high =
+      toPixel(view, panel, target.ellipse.center + Eigen::Vector2d(reach_m, -reach_m));
+  HueCount count;
+  for (int y = std::max(panel.top, int(std::floor(low.y())));
+       y <= std::min(panel.bottom, int(std::ceil(high.y()))); ++y) {
+    for (int x = std::max(panel.left, int(std::floor(low.x())));
+         x <= std::min(panel.right, int(std::ceil(high.x()))); ++x) {
+      const Eigen::Vector2d point = toPoint(view, panel, Eigen::Vector2d(x + 0.5, y + 0.5));
+      if (normalisedRadius(target.ellipse, point, -margin_m) > 1.0) continue;
+      bool covered = false;
+      for (const NamedEllipse& other : all) {
+        if (other.name != target.name && normalisedRadius(other.ellipse, point, margin_m) <= 1.0) {
+          covered = true;
+        }
+      }
+      for (const Eigen::Vector2d& origin : frame_origins) {
+        if ((point - origin).norm() < kAxesRadiusM) covered = true;
+      }
+      if (covered) continue;
+      switch (hueOf(image.at(x, y))) {
+        case Hue::Red:
+          ++count.red;
+          break;
+        case Hue::Green:
+          ++count.green;
+          break;
+        case Hue::Other:
+          ++count.other;
+          break;
+      }
+    }
+  }
+  return count;
+}
+
+/// What one screenshot shows; `problems` is empty when every judged ellipse has its colour.
+struct Verdict {
+  std::string report;    ///< one line per ellipse
+  std::string problems;  ///< one line per ellipse with the wrong colour
+  int red_checked{0};    ///< colliding ellipses judged on enough pixels
+  int green_checked{0};  ///< clear ellipses judged on enough pixels
+};
+
+Verdict judge(const ScreenImage& image, const TopDownView& view, const PanelRect& panel,
+              const std::vector<NamedEllipse>& placed, const std::set<std::string>& colliding,
+              const std::vector<Eigen::Vector2d>& frame_origins) {
+  Verdict verdict;
+  for (const NamedEllipse& e : placed) {
+    const HueCount count = countHues(image, view, panel, e, placed, frame_origins);
+    const bool expect_red = colliding.count(e.name) != 0;
+    const Eigen::Vector2d pixel = toPixel(view, panel, e.ellipse.center);
+    std::ostringstream line;
+    line << e.name << (expect_red ? " (colliding)" : " (clear)") << " at pixel (" << int(pixel.x())
+         << ", " << int(pixel.y()) << "): " << count.red << " red, " << count.green << " green, "
+         << count.other << " other\n";
+    verdict.report += line.str();
+    if (count.total() < kMinPixels) continue;
+    const double expected = expect_red ? count.red : count.green;
+    const double other = expect_red ? count.green : count.red;
+    if (expected < kMinExpectedShare * count.total() || other > kMaxOtherShare * count.total()) {
+      verdict.problems += line.str();
+    } else if (expect_red) {
+      ++verdict.red_checked;
+    } else {
+      ++verdict.green_checked;
+    }
+  }
+  return verdict;
+}
+
+bool setPaused(ros::ServiceClient& client, bool paused) {
+  std_srvs::SetBool call;
+  call.request.data = paused;
+  return client.call(call) && call.response.success;
+}
+
+bool complete(const CollisionState& s) { return s.unavailable_frames.empty(); }
+
+/// Which kinds of state the node has reported (only states with every frame known count).
+struct SeenKinds {
+  explicit SeenKinds(const NodeConfig& config) {
+    for (const EllipseSpec& spec : config.links) links.insert(spec.name);
+    for (const EllipseSpec& spec : config.obstacles) fixed_obstacles.insert(spec.name);
+  }
+  void onState(const CollisionState::ConstPtr& state) {
+    if (!complete(*state)) return;
+    std::lock_guard<std::mutex> lock(mutex);
+    if (!state->in_collision) clear = true;
+    // name_a is the link: Link < Obstacle in a pair's order.
+    for (const CollisionPair& pair : state->collisions) {
+      if (links.count(pair.name_b)) {
+        self = true;
+      } else if (fixed_obstacles.count(pair.name_b)) {
+        fixed_obstacle = true;
+      } else {
+        streamed_obstacle = true;
+      }
+    }
+  }
+  bool all() {
+    std::lock_guard<std::mutex> lock(mutex);
+    return clear && self && fixed_obstacle && streamed_obstacle;
+  }
+
+  std::set<std::string> links;
+  std::set<std::string> fixed_obstacles;
+  std::mutex mutex;
+  bool clear{false};
+  bool self{false};
+  bool fixed_obstacle{false};
+  bool streamed_obstacle{false};
+};
+
+TEST(DemoInRviz, CollidingEllipsesAreRedAndClearOnesGreen) {
+  ros::NodeHandle nh;
+  ros::NodeHandle private_nh("~");
+  std::string rviz_config;
+  ASSERT_TRUE(private_nh.getParam("rviz_config", rviz_config)) << "~rviz_config not set";
+  const std::string screenshot = private_nh.param<std::string>("screenshot", "");
+  const TopDownView view = readTopDownView(rviz_config);
+  const NodeConfig config = loadNodeConfig(ros::NodeHandle("/ellipse_collision"));
+
+  Recorder<CollisionState> states(nh, nodeTopic("collisions"));
+  Recorder<EllipseArray> topic_obstacles(nh, nodeTopic("obstacles"));
+  tf2_ros::Buffer tf_buffer;
+  tf2_ros::TransformListener tf_listener(tf_buffer);
+  ros::ServiceClient pause = nh.serviceClient<std_srvs::SetBool>("/demo_driver/pause");
+
+  // The demo runs: its state has been clear, and links have collided with each other, with a
+  // configured obstacle and with the obstacle the driver streams, all with every frame known.
+  SeenKinds seen(config);
+  ros::Subscriber seen_subscriber =
+      nh.subscribe(nodeTopic("collisions"), 100, &SeenKinds::onState, &seen);
+  waitUntil([&seen] { return seen.all(); }, 100.0);
+  EXPECT_TRUE(seen.self) << "no self-collision";
+  EXPECT_TRUE(seen.fixed_obstacle) << "no collision with a configured obstacle";
+  EXPECT_TRUE(seen.streamed_obstacle) << "no collision with the streamed obstacle";
+  ASSERT_TRUE(seen.clear) << "the demo was never clear";
+  ASSERT_TRUE(pause.waitForExistence(ros::Duration(30.0)));
+
+  // Freeze it while something collides. A check stamped well after the pause saw the frozen pose;
+  // if the collision ended just before the pause, run on and try again.
+  CollisionState frozen;
+  bool frozen_in_collision = false;
+  for (int attempt = 0; attempt < 10 && !frozen_in_collision; ++attempt) {
+    ASSERT_TRUE(
+        states.waitForLatest([](const auto& s) { return complete(s) && s.in_collision; }, 40.0));
+    ASSERT_TRUE(setPaused(pause, true));
+    const ros::Time paused_at = ros::Time::now();
+    ASSERT_TRUE(states.waitForLatest(
+        [&](const auto& s) { return s.header.stamp > paused_at + ros::Duration(0.5); }, 10.0,
+        &frozen));
+    frozen_in_collision = complete(frozen) && frozen.in_collision;
+    if (!frozen_in_collision) {
+      ASSERT_TRUE(setPaused(pause, false));
+    }
+  }
+  ASSERT_TRUE(frozen_in_collision) << "could not pause the demo during a collision";
+  std::set<std::string> colliding;
+  for (const CollisionPair& pair : frozen.collisions) {
+    colliding.insert(pair.name_a);
+    colliding.insert(pair.name_b);
+  }
+
+  // Where every ellipse is now, from tf, the configuration and the driver's last obstacle message.
+  ScenePlacement placement(tf_buffer, config.fixed_frame, config.padding_m, ros::Time(0),
+                           ros::Duration(1.0));
+  std::vector<NamedEllipse> placed;
+  std::vector<Eigen::Vector2d> frame_origins;
+  auto place = [&](const EllipseSpec& spec, EllipseRole role) {
+    const ScenePlacement::Placement p = placement.place(spec, role);
+    ASSERT_EQ(p.status, ScenePlacement::Status::Placed) << spec.name << ": " << p.error;
+    placed.push_back(p.ellipse);
+  };
+  for (const EllipseSpec& spec : config.links) {
+    place(spec, EllipseRole::Link);
+    const geometry_msgs::TransformStamped t =
+        tf_buffer.lookupTransform(config.fixed_frame, spec.frame_id, ros::Time(0));
+    frame_origins.emplace_back(t.transform.translation.x, t.transform.translation.y);
+  }
+  frame_origins.emplace_back(0.0, 0.0);  // the fixed frame's own axes
+  for (const EllipseSpec& spec : config.obstacles) place(spec, EllipseRole::Obstacle);
+  const std::vector<EllipseArray> streamed = topic_obstacles.all();
+  ASSERT_FALSE(streamed.empty()) << "no message on " << nodeTopic("obstacles");
+  for (const EllipseSpec& spec : fromMsg(streamed.back())) place(spec, EllipseRole::Obstacle);
+  if (HasFatalFailure()) return;
+  // The frozen state is about this geometry: checking it here finds the same colliding ellipses.
+  SceneRules rules;
+  rules.self_collision = config.self_collision;
+  for (const auto& pair : config.allowed_pairs) rules.allowed.add(pair.first, pair.second);
+  const SceneCheckResult check = checkScene(placed, rules);
+  ASSERT_TRUE(check.ok()) << check.error;
+  std::set<std::string> colliding_here;
+  for (const CollidingPair& pair : check.collisions) {
+    colliding_here.insert(pair.name_a);
+    colliding_here.insert(pair.name_b);
+  }
+  ASSERT_EQ(colliding_here, colliding) << "the demo did not stay still while paused";
+
+  // rviz renders in software and may be a few frames behind the markers: look a few times.
+  Verdict verdict;
+  PanelRect panel;
+  ScreenImage image;
+  for (int attempt = 0; attempt < 10; ++attempt) {
+    std::this_thread::sleep_for(std::chrono::seconds(2));
+    image = ScreenImage::grab();
+    const auto& bg = view.background;
+    panel = image.findArea({Rgb::value_type(bg[0]), Rgb::value_type(bg[1]), Rgb::value_type(bg[2])},
+                           100);
+    if (panel.width() < 200 || panel.height() < 200) continue;  // rviz not up yet
+    verdict = judge(image, view, panel, placed, colliding, frame_origins);
+    if (verdict.problems.empty() && verdict.red_checked > 0 && verdict.green_checked > 0) break;
+  }
+  if (!screenshot.empty()) image.savePpm(screenshot);
+
+  std::ostringstream where;
+  where << "render panel x " << panel.left << ".." << panel.right << ", y " << panel.top << ".."
+        << panel.bottom << "; screenshot: " << (screenshot.empty() ? "(not saved)" : screenshot)
+        << "\n"
+        << verdict.report;
+  ASSERT_GE(panel.width(), 200) << "no rviz render panel on the screen\n" << where.str();
+  EXPECT_EQ(verdict.problems, "") << where.str();
+  EXPECT_GT(verdict.red_checked, 0) << "no colliding ellipse visible enough to judge\n"
+                                    << where.str();
+  EXPECT_GT(verdict.green_checked, 0) << "no clear ellipse visible enough to judge\n"
+                                      << where.str();
+  ROS_INFO_STREAM("demo screenshot: " << where.str());
+  EXPECT_TRUE(setPaused(pause, false));
+}
+
+}  // namespace
+}  // namespace test
+}  // namespace ellipse_collision
+
+int main(int argc, char** argv) {
+  return ellipse_collision::test::runRostestClient(argc, argv, "test_demo_screenshot");
+}

@@ -1,0 +1,170 @@
+// Units behind the demo and its screenshot test that need no ROS master: the demo trajectory, the
+// rviz view reader and pixel mapping, and finding rviz's render panel in a picture.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <stdexcept>
+
+#include "demo_trajectory.h"
+#include "rviz_top_down_view.h"
+#include "screen_image.h"
+
+namespace ellipse_collision {
+namespace test {
+namespace {
+
+TEST(DemoTrajectory, LoopStartsOnTheXAxisAndGoesCounterClockwise) {
+  LoopPath path;
+  path.center = {1.0, -2.0};
+  path.radius_x = 2.0;
+  path.radius_y = 0.5;
+  path.period_s = 8.0;
+  EXPECT_NEAR(path.at(0.0).position.x(), 3.0, 1e-12);
+  EXPECT_NEAR(path.at(0.0).position.y(), -2.0, 1e-12);
+  EXPECT_NEAR(path.at(2.0).position.x(), 1.0, 1e-12);  // a quarter lap: top of the loop
+  EXPECT_NEAR(path.at(2.0).position.y(), -1.5, 1e-12);
+  EXPECT_NEAR(path.at(8.0).position.x(), 3.0, 1e-12);  // one lap
+}
+
+TEST(DemoTrajectory, LoopHeadingFollowsTheMotion) {
+  LoopPath path;
+  path.radius_x = 2.0;
+  path.radius_y = 1.1;
+  path.period_s = 30.0;
+  // Oracle: the direction of a small step along the path.
+  for (double t = 0.0; t < 30.0; t += 1.7) {
+    const Eigen::Vector2d step = path.at(t + 1e-6).position - path.at(t - 1e-6).position;
+    const double yaw = path.at(t).yaw;
+    EXPECT_NEAR(std::cos(yaw), step.normalized().x(), 1e-6) << "t = " << t;
+    EXPECT_NEAR(std::sin(yaw), step.normalized().y(), 1e-6) << "t = " << t;
+  }
+}
+
+TEST(DemoTrajectory, ShuttleGoesToTheEndAndBackOncePerPeriod) {
+  ShuttleMotion shuttle;
+  shuttle.start = {-3.0, 1.0};
+  shuttle.end = {-1.0, 0.0};
+  shuttle.period_s = 12.0;
+  EXPECT_NEAR((shuttle.at(0.0) - shuttle.start).norm(), 0.0, 1e-12);
+  EXPECT_NEAR((shuttle.at(6.0) - shuttle.end).norm(), 0.0, 1e-12);
+  EXPECT_NEAR((shuttle.at(3.0) - Eigen::Vector2d(-2.0, 0.5)).norm(), 0.0, 1e-12);
+  EXPECT_NEAR((shuttle.at(12.0) - shuttle.start).norm(), 0.0, 1e-12);
+}
+
+TEST(DemoTrajectory, SineJointPeaksAQuarterPeriodIn) {
+  const SineMotion joint{-1.0, 1.5, 11.0, 0.0};
+  EXPECT_NEAR(joint.at(0.0), -1.0, 1e-12);
+  EXPECT_NEAR(joint.at(11.0 / 4), 0.5, 1e-12);
+  EXPECT_NEAR(joint.at(3 * 11.0 / 4), -2.5, 1e-12);
+}
+
+/// An .rviz file in the temporary directory, removed at the end of the test.
+class RvizFile {
+ public:
+  explicit RvizFile(const std::string& text) {
+    char name[] = "/tmp/test_demo_units_XXXXXX";
+    const int fd = mkstemp(name);
+    if (fd < 0) throw std::runtime_error("mkstemp failed");
+    close(fd);
+    path_ = name;
+    std::ofstream(path_) << text;
+  }
+  ~RvizFile() { std::remove(path_.c_str()); }
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+};
+
+// Shaped like a file rviz writes, with decoys: keys of the same name elsewhere and deeper down.
+const char* const kTopDownConfig = R"(Panels:
+  - Class: rviz/Displays
+    Name: Displays
+Visualization Manager:
+  Class: ""
+  Displays:
+    - Alpha: 0.5
+      Class: rviz/Grid
+      Color: 160; 160; 164
+      Offset:
+        X: 7
+        Y: 7
+  Global Options:
+    Background Color: 10; 20; 30
+    Fixed Frame: odom
+  Views:
+    Current:
+      Angle: 0
+      Class: rviz/TopDownOrtho
+      Enable Stereo Rendering:
+        Scale: 99
+      Scale: 125
+      X: -0.5
+      Y: 0.25
+    Saved: ~
+Window Geometry:
+  X: 3
+  Y: 4
+)";
+
+TEST(RvizTopDownView, ReadsTheCurrentViewAndBackground) {
+  const RvizFile file(kTopDownConfig);
+  const TopDownView view = readTopDownView(file.path());
+  EXPECT_EQ(view.scale_px_per_m, 125.0);
+  EXPECT_EQ(view.focal_m, Eigen::Vector2d(-0.5, 0.25));
+  EXPECT_EQ(view.background, (std::array<int, 3>{{10, 20, 30}}));
+}
+
+TEST(RvizTopDownView, RefusesOtherViews) {
+  std::string orbit = kTopDownConfig;
+  orbit.replace(orbit.find("rviz/TopDownOrtho"), 17, "rviz/Orbit");
+  const RvizFile file(orbit);
+  EXPECT_THROW(readTopDownView(file.path()), std::runtime_error);
+}
+
+TEST(RvizTopDownView, RefusesARotatedView) {
+  std::string rotated = kTopDownConfig;
+  rotated.replace(rotated.find("Angle: 0"), 8, "Angle: 0.5");
+  const RvizFile file(rotated);
+  EXPECT_THROW(readTopDownView(file.path()), std::runtime_error);
+}
+
+TEST(RvizTopDownView, TheDemoConfigHasATopDownView) {
+  EXPECT_GT(readTopDownView(DEMO_RVIZ_CONFIG).scale_px_per_m, 0.0);
+}
+
+TEST(RvizTopDownView, MapsMetresToPixelsXRightYUp) {
+  TopDownView view;
+  view.scale_px_per_m = 100.0;
+  view.focal_m = {1.0, 2.0};
+  const PanelRect panel{10, 20, 209, 119};  // 200 x 100 px, centre (110, 70)
+  EXPECT_EQ(toPixel(view, panel, {1.0, 2.0}), Eigen::Vector2d(110.0, 70.0));
+  EXPECT_EQ(toPixel(view, panel, {1.5, 2.0}), Eigen::Vector2d(160.0, 70.0));
+  EXPECT_EQ(toPixel(view, panel, {1.0, 2.25}), Eigen::Vector2d(110.0, 45.0));
+  const Eigen::Vector2d point(-0.3, 2.7);
+  EXPECT_NEAR((toPoint(view, panel, toPixel(view, panel, point)) - point).norm(), 0.0, 1e-12);
+}
+
+TEST(ScreenImage, FindsTheAreaOfAColourDespiteStrayPixels) {
+  const Rgb grey{{48, 48, 48}};
+  ScreenImage image(300, 200, Rgb{{240, 240, 240}});
+  for (int y = 50; y <= 149; ++y) {
+    for (int x = 100; x <= 279; ++x) image.set(x, y, grey);
+  }
+  image.set(5, 5, grey);  // anti-aliased text elsewhere
+  image.set(6, 180, grey);
+  image.set(120, 60, Rgb{{200, 0, 0}});  // something drawn in the area
+  const PanelRect area = image.findArea(grey, 20);
+  EXPECT_EQ(area.left, 100);
+  EXPECT_EQ(area.right, 279);
+  EXPECT_EQ(area.top, 50);
+  EXPECT_EQ(area.bottom, 149);
+}
+
+}  // namespace
+}  // namespace test
+}  // namespace ellipse_collision
