@@ -1,0 +1,93 @@
+#pragma once
+
+#include <ros/ros.h>
+#include <tf2_ros/buffer.h>
+#include <tf2_ros/transform_listener.h>
+
+#include <cstdint>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "ellipse_collision/ros/collision_markers.h"
+#include "ellipse_collision/ros/ellipse_registry.h"
+#include "ellipse_collision/ros/messages.h"
+#include "ellipse_collision/ros/node_config.h"
+#include "ellipse_collision/scene_check.h"
+
+namespace ellipse_collision {
+
+/// ellipse_collision_node: keeps links and obstacles attached to tf frames, checks them in the
+/// plane of `fixed_frame` and serves the results (README: parameters, topics, services).
+/// Single-threaded: every callback runs from ros::spin(), tf arrives on the listener's own thread.
+class CollisionNode {
+ public:
+  /// Reads and validates the private parameters first; throws ConfigError on a bad configuration
+  /// before it advertises anything.
+  CollisionNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh);
+
+ private:
+  /// One check of the stored ellipses (and query ellipses) in the fixed frame.
+  struct CheckOutcome {
+    std::vector<NamedEllipse> placed;             ///< stored ellipses that could be placed
+    std::vector<std::string> unavailable_frames;  ///< sorted; their ellipses were skipped
+    std::vector<std::string> skipped;             ///< why each skipped ellipse was skipped
+    std::vector<CollidingPair> collisions;
+    std::string error;  ///< a bad request: nothing was checked
+  };
+
+  /// The last full check (all stored ellipses, latest transforms), which the topics show.
+  struct PublishedState {
+    bool valid{false};
+    ros::Time stamp;
+    CheckOutcome outcome;
+    double duration_s{0.0};
+    std::string failure;  ///< why the latest full check failed (the state above is older)
+  };
+
+  CheckOutcome check(const ros::Time& time, const ros::Duration& timeout,
+                     const std::set<std::string>& only_names,
+                     const std::vector<EllipseSpec>& query);
+  /// Checks every stored ellipse at the latest transforms, records the result as the published
+  /// state and publishes it (a failed check is only logged and reported in diagnostics).
+  CheckOutcome runFullCheck(const ros::Duration& timeout);
+  void publishState();
+  void publishMarkers();
+
+  /// Field checks and a tf lookup of each frame; the first problem as "field[i].key = value: ...".
+  std::string validateAttached(const std::vector<EllipseSpec>& specs, const std::string& field);
+
+  void onTimer(const ros::TimerEvent& event);
+  void onDiagnosticsTimer(const ros::TimerEvent& event);
+  void onMarkerSubscriber(const ros::SingleSubscriberPublisher& subscriber);
+  void onObstacles(const EllipseArray::ConstPtr& msg);
+  bool onCheckCollisions(CheckCollisions::Request& request, CheckCollisions::Response& response);
+  bool onAddObstacles(AddObstacles::Request& request, AddObstacles::Response& response);
+  bool onRemoveObstacles(RemoveObstacles::Request& request, RemoveObstacles::Response& response);
+
+  ros::NodeHandle nh_;
+  ros::NodeHandle private_nh_;
+  NodeConfig config_;
+  SceneRules rules_;
+  EllipseRegistry registry_;
+
+  tf2_ros::Buffer tf_buffer_;
+  tf2_ros::TransformListener tf_listener_;
+
+  ros::Publisher collisions_pub_;
+  ros::Publisher markers_pub_;
+  ros::Publisher diagnostics_pub_;
+  ros::Subscriber obstacles_sub_;
+  ros::ServiceServer check_service_;
+  ros::ServiceServer add_service_;
+  ros::ServiceServer remove_service_;
+  ros::Timer check_timer_;
+  ros::Timer diagnostics_timer_;
+
+  CollisionMarkers markers_;
+  PublishedState state_;
+  std::string last_obstacles_error_;  ///< why the last ~obstacles message was refused, if it was
+  std::uint64_t full_checks_{0};
+};
+
+}  // namespace ellipse_collision

@@ -1,0 +1,23 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "ellipse_collision/ros/ellipse_spec.h"
+#include "ellipse_collision/ros/messages.h"
+#include "ellipse_collision/scene_check.h"
+
+namespace ellipse_collision {
+
+/// Field by field; no validation (see findInvalidField()).
+EllipseSpec fromMsg(const EllipseMsg& msg);
+EllipseMsg toMsg(const EllipseSpec& spec);
+
+/// Specs of an EllipseArray; an ellipse with an empty frame_id takes header.frame_id.
+std::vector<EllipseSpec> fromMsg(const EllipseArray& msg);
+
+CollidingPair fromMsg(const CollisionPair& msg);
+CollisionPair toMsg(const CollidingPair& pair);
+std::vector<CollisionPair> toMsg(const std::vector<CollidingPair>& pairs);
+
+}  // namespace ellipse_collision

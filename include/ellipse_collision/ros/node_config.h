@@ -1,0 +1,43 @@
+#pragma once
+
+#include <ros/node_handle.h>
+#include <xmlrpcpp/XmlRpcValue.h>
+
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "ellipse_collision/ros/ellipse_spec.h"
+
+namespace ellipse_collision {
+
+/// A configuration the node cannot run with; what() names the entry, the key, expected and actual.
+class ConfigError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// The node's private parameters (see config/ellipse_collision.yaml for the documentation).
+struct NodeConfig {
+  std::string fixed_frame{"base_link"};
+  double rate_hz{10.0};       ///< periodic checks [Hz]; 0 = only on service calls
+  double tf_timeout_s{0.1};   ///< how long a service call waits for a transform [s]
+  double padding_m{0.0};      ///< added to both radii of every ellipse [m]
+  bool self_collision{true};  ///< also check link against link
+  std::vector<EllipseSpec> links;
+  std::vector<EllipseSpec> obstacles;
+  std::vector<std::pair<std::string, std::string>> allowed_pairs;
+};
+
+/// Parses and validates the node's private namespace given as one XmlRpc struct. `links` is
+/// required (an empty list is fine), every other key optional; unknown keys are errors, so that a
+/// typo cannot silently fall back to a default. Integers are accepted where a double is expected.
+/// Throws ConfigError.
+NodeConfig parseNodeConfig(const XmlRpc::XmlRpcValue& params);
+
+/// Reads the whole private namespace of `private_nh` from the parameter server and parses it.
+/// Throws ConfigError.
+NodeConfig loadNodeConfig(const ros::NodeHandle& private_nh);
+
+}  // namespace ellipse_collision

@@ -1,0 +1,21 @@
+#pragma once
+
+#include <ros/duration.h>
+#include <ros/time.h>
+#include <tf2_ros/buffer.h>
+
+#include <Eigen/Geometry>
+#include <string>
+
+namespace ellipse_collision {
+
+/// The node's one way to ask tf for a pose. Fills `target_from_source` and returns true, or returns
+/// false with the reason in `error` (if given) and a throttled warning. A frame is its own identity
+/// transform even before tf has heard of it, so ellipses given in the fixed frame need no tf.
+/// `time` zero means the latest transform; `timeout` is how long to wait for it.
+bool lookupTransformSafe(const tf2_ros::Buffer& buffer, const std::string& target_frame,
+                         const std::string& source_frame, const ros::Time& time,
+                         const ros::Duration& timeout, Eigen::Isometry3d& target_from_source,
+                         std::string* error = nullptr);
+
+}  // namespace ellipse_collision

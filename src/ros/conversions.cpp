@@ -1,0 +1,60 @@
+#include "ellipse_collision/ros/conversions.h"
+
+namespace ellipse_collision {
+
+EllipseSpec fromMsg(const EllipseMsg& msg) {
+  EllipseSpec spec;
+  spec.name = msg.name;
+  spec.frame_id = msg.frame_id;
+  spec.x = msg.x;
+  spec.y = msg.y;
+  spec.angle = msg.angle;
+  spec.radius_x = msg.radius_x;
+  spec.radius_y = msg.radius_y;
+  spec.padding = msg.padding;
+  return spec;
+}
+
+EllipseMsg toMsg(const EllipseSpec& spec) {
+  EllipseMsg msg;
+  msg.name = spec.name;
+  msg.frame_id = spec.frame_id;
+  msg.x = spec.x;
+  msg.y = spec.y;
+  msg.angle = spec.angle;
+  msg.radius_x = spec.radius_x;
+  msg.radius_y = spec.radius_y;
+  msg.padding = spec.padding;
+  return msg;
+}
+
+std::vector<EllipseSpec> fromMsg(const EllipseArray& msg) {
+  std::vector<EllipseSpec> specs;
+  specs.reserve(msg.ellipses.size());
+  for (const EllipseMsg& ellipse : msg.ellipses) {
+    specs.push_back(fromMsg(ellipse));
+    if (specs.back().frame_id.empty()) specs.back().frame_id = msg.header.frame_id;
+  }
+  return specs;
+}
+
+CollidingPair fromMsg(const CollisionPair& msg) {
+  return CollidingPair{msg.name_a, msg.name_b, msg.contact_scale};
+}
+
+CollisionPair toMsg(const CollidingPair& pair) {
+  CollisionPair msg;
+  msg.name_a = pair.name_a;
+  msg.name_b = pair.name_b;
+  msg.contact_scale = pair.contact_scale;
+  return msg;
+}
+
+std::vector<CollisionPair> toMsg(const std::vector<CollidingPair>& pairs) {
+  std::vector<CollisionPair> msgs;
+  msgs.reserve(pairs.size());
+  for (const CollidingPair& pair : pairs) msgs.push_back(toMsg(pair));
+  return msgs;
+}
+
+}  // namespace ellipse_collision

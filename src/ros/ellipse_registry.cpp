@@ -1,0 +1,126 @@
+#include "ellipse_collision/ros/ellipse_registry.h"
+
+#include <set>
+#include <stdexcept>
+
+namespace ellipse_collision {
+namespace {
+
+std::string entry(const std::string& field, std::size_t index) {
+  return field + "[" + std::to_string(index) + "]";
+}
+
+const char* describe(EllipseSource source) {
+  switch (source) {
+    case EllipseSource::ConfiguredLink:
+      return "a configured link";
+    case EllipseSource::ConfiguredObstacle:
+      return "a configured obstacle";
+    case EllipseSource::ServiceObstacle:
+      return "an obstacle added by ~add_obstacles";
+    case EllipseSource::TopicObstacle:
+      return "an obstacle from the ~obstacles topic";
+  }
+  return "an ellipse";
+}
+
+/// Names in one request must be non-empty and distinct; returns the first violation, naming it
+/// as field[i] + suffix ("obstacles[2].name").
+std::string checkRequestNames(const std::vector<std::string>& names, const std::string& field,
+                              const std::string& suffix) {
+  std::set<std::string> seen;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    const std::string where = entry(field, i) + suffix;
+    if (names[i].empty()) return where + " = '': expected a non-empty name";
+    if (!seen.insert(names[i]).second) {
+      return where + " = '" + names[i] + "': expected each name once, got a duplicate";
+    }
+  }
+  return {};
+}
+
+std::vector<std::string> namesOf(const std::vector<EllipseSpec>& specs) {
+  std::vector<std::string> names;
+  for (const EllipseSpec& spec : specs) names.push_back(spec.name);
+  return names;
+}
+
+}  // namespace
+
+EllipseRegistry::EllipseRegistry(const std::vector<EllipseSpec>& links,
+                                 const std::vector<EllipseSpec>& obstacles) {
+  const auto add = [this](const EllipseSpec& spec, EllipseSource source) {
+    if (spec.name.empty()) throw std::invalid_argument("ellipse with an empty name");
+    if (!entries_.emplace(spec.name, StoredEllipse{spec, source}).second) {
+      throw std::invalid_argument("duplicate ellipse name '" + spec.name + "'");
+    }
+  };
+  for (const EllipseSpec& spec : links) add(spec, EllipseSource::ConfiguredLink);
+  for (const EllipseSpec& spec : obstacles) add(spec, EllipseSource::ConfiguredObstacle);
+}
+
+std::size_t EllipseRegistry::count(EllipseSource source) const {
+  std::size_t n = 0;
+  for (const auto& named : entries_) n += named.second.source == source ? 1 : 0;
+  return n;
+}
+
+std::string EllipseRegistry::addObstacles(const std::vector<EllipseSpec>& obstacles,
+                                          const std::string& field) {
+  std::string error = checkRequestNames(namesOf(obstacles), field, ".name");
+  if (!error.empty()) return error;
+  for (std::size_t i = 0; i < obstacles.size(); ++i) {
+    const auto found = entries_.find(obstacles[i].name);
+    if (found == entries_.end()) continue;
+    const EllipseSource source = found->second.source;
+    if (source == EllipseSource::ConfiguredLink || source == EllipseSource::TopicObstacle) {
+      return entry(field, i) + ".name = '" + obstacles[i].name +
+             "': expected a new or replaceable obstacle name, got " + describe(source);
+    }
+  }
+  for (const EllipseSpec& spec : obstacles) {
+    entries_[spec.name] = StoredEllipse{spec, EllipseSource::ServiceObstacle};
+  }
+  return {};
+}
+
+std::string EllipseRegistry::removeObstacles(const std::vector<std::string>& names,
+                                             const std::string& field) {
+  std::string error = checkRequestNames(names, field, "");
+  if (!error.empty()) return error;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    const auto found = entries_.find(names[i]);
+    if (found == entries_.end()) {
+      return entry(field, i) + " = '" + names[i] +
+             "': expected an obstacle name, got an unknown name";
+    }
+    if (found->second.source == EllipseSource::ConfiguredLink) {
+      return entry(field, i) + " = '" + names[i] +
+             "': expected an obstacle name, got a configured link (links cannot be removed)";
+    }
+  }
+  for (const std::string& name : names) entries_.erase(name);
+  return {};
+}
+
+std::string EllipseRegistry::replaceTopicObstacles(const std::vector<EllipseSpec>& obstacles,
+                                                   const std::string& field) {
+  std::string error = checkRequestNames(namesOf(obstacles), field, ".name");
+  if (!error.empty()) return error;
+  for (std::size_t i = 0; i < obstacles.size(); ++i) {
+    const auto found = entries_.find(obstacles[i].name);
+    if (found != entries_.end() && found->second.source != EllipseSource::TopicObstacle) {
+      return entry(field, i) + ".name = '" + obstacles[i].name +
+             "': expected a name not used outside the topic, got " + describe(found->second.source);
+    }
+  }
+  for (auto it = entries_.begin(); it != entries_.end();) {
+    it = it->second.source == EllipseSource::TopicObstacle ? entries_.erase(it) : std::next(it);
+  }
+  for (const EllipseSpec& spec : obstacles) {
+    entries_.emplace(spec.name, StoredEllipse{spec, EllipseSource::TopicObstacle});
+  }
+  return {};
+}
+
+}  // namespace ellipse_collision

@@ -1,0 +1,246 @@
+#include "ellipse_collision/ros/node_config.h"
+
+#include <ros/param.h>
+
+#include <cmath>
+#include <map>
+#include <set>
+
+namespace ellipse_collision {
+namespace {
+
+using XmlRpc::XmlRpcValue;
+
+const char* const kEllipseKeys = "name, frame, x, y, angle, radius_x, radius_y, padding";
+
+std::string describeValue(const XmlRpcValue& value) {
+  XmlRpcValue copy = value;  // the conversion operators of XmlRpcValue are not const
+  switch (copy.getType()) {
+    case XmlRpcValue::TypeBoolean:
+      return std::string(static_cast<bool&>(copy) ? "true" : "false") + " (a bool)";
+    case XmlRpcValue::TypeInt:
+      return std::to_string(static_cast<int&>(copy)) + " (an int)";
+    case XmlRpcValue::TypeDouble:
+      return formatNumber(static_cast<double&>(copy)) + " (a double)";
+    case XmlRpcValue::TypeString:
+      return "'" + static_cast<std::string&>(copy) + "' (a string)";
+    case XmlRpcValue::TypeArray:
+      return "a list of " + std::to_string(copy.size());
+    case XmlRpcValue::TypeStruct:
+      return "a dict";
+    case XmlRpcValue::TypeDateTime:
+      return "a date";
+    case XmlRpcValue::TypeBase64:
+      return "binary data";
+    case XmlRpcValue::TypeInvalid:
+      break;
+  }
+  return "nothing";
+}
+
+[[noreturn]] void fail(const std::string& where, const std::string& key,
+                       const std::string& expected, const std::string& actual) {
+  throw ConfigError(where + ", key '" + key + "': expected " + expected + ", got " + actual);
+}
+
+/// A number, accepting ints where a double is expected (YAML `1` is an int).
+double readNumber(const XmlRpcValue& value, const std::string& where, const std::string& key) {
+  XmlRpcValue copy = value;
+  if (copy.getType() == XmlRpcValue::TypeDouble) return static_cast<double&>(copy);
+  if (copy.getType() == XmlRpcValue::TypeInt) return static_cast<int&>(copy);
+  fail(where, key, "a number", describeValue(value));
+}
+
+std::string readString(const XmlRpcValue& value, const std::string& where, const std::string& key) {
+  XmlRpcValue copy = value;
+  if (copy.getType() != XmlRpcValue::TypeString) fail(where, key, "a string", describeValue(value));
+  return static_cast<std::string&>(copy);
+}
+
+bool readBool(const XmlRpcValue& value, const std::string& where, const std::string& key) {
+  XmlRpcValue copy = value;
+  if (copy.getType() != XmlRpcValue::TypeBoolean) {
+    fail(where, key, "true or false", describeValue(value));
+  }
+  return static_cast<bool&>(copy);
+}
+
+double readNonNegative(const XmlRpcValue& value, const std::string& where, const std::string& key) {
+  const double number = readNumber(value, where, key);
+  if (!std::isfinite(number) || number < 0.0) {
+    fail(where, key, "a finite number >= 0", formatNumber(number));
+  }
+  return number;
+}
+
+std::string readFrame(const XmlRpcValue& value, const std::string& where, const std::string& key) {
+  const std::string frame = readString(value, where, key);
+  if (frame.empty()) fail(where, key, "a non-empty tf frame id", "''");
+  if (frame.front() == '/') {
+    fail(where, key, "a tf2 frame id without a leading '/'", "'" + frame + "'");
+  }
+  return frame;
+}
+
+EllipseSpec readEllipse(const XmlRpcValue& entry, const std::string& where) {
+  if (entry.getType() != XmlRpcValue::TypeStruct) {
+    throw ConfigError(where + ": expected a dict with keys " + std::string(kEllipseKeys) +
+                      ", got " + describeValue(entry));
+  }
+  // Name the entry by its name as soon as there is one, so the message points at the YAML.
+  std::string label = where;
+  if (entry.hasMember("name") && entry["name"].getType() == XmlRpcValue::TypeString) {
+    label = where + " (name '" + readString(entry["name"], where, "name") + "')";
+  }
+  const std::set<std::string> known = {"name",  "frame",    "x",        "y",
+                                       "angle", "radius_x", "radius_y", "padding"};
+  for (auto it = entry.begin(); it != entry.end(); ++it) {
+    if (!known.count(it->first)) {
+      throw ConfigError(label + ": unknown key '" + it->first + "' (expected one of " +
+                        std::string(kEllipseKeys) + ")");
+    }
+  }
+  for (const char* key : {"name", "frame", "x", "y", "angle", "radius_x", "radius_y"}) {
+    if (!entry.hasMember(key)) {
+      throw ConfigError(label + ": missing key '" + key +
+                        "' (required: " + std::string(kEllipseKeys) + "; padding is optional)");
+    }
+  }
+
+  EllipseSpec spec;
+  spec.name = readString(entry["name"], label, "name");
+  spec.frame_id = readString(entry["frame"], label, "frame");
+  spec.x = readNumber(entry["x"], label, "x");
+  spec.y = readNumber(entry["y"], label, "y");
+  spec.angle = readNumber(entry["angle"], label, "angle");
+  spec.radius_x = readNumber(entry["radius_x"], label, "radius_x");
+  spec.radius_y = readNumber(entry["radius_y"], label, "radius_y");
+  if (entry.hasMember("padding")) spec.padding = readNumber(entry["padding"], label, "padding");
+  if (const auto invalid = findInvalidField(spec, "frame")) {
+    fail(label, invalid->key, invalid->expected, invalid->actual);
+  }
+  return spec;
+}
+
+std::vector<EllipseSpec> readEllipseList(const XmlRpcValue& list, const std::string& key) {
+  if (list.getType() != XmlRpcValue::TypeArray) {
+    fail("parameter ~" + key, key, "a list of ellipses", describeValue(list));
+  }
+  std::vector<EllipseSpec> specs;
+  for (int i = 0; i < list.size(); ++i) {
+    specs.push_back(readEllipse(list[i], key + "[" + std::to_string(i) + "]"));
+  }
+  return specs;
+}
+
+std::vector<std::pair<std::string, std::string>> readAllowedPairs(
+    const XmlRpcValue& list, const std::map<std::string, std::string>& defined) {
+  const std::string key = "allowed_pairs";
+  if (list.getType() != XmlRpcValue::TypeArray) {
+    fail("parameter ~" + key, key, "a list of [name_a, name_b]", describeValue(list));
+  }
+  std::vector<std::pair<std::string, std::string>> pairs;
+  for (int i = 0; i < list.size(); ++i) {
+    const std::string where = key + "[" + std::to_string(i) + "]";
+    const XmlRpcValue& pair = list[i];
+    if (pair.getType() != XmlRpcValue::TypeArray || pair.size() != 2) {
+      throw ConfigError(where + ": expected a list of two names [name_a, name_b], got " +
+                        describeValue(pair));
+    }
+    std::string names[2];
+    for (int k = 0; k < 2; ++k) {
+      const std::string element = where + "[" + std::to_string(k) + "]";
+      XmlRpcValue copy = pair[k];
+      if (copy.getType() != XmlRpcValue::TypeString) {
+        throw ConfigError(element + ": expected a link or obstacle name, got " +
+                          describeValue(copy));
+      }
+      names[k] = static_cast<std::string&>(copy);
+      if (!defined.count(names[k])) {
+        throw ConfigError(
+            element + " = '" + names[k] +
+            "': expected the name of a configured link or obstacle, got an unknown name");
+      }
+    }
+    if (names[0] == names[1]) {
+      throw ConfigError(where + ": expected two different names, got '" + names[0] + "' twice");
+    }
+    pairs.emplace_back(names[0], names[1]);
+  }
+  return pairs;
+}
+
+}  // namespace
+
+NodeConfig parseNodeConfig(const XmlRpcValue& params) {
+  XmlRpcValue root = params;
+  if (root.getType() == XmlRpcValue::TypeInvalid) root = XmlRpcValue();
+  if (root.getType() != XmlRpcValue::TypeInvalid && root.getType() != XmlRpcValue::TypeStruct) {
+    throw ConfigError("private namespace: expected a dict of parameters, got " +
+                      describeValue(root));
+  }
+
+  const std::set<std::string> known = {"fixed_frame",   "rate",          "tf_timeout",
+                                       "padding",       "links",         "obstacles",
+                                       "allowed_pairs", "self_collision"};
+  if (root.getType() == XmlRpcValue::TypeStruct) {
+    for (auto it = root.begin(); it != root.end(); ++it) {
+      if (!known.count(it->first)) {
+        throw ConfigError("parameter ~" + it->first +
+                          ": unknown key (expected one of fixed_frame, rate, tf_timeout, padding, "
+                          "links, obstacles, allowed_pairs, self_collision)");
+      }
+    }
+  }
+  const auto has = [&root](const char* key) {
+    return root.getType() == XmlRpcValue::TypeStruct && root.hasMember(key);
+  };
+
+  NodeConfig config;
+  if (has("fixed_frame")) {
+    config.fixed_frame = readFrame(root["fixed_frame"], "parameter ~fixed_frame", "fixed_frame");
+  }
+  if (has("rate")) config.rate_hz = readNonNegative(root["rate"], "parameter ~rate", "rate");
+  if (has("tf_timeout")) {
+    config.tf_timeout_s =
+        readNonNegative(root["tf_timeout"], "parameter ~tf_timeout", "tf_timeout");
+  }
+  if (has("padding"))
+    config.padding_m = readNonNegative(root["padding"], "parameter ~padding", "padding");
+  if (has("self_collision")) {
+    config.self_collision =
+        readBool(root["self_collision"], "parameter ~self_collision", "self_collision");
+  }
+  if (!has("links")) {
+    throw ConfigError(
+        "parameter ~links, key 'links': expected a list of ellipses (required; may be []), got "
+        "nothing (is the YAML loaded into the node's private namespace?)");
+  }
+  config.links = readEllipseList(root["links"], "links");
+  if (has("obstacles")) config.obstacles = readEllipseList(root["obstacles"], "obstacles");
+
+  std::map<std::string, std::string> defined;  // name -> entry that defines it
+  for (const char* list : {"links", "obstacles"}) {
+    const std::vector<EllipseSpec>& specs =
+        std::string(list) == "links" ? config.links : config.obstacles;
+    for (std::size_t i = 0; i < specs.size(); ++i) {
+      const std::string where = std::string(list) + "[" + std::to_string(i) + "]";
+      const auto inserted = defined.emplace(specs[i].name, where);
+      if (!inserted.second) {
+        fail(where + " (name '" + specs[i].name + "')", "name", "a name used by no other entry",
+             "a duplicate of " + inserted.first->second);
+      }
+    }
+  }
+  if (has("allowed_pairs")) config.allowed_pairs = readAllowedPairs(root["allowed_pairs"], defined);
+  return config;
+}
+
+NodeConfig loadNodeConfig(const ros::NodeHandle& private_nh) {
+  XmlRpcValue params;
+  // Absent namespace: no parameters at all, which parseNodeConfig reports as a missing ~links.
+  if (!ros::param::get(private_nh.getNamespace(), params)) params = XmlRpcValue();
+  return parseNodeConfig(params);
+}
+
+}  // namespace ellipse_collision

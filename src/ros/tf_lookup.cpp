@@ -1,0 +1,29 @@
+#include "ellipse_collision/ros/tf_lookup.h"
+
+#include <ros/console.h>
+#include <tf2/exceptions.h>
+#include <tf2_eigen/tf2_eigen.h>
+
+namespace ellipse_collision {
+
+bool lookupTransformSafe(const tf2_ros::Buffer& buffer, const std::string& target_frame,
+                         const std::string& source_frame, const ros::Time& time,
+                         const ros::Duration& timeout, Eigen::Isometry3d& target_from_source,
+                         std::string* error) {
+  if (target_frame == source_frame) {
+    target_from_source = Eigen::Isometry3d::Identity();
+    return true;
+  }
+  try {
+    target_from_source =
+        tf2::transformToEigen(buffer.lookupTransform(target_frame, source_frame, time, timeout));
+    return true;
+  } catch (const tf2::TransformException& exception) {
+    ROS_WARN_STREAM_THROTTLE(5.0, "No transform from '" << source_frame << "' to '" << target_frame
+                                                        << "': " << exception.what());
+    if (error) *error = exception.what();
+    return false;
+  }
+}
+
+}  // namespace ellipse_collision

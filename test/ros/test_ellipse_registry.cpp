@@ -1,0 +1,122 @@
+// Name rules of the stored ellipses (links, configured, service and topic obstacles); no master.
+#include <gtest/gtest.h>
+
+#include "ellipse_collision/ros/ellipse_registry.h"
+
+namespace ellipse_collision {
+namespace {
+
+EllipseSpec spec(const std::string& name, double x = 0.0) {
+  EllipseSpec s;
+  s.name = name;
+  s.frame_id = "map";
+  s.x = x;
+  s.radius_x = 0.1;
+  s.radius_y = 0.1;
+  return s;
+}
+
+EllipseRegistry makeRegistry() {
+  return EllipseRegistry({spec("arm"), spec("hand")}, {spec("table")});
+}
+
+#define EXPECT_CONTAINS(text, part) \
+  EXPECT_NE(std::string(text).find(part), std::string::npos) << "in: " << (text)
+
+TEST(EllipseRegistry, ConfiguredEllipsesHaveTheirRoles) {
+  const EllipseRegistry registry = makeRegistry();
+  EXPECT_EQ(registry.entries().at("arm").role(), EllipseRole::Link);
+  EXPECT_EQ(registry.entries().at("table").role(), EllipseRole::Obstacle);
+  EXPECT_EQ(registry.count(EllipseSource::ConfiguredLink), 2u);
+  EXPECT_EQ(registry.count(EllipseSource::ConfiguredObstacle), 1u);
+}
+
+TEST(EllipseRegistry, ServiceObstacleIsAddedReplacedAndRemoved) {
+  EllipseRegistry registry = makeRegistry();
+  EXPECT_EQ(registry.addObstacles({spec("box", 1.0)}, "obstacles"), "");
+  EXPECT_EQ(registry.entries().at("box").spec.x, 1.0);
+  EXPECT_EQ(registry.addObstacles({spec("box", 2.0)}, "obstacles"), "");
+  EXPECT_EQ(registry.entries().at("box").spec.x, 2.0);
+  EXPECT_EQ(registry.count(EllipseSource::ServiceObstacle), 1u);
+  EXPECT_EQ(registry.removeObstacles({"box"}, "names"), "");
+  EXPECT_FALSE(registry.contains("box"));
+}
+
+TEST(EllipseRegistry, ConfiguredObstacleCanBeReplacedAndRemoved) {
+  EllipseRegistry registry = makeRegistry();
+  EXPECT_EQ(registry.addObstacles({spec("table", 5.0)}, "obstacles"), "");
+  EXPECT_EQ(registry.entries().at("table").spec.x, 5.0);
+  EXPECT_EQ(registry.removeObstacles({"table"}, "names"), "");
+  EXPECT_FALSE(registry.contains("table"));
+}
+
+TEST(EllipseRegistry, LinkCanNeitherBeReplacedNorRemoved) {
+  EllipseRegistry registry = makeRegistry();
+  EXPECT_CONTAINS(registry.addObstacles({spec("box"), spec("hand")}, "obstacles"),
+                  "obstacles[1].name = 'hand'");
+  EXPECT_FALSE(registry.contains("box"));  // all or nothing
+  const std::string refused = registry.removeObstacles({"arm"}, "names");
+  EXPECT_CONTAINS(refused, "names[0] = 'arm'");
+  EXPECT_CONTAINS(refused, "configured link");
+  EXPECT_TRUE(registry.contains("arm"));
+  EXPECT_EQ(registry.entries().at("hand").role(), EllipseRole::Link);
+}
+
+TEST(EllipseRegistry, RemovingAnUnknownNameRemovesNothing) {
+  EllipseRegistry registry = makeRegistry();
+  const std::string refused = registry.removeObstacles({"table", "ghost"}, "names");
+  EXPECT_CONTAINS(refused, "names[1] = 'ghost'");
+  EXPECT_CONTAINS(refused, "unknown name");
+  EXPECT_TRUE(registry.contains("table"));
+}
+
+TEST(EllipseRegistry, EmptyAndDuplicateNamesInARequestAreRefused) {
+  EllipseRegistry registry = makeRegistry();
+  EXPECT_CONTAINS(registry.addObstacles({spec("")}, "obstacles"), "obstacles[0].name = ''");
+  EXPECT_CONTAINS(registry.addObstacles({spec("a"), spec("a")}, "obstacles"),
+                  "obstacles[1].name = 'a'");
+  EXPECT_FALSE(registry.contains("a"));
+  EXPECT_CONTAINS(registry.removeObstacles({"table", "table"}, "names"), "names[1] = 'table'");
+  EXPECT_CONTAINS(registry.removeObstacles({""}, "names"), "names[0] = ''");
+  EXPECT_TRUE(registry.contains("table"));
+}
+
+TEST(EllipseRegistry, TopicMessageReplacesOnlyTheTopicObstacles) {
+  EllipseRegistry registry = makeRegistry();
+  ASSERT_EQ(registry.addObstacles({spec("box")}, "obstacles"), "");
+  EXPECT_EQ(registry.replaceTopicObstacles({spec("rock1"), spec("rock2")}, "ellipses"), "");
+  EXPECT_EQ(registry.count(EllipseSource::TopicObstacle), 2u);
+  EXPECT_EQ(registry.replaceTopicObstacles({spec("rock3")}, "ellipses"), "");
+  EXPECT_FALSE(registry.contains("rock1"));
+  EXPECT_FALSE(registry.contains("rock2"));
+  EXPECT_TRUE(registry.contains("rock3"));
+  EXPECT_TRUE(registry.contains("box"));
+  EXPECT_TRUE(registry.contains("table"));
+  EXPECT_EQ(registry.replaceTopicObstacles({}, "ellipses"), "");
+  EXPECT_EQ(registry.count(EllipseSource::TopicObstacle), 0u);
+}
+
+TEST(EllipseRegistry, TopicAndServiceDoNotTakeEachOthersNames) {
+  EllipseRegistry registry = makeRegistry();
+  ASSERT_EQ(registry.replaceTopicObstacles({spec("rock")}, "ellipses"), "");
+  EXPECT_CONTAINS(registry.addObstacles({spec("rock")}, "obstacles"), "obstacles[0].name = 'rock'");
+  EXPECT_CONTAINS(registry.replaceTopicObstacles({spec("rock"), spec("table")}, "ellipses"),
+                  "ellipses[1].name = 'table'");
+  // The refused message left the previous topic obstacles in place.
+  EXPECT_EQ(registry.entries().at("rock").source, EllipseSource::TopicObstacle);
+  EXPECT_CONTAINS(registry.replaceTopicObstacles({spec("arm")}, "ellipses"), "configured link");
+}
+
+TEST(EllipseRegistry, TopicObstacleCanBeRemovedByTheService) {
+  EllipseRegistry registry = makeRegistry();
+  ASSERT_EQ(registry.replaceTopicObstacles({spec("rock")}, "ellipses"), "");
+  EXPECT_EQ(registry.removeObstacles({"rock"}, "names"), "");
+  EXPECT_FALSE(registry.contains("rock"));
+}
+
+TEST(EllipseRegistry, DuplicateConfiguredNameIsRejected) {
+  EXPECT_THROW(EllipseRegistry({spec("a")}, {spec("a")}), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace ellipse_collision

@@ -1,0 +1,222 @@
+// rostest client: the services through the `rosservice call` command line, parsed from its YAML
+// answer, as a user would call them; the node runs with rate 0 (node_cli.test), so its topics
+// change only on a full ~check_collisions call.
+#include <sys/wait.h>
+#include <visualization_msgs/MarkerArray.h>
+
+#include <array>
+#include <cstdio>
+#include <map>
+#include <sstream>
+
+#include "node_test_utils.h"
+
+namespace ellipse_collision {
+namespace test {
+namespace {
+
+#define EXPECT_CONTAINS(text, part) \
+  EXPECT_NE(std::string(text).find(part), std::string::npos) << "in: " << (text)
+
+/// What `rosservice call` printed, read as the flat YAML it prints for these services.
+struct CliAnswer {
+  int exit_status{-1};
+  std::string output;
+  std::map<std::string, std::string> fields;                   ///< top-level scalars, unquoted
+  std::vector<std::map<std::string, std::string>> collisions;  ///< name_a, name_b, contact_scale
+  std::vector<std::string> unavailable_frames;
+};
+
+std::string unquote(const std::string& text) {
+  if (text.size() >= 2 && (text.front() == '"' || text.front() == '\'') &&
+      text.back() == text.front()) {
+    return text.substr(1, text.size() - 2);
+  }
+  return text;
+}
+
+std::string trim(const std::string& text) {
+  const auto first = text.find_first_not_of(" ");
+  const auto last = text.find_last_not_of(" \r");
+  return first == std::string::npos ? "" : text.substr(first, last - first + 1);
+}
+
+CliAnswer parse(const std::string& output) {
+  CliAnswer answer;
+  answer.output = output;
+  std::istringstream lines(output);
+  std::string line;
+  std::string list;  // top-level key of the list being read
+  while (std::getline(lines, line)) {
+    if (line.empty()) continue;
+    const std::string content = trim(line);
+    if (line[0] != ' ') {
+      const auto colon = line.find(':');
+      if (colon == std::string::npos) continue;
+      const std::string key = line.substr(0, colon);
+      const std::string value = trim(line.substr(colon + 1));
+      list = value.empty() ? key : "";
+      answer.fields[key] = unquote(value);
+    } else if (list == "unavailable_frames" && content.rfind("- ", 0) == 0) {
+      answer.unavailable_frames.push_back(unquote(trim(content.substr(2))));
+    } else if (list == "collisions" && content == "-") {
+      answer.collisions.emplace_back();
+    } else if (list == "collisions" && !answer.collisions.empty()) {
+      const auto colon = content.find(':');
+      if (colon != std::string::npos) {
+        answer.collisions.back()[content.substr(0, colon)] =
+            unquote(trim(content.substr(colon + 1)));
+      }
+    }
+  }
+  return answer;
+}
+
+/// Runs `rosservice call <service> '<yaml>'` with the system's ROS tools first on PATH.
+CliAnswer rosserviceCall(const std::string& service, const std::string& yaml) {
+  const std::string command =
+      "PATH=/usr/bin:$PATH rosservice call " + nodeTopic(service) + " '" + yaml + "' 2>&1";
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) return CliAnswer{};
+  std::string output;
+  std::array<char, 4096> buffer;
+  while (fgets(buffer.data(), buffer.size(), pipe)) output += buffer.data();
+  const int status = pclose(pipe);
+  CliAnswer answer = parse(output);
+  answer.exit_status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return answer;
+}
+
+const std::map<std::string, std::string>* findCollision(const CliAnswer& answer,
+                                                        const std::string& a,
+                                                        const std::string& b) {
+  for (const auto& pair : answer.collisions) {
+    if (pair.count("name_a") && pair.at("name_a") == a && pair.count("name_b") &&
+        pair.at("name_b") == b) {
+      return &pair;
+    }
+  }
+  return nullptr;
+}
+
+class NodeCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    ASSERT_TRUE(ros::service::waitForService(nodeTopic("check_collisions"), ros::Duration(30)));
+    // tf is up once every frame of the helper is seen (camera_link is missing on purpose).
+    ASSERT_TRUE(waitUntil(
+        [] {
+          CheckCollisions srv;
+          srv.request.names = {"plate"};
+          return ros::service::call(nodeTopic("check_collisions"), srv) && srv.response.success &&
+                 srv.response.unavailable_frames == std::vector<std::string>{"camera_link"};
+        },
+        30.0));
+  }
+  ros::NodeHandle nh_;
+};
+
+TEST_F(NodeCli, CheckCollisionsAnswersOnTheCommandLine) {
+  const CliAnswer answer = rosserviceCall("check_collisions", "{}");
+  ASSERT_EQ(answer.exit_status, 0) << answer.output;
+  EXPECT_EQ(answer.fields.at("success"), "True") << answer.output;
+  EXPECT_EQ(answer.fields.at("in_collision"), "True");
+  const auto* pair = findCollision(answer, "plate", "post_near");
+  ASSERT_TRUE(pair) << answer.output;
+  EXPECT_NEAR(std::stod(pair->at("contact_scale")), 0.25 / 0.3, 1e-9);
+  EXPECT_EQ(answer.unavailable_frames, std::vector<std::string>{"camera_link"});
+  EXPECT_CONTAINS(answer.fields.at("message"), "camera_link");
+}
+
+TEST_F(NodeCli, QueryWithNameFilterOnTheCommandLine) {
+  const CliAnswer answer = rosserviceCall(
+      "check_collisions",
+      "{names: [probe], query: [{name: probe, frame_id: odom, x: 2.0, y: 0.0, angle: 0.0, "
+      "radius_x: 0.1, radius_y: 0.1, padding: 0.0}]}");
+  ASSERT_EQ(answer.exit_status, 0) << answer.output;
+  EXPECT_EQ(answer.fields.at("success"), "True") << answer.output;
+  ASSERT_EQ(answer.collisions.size(), 1u) << answer.output;
+  EXPECT_TRUE(findCollision(answer, "probe", "crate")) << answer.output;
+}
+
+TEST_F(NodeCli, AddAndRemoveObstaclesOnTheCommandLine) {
+  CliAnswer answer = rosserviceCall("add_obstacles",
+                                    "{obstacles: [{name: cli_box, frame_id: base_link, x: 0.0, y: "
+                                    "0.0, angle: 0.0, radius_x: 0.2, "
+                                    "radius_y: 0.2, padding: 0.0}]}");
+  ASSERT_EQ(answer.fields["success"], "True") << answer.output;
+  answer = rosserviceCall("check_collisions", "{names: [cli_box]}");
+  EXPECT_TRUE(findCollision(answer, "body", "cli_box")) << answer.output;
+  answer = rosserviceCall("remove_obstacles", "{names: [cli_box]}");
+  EXPECT_EQ(answer.fields["success"], "True") << answer.output;
+  answer = rosserviceCall("remove_obstacles", "{names: [cli_box]}");
+  EXPECT_EQ(answer.fields["success"], "False") << answer.output;
+  EXPECT_CONTAINS(answer.fields["message"], "names[0] = 'cli_box'");
+}
+
+TEST_F(NodeCli, BadRequestsAreAnswersOnTheCommandLine) {
+  CliAnswer answer = rosserviceCall(
+      "check_collisions",
+      "{query: [{name: probe, frame_id: base_link, x: 0.0, y: 0.0, angle: 0.0, radius_x: -1.0, "
+      "radius_y: 0.1, padding: 0.0}]}");
+  EXPECT_EQ(answer.exit_status, 0) << answer.output;
+  EXPECT_EQ(answer.fields["success"], "False") << answer.output;
+  EXPECT_CONTAINS(answer.fields["message"], "query[0].radius_x = -1");
+
+  answer = rosserviceCall("add_obstacles",
+                          "{obstacles: [{name: nan_box, frame_id: base_link, x: .nan, y: 0.0, "
+                          "angle: 0.0, radius_x: 0.1, "
+                          "radius_y: 0.1, padding: 0.0}]}");
+  EXPECT_EQ(answer.fields["success"], "False") << answer.output;
+  EXPECT_CONTAINS(answer.fields["message"], "obstacles[0].x = nan");
+
+  answer = rosserviceCall("remove_obstacles", "{names: [arm]}");
+  EXPECT_EQ(answer.fields["success"], "False") << answer.output;
+  EXPECT_CONTAINS(answer.fields["message"], "names[0] = 'arm'");
+
+  answer = rosserviceCall("check_collisions", "{names: [ghost]}");
+  EXPECT_EQ(answer.fields["success"], "False") << answer.output;
+  EXPECT_CONTAINS(answer.fields["message"], "names[0] = 'ghost'");
+}
+
+TEST_F(NodeCli, WithRateZeroTheTopicsChangeOnlyOnAFullCheck) {
+  AddObstacles add;
+  add.request.obstacles = {ellipseMsg("cli_rock", "base_link", 0.0, 0.0, 0.1, 0.1)};
+  ASSERT_TRUE(ros::service::call(nodeTopic("add_obstacles"), add) && add.response.success);
+  {
+    // No periodic check: whatever state is latched was computed before cli_rock existed.
+    Recorder<CollisionState> collisions(nh_, nodeTopic("collisions"));
+    ros::Duration(1.0).sleep();
+    for (const CollisionState& state : collisions.all()) {
+      EXPECT_FALSE(mentions(state.collisions, "cli_rock"));
+    }
+  }
+  ASSERT_EQ(rosserviceCall("check_collisions", "{}").fields["success"], "True");
+  {
+    // A late subscriber gets the state of that call from the latch alone.
+    Recorder<CollisionState> collisions(nh_, nodeTopic("collisions"));
+    EXPECT_TRUE(collisions.waitForLatest(
+        [](const CollisionState& s) { return findPair(s.collisions, "body", "cli_rock"); }, 10.0));
+    Recorder<visualization_msgs::MarkerArray> markers(nh_, nodeTopic("markers"));
+    EXPECT_TRUE(markers.waitForLatest(
+        [](const visualization_msgs::MarkerArray& a) {
+          for (const auto& m : a.markers) {
+            if (m.text == "cli_rock" && m.color.r > 0.5f) return true;
+          }
+          return false;
+        },
+        10.0));
+  }
+  RemoveObstacles remove;
+  remove.request.names = {"cli_rock"};
+  ASSERT_TRUE(ros::service::call(nodeTopic("remove_obstacles"), remove) && remove.response.success);
+  ASSERT_EQ(rosserviceCall("check_collisions", "{}").fields["success"], "True");
+}
+
+}  // namespace
+}  // namespace test
+}  // namespace ellipse_collision
+
+int main(int argc, char** argv) {
+  return ellipse_collision::test::runRostestClient(argc, argv, "test_node_cli");
+}

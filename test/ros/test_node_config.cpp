@@ -1,0 +1,242 @@
+// Parsing and validation of the node's parameters from XmlRpc values; no ROS master needed.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "ellipse_collision/ros/node_config.h"
+
+namespace ellipse_collision {
+namespace {
+
+using XmlRpc::XmlRpcValue;
+
+XmlRpcValue ellipseEntry(const std::string& name, const std::string& frame, double x = 0.0,
+                         double radius = 0.2) {
+  XmlRpcValue e;
+  e["name"] = name;
+  e["frame"] = frame;
+  e["x"] = x;
+  e["y"] = 0.0;
+  e["angle"] = 0.0;
+  e["radius_x"] = radius;
+  e["radius_y"] = radius;
+  return e;
+}
+
+XmlRpcValue pair(const std::string& a, const std::string& b) {
+  XmlRpcValue p;
+  p[0] = a;
+  p[1] = b;
+  return p;
+}
+
+/// A complete valid configuration: links arm, hand; obstacle table; allowed pair (arm, hand).
+XmlRpcValue validParams() {
+  XmlRpcValue p;
+  p["fixed_frame"] = "map";
+  p["rate"] = 5.0;
+  p["tf_timeout"] = 0.5;
+  p["padding"] = 0.01;
+  p["self_collision"] = false;
+  p["links"][0] = ellipseEntry("arm", "arm_link");
+  p["links"][1] = ellipseEntry("hand", "hand_link", 1.0, 0.1);
+  p["links"][1]["padding"] = 0.02;
+  p["obstacles"][0] = ellipseEntry("table", "map", 3.0, 0.5);
+  p["allowed_pairs"][0] = pair("arm", "hand");
+  return p;
+}
+
+/// The ConfigError message of parsing `params`, or "" when it parses.
+std::string errorOf(const XmlRpcValue& params) {
+  try {
+    parseNodeConfig(params);
+  } catch (const ConfigError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+#define EXPECT_CONTAINS(text, part) \
+  EXPECT_NE(std::string(text).find(part), std::string::npos) << "in: " << (text)
+
+TEST(NodeConfig, ValidConfigurationIsReadCompletely) {
+  const NodeConfig config = parseNodeConfig(validParams());
+  EXPECT_EQ(config.fixed_frame, "map");
+  EXPECT_EQ(config.rate_hz, 5.0);
+  EXPECT_EQ(config.tf_timeout_s, 0.5);
+  EXPECT_EQ(config.padding_m, 0.01);
+  EXPECT_FALSE(config.self_collision);
+  ASSERT_EQ(config.links.size(), 2u);
+  EXPECT_EQ(config.links[1].name, "hand");
+  EXPECT_EQ(config.links[1].frame_id, "hand_link");
+  EXPECT_EQ(config.links[1].x, 1.0);
+  EXPECT_EQ(config.links[1].radius_y, 0.1);
+  EXPECT_EQ(config.links[1].padding, 0.02);
+  EXPECT_EQ(config.links[0].padding, 0.0);
+  ASSERT_EQ(config.obstacles.size(), 1u);
+  EXPECT_EQ(config.obstacles[0].name, "table");
+  ASSERT_EQ(config.allowed_pairs.size(), 1u);
+  EXPECT_EQ(config.allowed_pairs[0], std::make_pair(std::string("arm"), std::string("hand")));
+}
+
+TEST(NodeConfig, OptionalKeysTakeTheirDocumentedDefaults) {
+  XmlRpcValue p;
+  p["links"].setSize(0);
+  const NodeConfig config = parseNodeConfig(p);
+  EXPECT_EQ(config.fixed_frame, "base_link");
+  EXPECT_EQ(config.rate_hz, 10.0);
+  EXPECT_EQ(config.tf_timeout_s, 0.1);
+  EXPECT_EQ(config.padding_m, 0.0);
+  EXPECT_TRUE(config.self_collision);
+  EXPECT_TRUE(config.links.empty());
+  EXPECT_TRUE(config.obstacles.empty());
+  EXPECT_TRUE(config.allowed_pairs.empty());
+}
+
+TEST(NodeConfig, IntegersAreAcceptedWhereNumbersAreExpected) {
+  XmlRpcValue p = validParams();
+  p["rate"] = 20;
+  p["links"][0]["radius_x"] = 1;
+  p["links"][0]["x"] = -3;
+  const NodeConfig config = parseNodeConfig(p);
+  EXPECT_EQ(config.rate_hz, 20.0);
+  EXPECT_EQ(config.links[0].radius_x, 1.0);
+  EXPECT_EQ(config.links[0].x, -3.0);
+}
+
+TEST(NodeConfig, MissingLinksStopsTheNode) {
+  XmlRpcValue p;
+  p["rate"] = 1.0;
+  EXPECT_CONTAINS(errorOf(p), "~links");
+  EXPECT_CONTAINS(errorOf(XmlRpcValue()), "~links");
+}
+
+TEST(NodeConfig, MissingEntryKeyNamesEntryAndKey) {
+  XmlRpcValue p = validParams();
+  XmlRpcValue entry = ellipseEntry("wrist", "wrist_link");
+  XmlRpcValue without_radius_y;
+  for (auto it = entry.begin(); it != entry.end(); ++it) {
+    if (it->first != "radius_y") without_radius_y[it->first] = it->second;
+  }
+  p["links"][2] = without_radius_y;
+  const std::string error = errorOf(p);
+  EXPECT_CONTAINS(error, "links[2] (name 'wrist')");
+  EXPECT_CONTAINS(error, "missing key 'radius_y'");
+}
+
+TEST(NodeConfig, WrongTypeNamesEntryKeyExpectedAndActual) {
+  XmlRpcValue p = validParams();
+  p["obstacles"][0]["radius_x"] = "big";
+  EXPECT_EQ(errorOf(p),
+            "obstacles[0] (name 'table'), key 'radius_x': expected a number, got 'big' (a string)");
+}
+
+TEST(NodeConfig, NonPositiveRadiusStopsTheNode) {
+  XmlRpcValue p = validParams();
+  p["links"][1]["radius_x"] = 0.0;
+  EXPECT_EQ(errorOf(p),
+            "links[1] (name 'hand'), key 'radius_x': expected a finite number > 0, got 0");
+  p = validParams();
+  p["links"][0]["radius_y"] = -0.3;
+  EXPECT_CONTAINS(errorOf(p), "links[0] (name 'arm'), key 'radius_y'");
+  EXPECT_CONTAINS(errorOf(p), "got -0.3");
+}
+
+TEST(NodeConfig, NonFiniteNumbersStopTheNode) {
+  XmlRpcValue p = validParams();
+  p["links"][0]["x"] = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_EQ(errorOf(p), "links[0] (name 'arm'), key 'x': expected a finite number, got nan");
+  p = validParams();
+  p["obstacles"][0]["angle"] = std::numeric_limits<double>::infinity();
+  EXPECT_CONTAINS(errorOf(p), "obstacles[0] (name 'table'), key 'angle'");
+  p = validParams();
+  p["padding"] = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_CONTAINS(errorOf(p), "parameter ~padding, key 'padding': expected a finite number >= 0");
+}
+
+TEST(NodeConfig, NegativePaddingStopsTheNode) {
+  XmlRpcValue p = validParams();
+  p["links"][1]["padding"] = -0.01;
+  EXPECT_CONTAINS(errorOf(p), "links[1] (name 'hand'), key 'padding'");
+  p = validParams();
+  p["padding"] = -1;
+  EXPECT_CONTAINS(errorOf(p), "parameter ~padding");
+}
+
+TEST(NodeConfig, DuplicateNameAcrossLinksAndObstaclesStopsTheNode) {
+  XmlRpcValue p = validParams();
+  p["obstacles"][1] = ellipseEntry("arm", "map");
+  EXPECT_EQ(errorOf(p),
+            "obstacles[1] (name 'arm'), key 'name': expected a name used by no other entry, got a "
+            "duplicate of links[0]");
+}
+
+TEST(NodeConfig, AllowedPairWithUnknownNameStopsTheNode) {
+  XmlRpcValue p = validParams();
+  p["allowed_pairs"][1] = pair("table", "hnad");
+  const std::string error = errorOf(p);
+  EXPECT_CONTAINS(error, "allowed_pairs[1][1] = 'hnad'");
+  EXPECT_CONTAINS(error, "unknown name");
+}
+
+TEST(NodeConfig, AllowedPairMustBeTwoDifferentNames) {
+  XmlRpcValue p = validParams();
+  p["allowed_pairs"][0] = pair("arm", "arm");
+  EXPECT_CONTAINS(errorOf(p), "allowed_pairs[0]: expected two different names");
+  p = validParams();
+  p["allowed_pairs"][0] = "arm";
+  EXPECT_CONTAINS(errorOf(p), "allowed_pairs[0]: expected a list of two names");
+}
+
+TEST(NodeConfig, UnknownKeysStopTheNodeInsteadOfBeingIgnored) {
+  XmlRpcValue p = validParams();
+  p["self_colision"] = true;
+  EXPECT_CONTAINS(errorOf(p), "parameter ~self_colision: unknown key");
+  p = validParams();
+  p["links"][0]["radius"] = 0.2;
+  EXPECT_CONTAINS(errorOf(p), "links[0] (name 'arm'): unknown key 'radius'");
+}
+
+TEST(NodeConfig, ScalarParametersAreTypeChecked) {
+  XmlRpcValue p = validParams();
+  p["rate"] = "fast";
+  EXPECT_EQ(errorOf(p), "parameter ~rate, key 'rate': expected a number, got 'fast' (a string)");
+  p = validParams();
+  p["rate"] = -1.0;
+  EXPECT_CONTAINS(errorOf(p), "parameter ~rate, key 'rate': expected a finite number >= 0, got -1");
+  p = validParams();
+  p["self_collision"] = 1;
+  EXPECT_EQ(
+      errorOf(p),
+      "parameter ~self_collision, key 'self_collision': expected true or false, got 1 (an int)");
+  p = validParams();
+  p["fixed_frame"] = "/map";
+  EXPECT_CONTAINS(errorOf(p), "parameter ~fixed_frame, key 'fixed_frame'");
+}
+
+TEST(NodeConfig, EllipseListsMustBeListsOfDicts) {
+  XmlRpcValue p = validParams();
+  p["obstacles"] = "none";
+  EXPECT_CONTAINS(errorOf(p), "parameter ~obstacles, key 'obstacles': expected a list of ellipses");
+  p = validParams();
+  p["links"][0] = 3;
+  EXPECT_CONTAINS(errorOf(p), "links[0]: expected a dict with keys");
+}
+
+TEST(NodeConfig, EmptyOrSlashedFrameOfAnEntryStopsTheNode) {
+  XmlRpcValue p = validParams();
+  p["links"][0]["frame"] = "";
+  EXPECT_CONTAINS(errorOf(p),
+                  "links[0] (name 'arm'), key 'frame': expected a non-empty tf frame id");
+  p = validParams();
+  p["links"][0]["frame"] = "/arm_link";
+  EXPECT_CONTAINS(errorOf(p), "key 'frame': expected a tf2 frame id without a leading '/'");
+  p = validParams();
+  p["links"][0]["name"] = "";
+  EXPECT_CONTAINS(errorOf(p), "links[0] (name ''), key 'name'");
+}
+
+}  // namespace
+}  // namespace ellipse_collision

@@ -1,0 +1,316 @@
+// rostest client: the node's services through a C++ client (scene: test_scene.yaml,
+// frames: test_frames.yaml). Every test leaves the node as it found it.
+#include <cmath>
+#include <limits>
+
+#include "node_test_utils.h"
+
+namespace ellipse_collision {
+namespace test {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+#define EXPECT_CONTAINS(text, part) \
+  EXPECT_NE(std::string(text).find(part), std::string::npos) << "in: " << (text)
+
+class NodeServices : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    ASSERT_TRUE(ros::service::waitForService(nodeTopic("check_collisions"), ros::Duration(30)));
+    check_ = nh_.serviceClient<CheckCollisions>(nodeTopic("check_collisions"));
+    add_ = nh_.serviceClient<AddObstacles>(nodeTopic("add_obstacles"));
+    remove_ = nh_.serviceClient<RemoveObstacles>(nodeTopic("remove_obstacles"));
+    // tf is up once every frame of the helper is seen (camera_link is missing on purpose).
+    ASSERT_TRUE(waitUntil(
+        [this] {
+          const CheckCollisions::Response r = check();
+          return r.success && r.unavailable_frames == std::vector<std::string>{"camera_link"};
+        },
+        30.0));
+  }
+
+  CheckCollisions::Response check(const std::vector<std::string>& names = {},
+                                  const std::vector<EllipseMsg>& query = {},
+                                  const ros::Time& stamp = ros::Time(0)) {
+    CheckCollisions srv;
+    srv.request.names = names;
+    srv.request.query = query;
+    srv.request.stamp = stamp;
+    EXPECT_TRUE(check_.call(srv)) << "the node stopped serving ~check_collisions";
+    return srv.response;
+  }
+
+  AddObstacles::Response add(const std::vector<EllipseMsg>& obstacles) {
+    AddObstacles srv;
+    srv.request.obstacles = obstacles;
+    EXPECT_TRUE(add_.call(srv)) << "the node stopped serving ~add_obstacles";
+    return srv.response;
+  }
+
+  RemoveObstacles::Response remove(const std::vector<std::string>& names) {
+    RemoveObstacles srv;
+    srv.request.names = names;
+    EXPECT_TRUE(remove_.call(srv)) << "the node stopped serving ~remove_obstacles";
+    return srv.response;
+  }
+
+  bool isStored(const std::string& name) { return check({name}).success; }
+
+  ros::NodeHandle nh_;
+  ros::ServiceClient check_;
+  ros::ServiceClient add_;
+  ros::ServiceClient remove_;
+};
+
+TEST_F(NodeServices, TiltedFrameIsProjectedExactly) {
+  const CheckCollisions::Response r = check();
+  ASSERT_TRUE(r.success) << r.message;
+  // The plate (0.4 m circle tilted 60 deg) is 0.2 m tall in base_link: post_near (0.1 m at
+  // 0.25 m) touches at scale 0.25 / 0.3; post (0.35 m) misses, though the untilted circle would
+  // hit.
+  const CollisionPair* near = findPair(r.collisions, "plate", "post_near");
+  ASSERT_TRUE(near);
+  EXPECT_NEAR(near->contact_scale, 0.25 / 0.3, 1e-9);
+  EXPECT_FALSE(findPair(r.collisions, "plate", "post"));
+  EXPECT_TRUE(r.in_collision);
+}
+
+TEST_F(NodeServices, AllowedPairIsNeverReportedThoughTheEllipsesOverlap) {
+  // A query twin of bumper shows that body and bumper do overlap.
+  const CheckCollisions::Response twin =
+      check({}, {ellipseMsg("bumper_twin", "base_link", 0.5, 0.0, 0.1, 0.3)});
+  ASSERT_TRUE(twin.success) << twin.message;
+  EXPECT_TRUE(findPair(twin.collisions, "bumper_twin", "body"));
+  EXPECT_FALSE(findPair(twin.collisions, "body", "bumper"));
+  EXPECT_FALSE(findPair(twin.collisions, "bumper", "body"));
+}
+
+TEST_F(NodeServices, MissingFrameIsListedWhileOtherPairsAreStillChecked) {
+  const CheckCollisions::Response r = check();
+  ASSERT_TRUE(r.success);
+  EXPECT_EQ(r.unavailable_frames, std::vector<std::string>{"camera_link"});
+  EXPECT_CONTAINS(r.message, "camera: frame 'camera_link' unavailable");
+  EXPECT_TRUE(findPair(r.collisions, "plate", "post_near"));
+  EXPECT_FALSE(mentions(r.collisions, "camera"));
+}
+
+TEST_F(NodeServices, NameFilterKeepsOnlyPairsInvolvingListedNames) {
+  EXPECT_EQ(check({"post_near"}).collisions.size(), 1u);
+  const CheckCollisions::Response crate_only = check({"crate"});
+  ASSERT_TRUE(crate_only.success);
+  EXPECT_TRUE(crate_only.collisions.empty());
+  EXPECT_FALSE(crate_only.in_collision);
+}
+
+TEST_F(NodeServices, QueryIsCheckedAgainstStoredEllipsesButNotStored) {
+  // Centred on crate, given in crate's own frame: coincident centres give contact scale 0.
+  const std::vector<EllipseMsg> query = {ellipseMsg("probe", "odom", 2.0, 0.0, 0.1, 0.1)};
+  const CheckCollisions::Response r = check({"probe"}, query);
+  ASSERT_TRUE(r.success) << r.message;
+  ASSERT_EQ(r.collisions.size(), 1u);
+  EXPECT_EQ(r.collisions[0].name_a, "probe");
+  EXPECT_EQ(r.collisions[0].name_b, "crate");
+  EXPECT_NEAR(r.collisions[0].contact_scale, 0.0, 1e-12);
+  EXPECT_FALSE(isStored("probe"));
+}
+
+TEST_F(NodeServices, QueryInTheSameFrameAsItsObstacleMatchesTheHandComputedPlacement) {
+  // crate is at (1, 2) in base_link with its 0.3 m axis along y: a base_link query at (1, 2.5)
+  // of radius 0.25 reaches it at scale 0.5 / (0.3 + 0.25).
+  const CheckCollisions::Response r =
+      check({"q"}, {ellipseMsg("q", "base_link", 1.0, 2.5, 0.25, 0.25)});
+  ASSERT_TRUE(r.success) << r.message;
+  const CollisionPair* pair = findPair(r.collisions, "q", "crate");
+  ASSERT_TRUE(pair);
+  EXPECT_NEAR(pair->contact_scale, 0.5 / 0.55, 1e-9);
+}
+
+TEST_F(NodeServices, StampOutsideTheTfCacheMakesOnlyTheMovingFrameUnavailable) {
+  const CheckCollisions::Response r = check({}, {}, ros::Time::now() - ros::Duration(1000.0));
+  ASSERT_TRUE(r.success) << r.message;
+  EXPECT_EQ(r.unavailable_frames, (std::vector<std::string>{"arm_link", "camera_link"}));
+  EXPECT_TRUE(findPair(r.collisions, "plate", "post_near"));  // static frames hold at any time
+}
+
+TEST_F(NodeServices, AddedObstacleCollidesThenIsReplacedAndRemoved) {
+  AddObstacles::Response added = add({ellipseMsg("box", "base_link", 0.0, 0.0, 0.2, 0.2)});
+  ASSERT_TRUE(added.success) << added.message;
+  const CollisionPair* hit = findPair(check().collisions, "body", "box");
+  ASSERT_TRUE(hit);
+
+  added = add({ellipseMsg("box", "base_link", 0.0, 3.0, 0.2, 0.2)});
+  ASSERT_TRUE(added.success) << added.message;
+  EXPECT_FALSE(mentions(check().collisions, "box"));
+  EXPECT_TRUE(isStored("box"));
+
+  const RemoveObstacles::Response removed = remove({"box"});
+  EXPECT_TRUE(removed.success) << removed.message;
+  EXPECT_FALSE(isStored("box"));
+  const RemoveObstacles::Response again = remove({"box"});
+  EXPECT_FALSE(again.success);
+  EXPECT_CONTAINS(again.message, "names[0] = 'box'");
+}
+
+TEST_F(NodeServices, ConfiguredObstacleCanBeReplacedByTheService) {
+  ASSERT_TRUE(add({ellipseMsg("spare", "base_link", 0.0, 0.0, 0.1, 0.1)}).success);
+  EXPECT_TRUE(findPair(check().collisions, "body", "spare"));
+  ASSERT_TRUE(add({ellipseMsg("spare", "base_link", 50.0, 50.0, 0.1, 0.1)}).success);
+  EXPECT_FALSE(mentions(check().collisions, "spare"));
+}
+
+TEST_F(NodeServices, RemovingALinkIsRefusedAndNothingIsRemoved) {
+  const RemoveObstacles::Response r = remove({"post", "arm"});
+  EXPECT_FALSE(r.success);
+  EXPECT_CONTAINS(r.message, "names[1] = 'arm'");
+  EXPECT_CONTAINS(r.message, "configured link");
+  EXPECT_TRUE(isStored("arm"));
+  EXPECT_TRUE(isStored("post"));
+}
+
+TEST_F(NodeServices, EdgeOnFrameIsReportedForThatEllipseOnly) {
+  ASSERT_TRUE(add({ellipseMsg("blade", "edge_on_link", 0.0, 0.0, 0.3, 0.3)}).success);
+  const CheckCollisions::Response r = check();
+  EXPECT_TRUE(r.success);
+  EXPECT_CONTAINS(r.message, "ellipse 'blade'");
+  EXPECT_CONTAINS(r.message, "edge-on");
+  EXPECT_TRUE(findPair(r.collisions, "plate", "post_near"));
+  EXPECT_TRUE(remove({"blade"}).success);
+
+  const CheckCollisions::Response query =
+      check({}, {ellipseMsg("knife", "edge_on_link", 0.0, 0.0, 0.3, 0.3)});
+  EXPECT_FALSE(query.success);
+  EXPECT_CONTAINS(query.message, "query[0]: ellipse 'knife'");
+}
+
+struct BadObstacles {
+  const char* what;
+  std::vector<EllipseMsg> obstacles;
+  const char* message_part;
+};
+
+EllipseMsg with(EllipseMsg msg, void (*change)(EllipseMsg&)) {
+  change(msg);
+  return msg;
+}
+
+TEST_F(NodeServices, EveryBadObstacleIsRefusedNamingFieldAndValue) {
+  const EllipseMsg ok = ellipseMsg("rejected", "base_link", 0.0, 0.0, 0.2, 0.2);
+  const std::vector<BadObstacles> cases = {
+      {"nan x", {with(ok, [](EllipseMsg& m) { m.x = kNaN; })}, "obstacles[0].x = nan"},
+      {"inf y", {with(ok, [](EllipseMsg& m) { m.y = kInf; })}, "obstacles[0].y = inf"},
+      {"nan angle", {with(ok, [](EllipseMsg& m) { m.angle = kNaN; })}, "obstacles[0].angle = nan"},
+      {"zero radius",
+       {with(ok, [](EllipseMsg& m) { m.radius_x = 0; })},
+       "obstacles[0].radius_x = 0"},
+      {"negative radius",
+       {with(ok, [](EllipseMsg& m) { m.radius_y = -1; })},
+       "obstacles[0].radius_y = -1"},
+      {"inf radius",
+       {with(ok, [](EllipseMsg& m) { m.radius_x = kInf; })},
+       "obstacles[0].radius_x = inf"},
+      {"negative padding",
+       {with(ok, [](EllipseMsg& m) { m.padding = -0.1; })},
+       "obstacles[0].padding = -0.1"},
+      {"empty name", {with(ok, [](EllipseMsg& m) { m.name = ""; })}, "obstacles[0].name = ''"},
+      {"empty frame",
+       {with(ok, [](EllipseMsg& m) { m.frame_id = ""; })},
+       "obstacles[0].frame_id = ''"},
+      {"unknown frame",
+       {with(ok, [](EllipseMsg& m) { m.frame_id = "nowhere_link"; })},
+       "obstacles[0].frame_id = 'nowhere_link'"},
+      {"leading slash",
+       {with(ok, [](EllipseMsg& m) { m.frame_id = "/base_link"; })},
+       "obstacles[0].frame_id = '/base_link'"},
+      {"duplicate name", {ok, ok}, "obstacles[1].name = 'rejected'"},
+      {"name of a link",
+       {with(ok, [](EllipseMsg& m) { m.name = "arm"; })},
+       "obstacles[0].name = 'arm'"},
+      {"second entry bad",
+       {ok, with(ok,
+                 [](EllipseMsg& m) {
+                   m.name = "second";
+                   m.x = kNaN;
+                 })},
+       "obstacles[1].x = nan"},
+  };
+  for (const BadObstacles& c : cases) {
+    const AddObstacles::Response r = add(c.obstacles);
+    EXPECT_FALSE(r.success) << c.what;
+    EXPECT_CONTAINS(r.message, c.message_part);
+    EXPECT_FALSE(isStored("rejected")) << c.what << ": a refused request stored something";
+    EXPECT_FALSE(isStored("second")) << c.what << ": a refused request stored something";
+  }
+  EXPECT_TRUE(check().success);  // still serving
+}
+
+struct BadCheck {
+  const char* what;
+  std::vector<std::string> names;
+  std::vector<EllipseMsg> query;
+  const char* message_part;
+};
+
+TEST_F(NodeServices, EveryBadCheckRequestIsAnAnswerNamingFieldAndValue) {
+  const EllipseMsg ok = ellipseMsg("p", "base_link", 0.0, 0.0, 0.2, 0.2);
+  const std::vector<BadCheck> cases = {
+      {"unknown name", {"ghost"}, {}, "names[0] = 'ghost'"},
+      {"empty name", {""}, {}, "names[0] = ''"},
+      {"duplicate name", {"arm", "arm"}, {}, "names[1] = 'arm'"},
+      {"nan query", {}, {with(ok, [](EllipseMsg& m) { m.x = kNaN; })}, "query[0].x = nan"},
+      {"inf query",
+       {},
+       {with(ok, [](EllipseMsg& m) { m.radius_y = kInf; })},
+       "query[0].radius_y = inf"},
+      {"zero radius",
+       {},
+       {with(ok, [](EllipseMsg& m) { m.radius_x = 0; })},
+       "query[0].radius_x = 0"},
+      {"negative radius",
+       {},
+       {with(ok, [](EllipseMsg& m) { m.radius_y = -2; })},
+       "query[0].radius_y = -2"},
+      {"empty query name",
+       {},
+       {with(ok, [](EllipseMsg& m) { m.name = ""; })},
+       "query[0].name = ''"},
+      {"query named like a stored ellipse",
+       {},
+       {with(ok, [](EllipseMsg& m) { m.name = "crate"; })},
+       "query[0].name = 'crate'"},
+      {"duplicate query", {}, {ok, ok}, "query[1].name = 'p'"},
+      {"unknown query frame",
+       {},
+       {with(ok, [](EllipseMsg& m) { m.frame_id = "nowhere_link"; })},
+       "query[0].frame_id = 'nowhere_link'"},
+  };
+  for (const BadCheck& c : cases) {
+    const CheckCollisions::Response r = check(c.names, c.query);
+    EXPECT_FALSE(r.success) << c.what;
+    EXPECT_CONTAINS(r.message, c.message_part);
+    EXPECT_TRUE(r.collisions.empty()) << c.what;
+  }
+  EXPECT_TRUE(check().success);
+}
+
+TEST_F(NodeServices, EveryBadRemoveRequestIsRefusedNamingTheName) {
+  RemoveObstacles::Response r = remove({"ghost"});
+  EXPECT_FALSE(r.success);
+  EXPECT_CONTAINS(r.message, "names[0] = 'ghost'");
+  r = remove({""});
+  EXPECT_FALSE(r.success);
+  EXPECT_CONTAINS(r.message, "names[0] = ''");
+  r = remove({"post", "post"});
+  EXPECT_FALSE(r.success);
+  EXPECT_CONTAINS(r.message, "names[1] = 'post'");
+  EXPECT_TRUE(isStored("post"));
+}
+
+}  // namespace
+}  // namespace test
+}  // namespace ellipse_collision
+
+int main(int argc, char** argv) {
+  return ellipse_collision::test::runRostestClient(argc, argv, "test_node_services");
+}
