@@ -1,5 +1,6 @@
 #pragma once
 
+#include <Eigen/Core>
 #include <set>
 #include <string>
 #include <utility>
@@ -41,6 +42,8 @@ class AllowedPairs {
 struct SceneRules {
   bool self_collision{true};  ///< also check link against link
   AllowedPairs allowed;       ///< never reported
+  /// Separated pairs closer than this are reported as warnings [m]; finite, >= 0; 0 = none.
+  double warning_distance{0.0};
 };
 
 /// Two ellipses in collision. name_a is the one of lower role (Query < Link < Obstacle), by name
@@ -52,10 +55,22 @@ struct CollidingPair {
       0.0};  ///< contactScale(a, b): <= 1; both scaled by it about their centres touch
 };
 
-/// Either the colliding pairs or why the scene cannot be checked.
+/// Two ellipses and how far apart they are: a warning pair (separated, closer than the warning
+/// distance) or the nearest partner of one ellipse. Names are ordered as in CollidingPair, except
+/// in nearestTo()'s answer, whose name_a is the ellipse asked about.
+struct NearPair {
+  std::string name_a;
+  std::string name_b;
+  double distance{0.0};               ///< distance() between the two [m]; 0 when they overlap
+  Eigen::Vector2d point_a{0.0, 0.0};  ///< point of a's rim closest to b [m]; origin if overlapping
+  Eigen::Vector2d point_b{0.0, 0.0};  ///< point of b's rim closest to a [m]; origin if overlapping
+};
+
+/// Either the colliding and warning pairs or why the scene cannot be checked.
 struct SceneCheckResult {
   std::vector<CollidingPair> collisions;  ///< sorted by (role_a, name_a, role_b, name_b)
-  std::string error;                      ///< empty on success
+  std::vector<NearPair> warnings;  ///< separated but closer than warning_distance; same order
+  std::string error;               ///< empty on success
   bool ok() const { return error.empty(); }
 };
 
@@ -66,9 +81,31 @@ bool pairWanted(const NamedEllipse& a, const NamedEllipse& b, const SceneRules& 
                 const std::set<std::string>& only_names);
 
 /// Checks every wanted pair of `ellipses` with overlap() and reports the colliding ones with their
-/// contactScale(). The result depends only on the set of ellipses, not on their order. Refused with
-/// an error naming the entry: an empty or duplicate name, or an invalid ellipse.
+/// contactScale(). With rules.warning_distance > 0 it also reports the wanted pairs that are
+/// separated but closer than that, with their distance() and witness points: a pair whose centres
+/// are at least both bounding radii plus the warning distance apart is ruled out without calling
+/// distance() (with a margin for rounding, so the answer is the same as calling it on every pair).
+/// The result depends only on the set of ellipses, not on their order. Refused with an error
+/// naming the entry: an empty or duplicate name, or an invalid ellipse; or a warning distance that
+/// is negative or not finite.
 SceneCheckResult checkScene(const std::vector<NamedEllipse>& ellipses, const SceneRules& rules,
                             const std::set<std::string>& only_names = {});
+
+/// The answer of nearestTo(): the nearest partner of one ellipse, or why there is none.
+struct NearestResult {
+  bool found{false};  ///< false when no wanted pair involves the ellipse
+  NearPair nearest;   ///< name_a is the ellipse asked about; distance 0 if it collides
+  std::string error;  ///< empty on success
+  bool ok() const { return error.empty(); }
+};
+
+/// Of all ellipses the rules pair with the one named `name` (the name filter of checkScene() does
+/// not apply), the one at the smallest distance(). If it collides with any, the answer is the
+/// partner of smallest contactScale() at distance 0 (points at the origin). Ties go to the partner
+/// first in CollidingPair order. Partners whose bounding circles are farther than the best distance
+/// found so far are ruled out without calling distance(), as in checkScene(). Refused like
+/// checkScene(), and when no ellipse is named `name`.
+NearestResult nearestTo(const std::vector<NamedEllipse>& ellipses, const SceneRules& rules,
+                        const std::string& name);
 
 }  // namespace ellipse_collision

@@ -26,6 +26,7 @@ std::string join(const std::vector<std::string>& parts, const std::string& separ
 SceneRules makeRules(const NodeConfig& config) {
   SceneRules rules;
   rules.self_collision = config.self_collision;
+  rules.warning_distance = config.warning_distance_m;
   for (const auto& pair : config.allowed_pairs) rules.allowed.add(pair.first, pair.second);
   return rules;
 }
@@ -72,13 +73,17 @@ CollisionNode::CollisionNode(const ros::NodeHandle& nh, const ros::NodeHandle& p
                   << config_.links.size() << " links, " << config_.obstacles.size()
                   << " obstacles in '" << config_.fixed_frame << "', "
                   << (config_.rate_hz > 0.0 ? "checking at " + formatNumber(config_.rate_hz) + " Hz"
-                                            : std::string("checking on service calls only")));
+                                            : std::string("checking on service calls only"))
+                  << (config_.warning_distance_m > 0.0
+                          ? ", warning within " + formatNumber(config_.warning_distance_m) + " m"
+                          : std::string()));
 }
 
 CollisionNode::CheckOutcome CollisionNode::check(const ros::Time& time,
                                                  const ros::Duration& timeout,
                                                  const std::set<std::string>& only_names,
-                                                 const std::vector<EllipseSpec>& query) {
+                                                 const std::vector<EllipseSpec>& query,
+                                                 const std::string& min_distance_of) {
   CheckOutcome outcome;
   ScenePlacement placement(tf_buffer_, config_.fixed_frame, config_.padding_m, time, timeout);
 
@@ -127,12 +132,32 @@ CollisionNode::CheckOutcome CollisionNode::check(const ros::Time& time,
     return outcome;
   }
   outcome.collisions = std::move(result.collisions);
+  outcome.warnings = std::move(result.warnings);
+
+  if (min_distance_of.empty()) return outcome;
+  const std::string where = "min_distance_of = '" + min_distance_of + "': ";
+  const bool placed = std::any_of(scene.begin(), scene.end(),
+                                  [&](const NamedEllipse& e) { return e.name == min_distance_of; });
+  if (!placed) {
+    outcome.nearest_problem = where + "not measured, the ellipse could not be placed";
+    return outcome;
+  }
+  const NearestResult nearest = nearestTo(scene, rules_, min_distance_of);
+  if (!nearest.ok()) {
+    ROS_ERROR_STREAM("ellipse_collision: nearest refused by the core: " << nearest.error);
+    outcome.error = "internal error: " + nearest.error;
+  } else if (!nearest.found) {
+    outcome.nearest_problem = where + "no placed ellipse that the pair rules measure it against";
+  } else {
+    outcome.nearest = nearest.nearest;
+  }
   return outcome;
 }
 
-CollisionNode::CheckOutcome CollisionNode::runFullCheck(const ros::Duration& timeout) {
+CollisionNode::CheckOutcome CollisionNode::runFullCheck(const ros::Duration& timeout,
+                                                        const std::string& min_distance_of) {
   const auto start = std::chrono::steady_clock::now();
-  CheckOutcome outcome = check(ros::Time(0), timeout, {}, {});
+  CheckOutcome outcome = check(ros::Time(0), timeout, {}, {}, min_distance_of);
   if (!outcome.error.empty()) {
     // Never publish a failed check as "clear": the topics keep the last good state.
     ROS_ERROR_STREAM_THROTTLE(5.0, "ellipse_collision: check failed: " << outcome.error);
@@ -161,19 +186,15 @@ void CollisionNode::publishState() {
   msg.collisions = toMsg(state_.outcome.collisions);
   msg.in_collision = !msg.collisions.empty();
   msg.unavailable_frames = state_.outcome.unavailable_frames;
+  msg.warnings = toMsg(state_.outcome.warnings);
   collisions_pub_.publish(msg);
 }
 
 void CollisionNode::publishMarkers() {
   // Nobody listening: skip the work. onMarkerSubscriber() publishes for the next subscriber.
   if (!state_.valid || markers_pub_.getNumSubscribers() == 0) return;
-  std::set<std::string> colliding;
-  for (const CollidingPair& pair : state_.outcome.collisions) {
-    colliding.insert(pair.name_a);
-    colliding.insert(pair.name_b);
-  }
-  markers_pub_.publish(
-      markers_.update(state_.outcome.placed, colliding, config_.fixed_frame, state_.stamp));
+  markers_pub_.publish(markers_.update(state_.outcome.placed, state_.outcome.collisions,
+                                       state_.outcome.warnings, config_.fixed_frame, state_.stamp));
 }
 
 std::string CollisionNode::validateAttached(const std::vector<EllipseSpec>& specs,
@@ -253,22 +274,37 @@ bool CollisionNode::onCheckCollisions(CheckCollisions::Request& request,
       return true;
     }
   }
+  const std::string& min_distance_of = request.min_distance_of;
+  if (!min_distance_of.empty() && !registry_.contains(min_distance_of) &&
+      !query_names.count(min_distance_of)) {
+    response.message = "min_distance_of = '" + min_distance_of +
+                       "': expected the name of a link, obstacle or query (or empty), got an " +
+                       "unknown name";
+    return true;
+  }
 
   // A full check at the latest time is what the topics show: record and publish it too (with
   // rate = 0 this is the only way they are updated).
   const ros::Duration timeout(config_.tf_timeout_s);
   const bool full_check = request.names.empty() && request.query.empty() && request.stamp.isZero();
   const CheckOutcome outcome =
-      full_check ? runFullCheck(timeout) : check(request.stamp, timeout, only_names, query);
+      full_check ? runFullCheck(timeout, min_distance_of)
+                 : check(request.stamp, timeout, only_names, query, min_distance_of);
   if (!outcome.error.empty()) {
     response.message = outcome.error;
     return true;
   }
   response.success = true;
-  response.message = outcome.skipped.empty() ? "" : "skipped " + join(outcome.skipped, "; ");
+  std::vector<std::string> notes;
+  if (!outcome.skipped.empty()) notes.push_back("skipped " + join(outcome.skipped, "; "));
+  if (!outcome.nearest_problem.empty()) notes.push_back(outcome.nearest_problem);
+  response.message = join(notes, "; ");
   response.collisions = toMsg(outcome.collisions);
   response.in_collision = !response.collisions.empty();
   response.unavailable_frames = outcome.unavailable_frames;
+  response.warnings = toMsg(outcome.warnings);
+  response.has_min_distance = outcome.nearest.has_value();
+  if (outcome.nearest) response.nearest = toMsg(*outcome.nearest);
   return true;
 }
 
@@ -313,8 +349,10 @@ void CollisionNode::onDiagnosticsTimer(const ros::TimerEvent& /*event*/) {
   status.level = !state_.failure.empty()            ? diagnostic_msgs::DiagnosticStatus::ERROR
                  : problems.empty() || only_waiting ? diagnostic_msgs::DiagnosticStatus::OK
                                                     : diagnostic_msgs::DiagnosticStatus::WARN;
-  status.message = problems.empty() ? (state_.outcome.collisions.empty() ? "clear" : "in collision")
-                                    : join(problems, "; ");
+  status.message = !problems.empty()                    ? join(problems, "; ")
+                   : !state_.outcome.collisions.empty() ? "in collision"
+                   : !state_.outcome.warnings.empty()   ? "closer than the warning distance"
+                                                        : "clear";
 
   status.values.push_back(
       keyValue("links", std::to_string(registry_.count(EllipseSource::ConfiguredLink))));
@@ -328,6 +366,7 @@ void CollisionNode::onDiagnosticsTimer(const ros::TimerEvent& /*event*/) {
   status.values.push_back(
       keyValue("unavailable frames", join(state_.outcome.unavailable_frames, ", ")));
   status.values.push_back(keyValue("collisions", std::to_string(state_.outcome.collisions.size())));
+  status.values.push_back(keyValue("warnings", std::to_string(state_.outcome.warnings.size())));
   status.values.push_back(keyValue("full checks", std::to_string(full_checks_)));
   status.values.push_back(
       keyValue("last check duration [ms]", formatNumber(1e3 * state_.duration_s)));

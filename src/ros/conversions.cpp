@@ -57,4 +57,33 @@ std::vector<CollisionPair> toMsg(const std::vector<CollidingPair>& pairs) {
   return msgs;
 }
 
+NearPair fromMsg(const ClearancePair& msg) {
+  return NearPair{msg.name_a,
+                  msg.name_b,
+                  msg.distance,
+                  {msg.point_a.x, msg.point_a.y},
+                  {msg.point_b.x, msg.point_b.y}};
+}
+
+ClearancePair toMsg(const NearPair& pair) {
+  ClearancePair msg;
+  msg.name_a = pair.name_a;
+  msg.name_b = pair.name_b;
+  msg.distance = pair.distance;
+  msg.point_a.x = pair.point_a.x();
+  msg.point_a.y = pair.point_a.y();
+  msg.point_a.z = 0.0;
+  msg.point_b.x = pair.point_b.x();
+  msg.point_b.y = pair.point_b.y();
+  msg.point_b.z = 0.0;
+  return msg;
+}
+
+std::vector<ClearancePair> toMsg(const std::vector<NearPair>& pairs) {
+  std::vector<ClearancePair> msgs;
+  msgs.reserve(pairs.size());
+  for (const NearPair& pair : pairs) msgs.push_back(toMsg(pair));
+  return msgs;
+}
+
 }  // namespace ellipse_collision

@@ -180,15 +180,15 @@ NodeConfig parseNodeConfig(const XmlRpcValue& params) {
                       describeValue(root));
   }
 
-  const std::set<std::string> known = {"fixed_frame",   "rate",          "tf_timeout",
-                                       "padding",       "links",         "obstacles",
-                                       "allowed_pairs", "self_collision"};
+  const std::set<std::string> known = {"fixed_frame",   "rate",           "tf_timeout",
+                                       "padding",       "links",          "obstacles",
+                                       "allowed_pairs", "self_collision", "warning_distance"};
   if (root.getType() == XmlRpcValue::TypeStruct) {
     for (auto it = root.begin(); it != root.end(); ++it) {
       if (!known.count(it->first)) {
         throw ConfigError("parameter ~" + it->first +
                           ": unknown key (expected one of fixed_frame, rate, tf_timeout, padding, "
-                          "links, obstacles, allowed_pairs, self_collision)");
+                          "links, obstacles, allowed_pairs, self_collision, warning_distance)");
       }
     }
   }
@@ -210,6 +210,10 @@ NodeConfig parseNodeConfig(const XmlRpcValue& params) {
   if (has("self_collision")) {
     config.self_collision =
         readBool(root["self_collision"], "parameter ~self_collision", "self_collision");
+  }
+  if (has("warning_distance")) {
+    config.warning_distance_m = readNonNegative(root["warning_distance"],
+                                                "parameter ~warning_distance", "warning_distance");
   }
   if (!has("links")) {
     throw ConfigError(

@@ -1,7 +1,8 @@
 // rostest client for launch/demo.launch in a virtual X server (see demo_screenshot.test): waits
 // until the demo has been both in collision and clear, freezes it (demo_driver/pause) at a moment
-// with a collision, grabs the screen and checks that rviz draws every colliding ellipse red and
-// every clear one green, at the pixels the view in rviz/demo.rviz maps it to.
+// with a collision (and, if the demo offers one soon, a warning pair), grabs the screen and checks
+// that rviz draws every colliding ellipse red, every other one in a warning pair yellow and every
+// clear one green, at the pixels the view in rviz/demo.rviz maps it to.
 #include <std_srvs/SetBool.h>
 #include <tf2_ros/transform_listener.h>
 
@@ -25,9 +26,10 @@ namespace ellipse_collision {
 namespace test {
 namespace {
 
-// Marker colours are red (0.9, 0.1, 0.1) or green (0.1, 0.8, 0.1), alpha 0.6, over a grey
-// background and under the half-transparent grey robot: the dominant channel stays clear of the
-// other two by at least ~60 of 255.
+// Marker colours are red (0.9, 0.1, 0.1), yellow (0.9, 0.85, 0.1) or green (0.1, 0.8, 0.1), alpha
+// 0.6, over a grey background and under the half-transparent grey robot: the dominant channel (red
+// and green together for yellow) stays clear of the others by at least ~50 of 255, while red and
+// green of yellow stay within ~10 of each other.
 constexpr int kHueMargin = 30;
 // Pixels this close to an ellipse's outline [px] are skipped: anti-aliasing mixes them.
 constexpr double kEdgeMarginPx = 3.0;
@@ -39,7 +41,21 @@ constexpr int kMinPixels = 20;
 constexpr double kMinExpectedShare = 0.5;
 constexpr double kMaxOtherShare = 0.1;
 
-enum class Hue { Red, Green, Other };
+enum class Hue { Red, Yellow, Green, Other };
+
+const char* nameOf(Hue hue) {
+  switch (hue) {
+    case Hue::Red:
+      return "red";
+    case Hue::Yellow:
+      return "yellow";
+    case Hue::Green:
+      return "green";
+    case Hue::Other:
+      break;
+  }
+  return "other";
+}
 
 Hue hueOf(const Rgb& colour) {
   const int r = colour[0];
@@ -47,6 +63,7 @@ Hue hueOf(const Rgb& colour) {
   const int b = colour[2];
   if (r - std::max(g, b) >= kHueMargin) return Hue::Red;
   if (g - std::max(r, b) >= kHueMargin) return Hue::Green;
+  if (std::min(r, g) - b >= kHueMargin) return Hue::Yellow;
   return Hue::Other;
 }
 
@@ -62,10 +79,13 @@ double normalisedRadius(const Ellipse& e, const Eigen::Vector2d& point, double g
 }
 
 struct HueCount {
-  int red{0};
-  int green{0};
-  int other{0};
-  int total() const { return red + green + other; }
+  std::map<Hue, int> of;
+  int total() const {
+    int sum = 0;
+    for (const auto& entry : of) sum += entry.second;
+    return sum;
+  }
+  int get(Hue hue) const { return of.count(hue) ? of.at(hue) : 0; }
 };
 
 /// The hues of the screen pixels that show `target` and nothing else: inside it by at least the
@@ -96,17 +116,7 @@ HueCount countHues(const ScreenImage& image, const TopDownView& view, const Pane
         if ((point - origin).norm() < kAxesRadiusM) covered = true;
       }
       if (covered) continue;
-      switch (hueOf(image.at(x, y))) {
-        case Hue::Red:
-          ++count.red;
-          break;
-        case Hue::Green:
-          ++count.green;
-          break;
-        case Hue::Other:
-          ++count.other;
-          break;
-      }
+      ++count.of[hueOf(image.at(x, y))];
     }
   }
   return count;
@@ -114,37 +124,55 @@ HueCount countHues(const ScreenImage& image, const TopDownView& view, const Pane
 
 /// What one screenshot shows; `problems` is empty when every judged ellipse has its colour.
 struct Verdict {
-  std::string report;    ///< one line per ellipse
-  std::string problems;  ///< one line per ellipse with the wrong colour
-  int red_checked{0};    ///< colliding ellipses judged on enough pixels
-  int green_checked{0};  ///< clear ellipses judged on enough pixels
+  std::string report;          ///< one line per ellipse
+  std::string problems;        ///< one line per ellipse with the wrong colour
+  std::map<Hue, int> checked;  ///< ellipses judged on enough pixels, by expected colour
+  int count(Hue hue) const { return checked.count(hue) ? checked.at(hue) : 0; }
 };
 
+/// Red in collision, else yellow in a warning pair, else green (CollisionMarkers' rule).
 Verdict judge(const ScreenImage& image, const TopDownView& view, const PanelRect& panel,
               const std::vector<NamedEllipse>& placed, const std::set<std::string>& colliding,
+              const std::set<std::string>& warned,
               const std::vector<Eigen::Vector2d>& frame_origins) {
   Verdict verdict;
   for (const NamedEllipse& e : placed) {
     const HueCount count = countHues(image, view, panel, e, placed, frame_origins);
-    const bool expect_red = colliding.count(e.name) != 0;
+    const Hue expected = colliding.count(e.name) ? Hue::Red
+                         : warned.count(e.name)  ? Hue::Yellow
+                                                 : Hue::Green;
     const Eigen::Vector2d pixel = toPixel(view, panel, e.ellipse.center);
     std::ostringstream line;
-    line << e.name << (expect_red ? " (colliding)" : " (clear)") << " at pixel (" << int(pixel.x())
-         << ", " << int(pixel.y()) << "): " << count.red << " red, " << count.green << " green, "
-         << count.other << " other\n";
+    line << e.name << " (expected " << nameOf(expected) << ") at pixel (" << int(pixel.x()) << ", "
+         << int(pixel.y()) << "):";
+    for (const Hue hue : {Hue::Red, Hue::Yellow, Hue::Green, Hue::Other}) {
+      line << " " << count.get(hue) << " " << nameOf(hue);
+    }
+    line << "\n";
     verdict.report += line.str();
     if (count.total() < kMinPixels) continue;
-    const double expected = expect_red ? count.red : count.green;
-    const double other = expect_red ? count.green : count.red;
-    if (expected < kMinExpectedShare * count.total() || other > kMaxOtherShare * count.total()) {
+    int wrong = 0;  // pixels of another marker colour
+    for (const Hue hue : {Hue::Red, Hue::Yellow, Hue::Green}) {
+      if (hue != expected) wrong += count.get(hue);
+    }
+    if (count.get(expected) < kMinExpectedShare * count.total() ||
+        wrong > kMaxOtherShare * count.total()) {
       verdict.problems += line.str();
-    } else if (expect_red) {
-      ++verdict.red_checked;
     } else {
-      ++verdict.green_checked;
+      ++verdict.checked[expected];
     }
   }
   return verdict;
+}
+
+std::set<std::string> namesIn(const CollisionState& state, bool warnings) {
+  std::set<std::string> names;
+  if (warnings) {
+    for (const ClearancePair& pair : state.warnings) names.insert({pair.name_a, pair.name_b});
+  } else {
+    for (const CollisionPair& pair : state.collisions) names.insert({pair.name_a, pair.name_b});
+  }
+  return names;
 }
 
 bool setPaused(ros::ServiceClient& client, bool paused) {
@@ -190,7 +218,7 @@ struct SeenKinds {
   bool streamed_obstacle{false};
 };
 
-TEST(DemoInRviz, CollidingEllipsesAreRedAndClearOnesGreen) {
+TEST(DemoInRviz, CollidingEllipsesAreRedNearOnesYellowAndClearOnesGreen) {
   ros::NodeHandle nh;
   ros::NodeHandle private_nh("~");
   std::string rviz_config;
@@ -217,13 +245,20 @@ TEST(DemoInRviz, CollidingEllipsesAreRedAndClearOnesGreen) {
   ASSERT_TRUE(seen.clear) << "the demo was never clear";
   ASSERT_TRUE(pause.waitForExistence(ros::Duration(30.0)));
 
-  // Freeze it while something collides. A check stamped well after the pause saw the frozen pose;
-  // if the collision ended just before the pause, run on and try again.
+  // Freeze it while something collides, in the first attempts only at a moment that also has a
+  // warning pair. A check stamped well after the pause saw the frozen pose; if the collision ended
+  // just before the pause, run on and try again.
   CollisionState frozen;
   bool frozen_in_collision = false;
   for (int attempt = 0; attempt < 10 && !frozen_in_collision; ++attempt) {
-    ASSERT_TRUE(
-        states.waitForLatest([](const auto& s) { return complete(s) && s.in_collision; }, 40.0));
+    const bool want_warning = attempt < 3;
+    const bool seen = states.waitForLatest(
+        [want_warning](const auto& s) {
+          return complete(s) && s.in_collision && (!want_warning || !s.warnings.empty());
+        },
+        want_warning ? 10.0 : 40.0);
+    if (!seen && want_warning) continue;  // settle for a collision alone
+    ASSERT_TRUE(seen) << "the demo was not in collision for 40 s";
     ASSERT_TRUE(setPaused(pause, true));
     const ros::Time paused_at = ros::Time::now();
     ASSERT_TRUE(states.waitForLatest(
@@ -235,11 +270,8 @@ TEST(DemoInRviz, CollidingEllipsesAreRedAndClearOnesGreen) {
     }
   }
   ASSERT_TRUE(frozen_in_collision) << "could not pause the demo during a collision";
-  std::set<std::string> colliding;
-  for (const CollisionPair& pair : frozen.collisions) {
-    colliding.insert(pair.name_a);
-    colliding.insert(pair.name_b);
-  }
+  const std::set<std::string> colliding = namesIn(frozen, false);
+  const std::set<std::string> warned = namesIn(frozen, true);
 
   // Where every ellipse is now, from tf, the configuration and the driver's last obstacle message.
   ScenePlacement placement(tf_buffer, config.fixed_frame, config.padding_m, ros::Time(0),
@@ -266,15 +298,15 @@ TEST(DemoInRviz, CollidingEllipsesAreRedAndClearOnesGreen) {
   // The frozen state is about this geometry: checking it here finds the same colliding ellipses.
   SceneRules rules;
   rules.self_collision = config.self_collision;
+  rules.warning_distance = config.warning_distance_m;
   for (const auto& pair : config.allowed_pairs) rules.allowed.add(pair.first, pair.second);
   const SceneCheckResult check = checkScene(placed, rules);
   ASSERT_TRUE(check.ok()) << check.error;
-  std::set<std::string> colliding_here;
-  for (const CollidingPair& pair : check.collisions) {
-    colliding_here.insert(pair.name_a);
-    colliding_here.insert(pair.name_b);
-  }
-  ASSERT_EQ(colliding_here, colliding) << "the demo did not stay still while paused";
+  CollisionState here;
+  here.collisions = toMsg(check.collisions);
+  here.warnings = toMsg(check.warnings);
+  ASSERT_EQ(namesIn(here, false), colliding) << "the demo did not stay still while paused";
+  ASSERT_EQ(namesIn(here, true), warned) << "the demo did not stay still while paused";
 
   // rviz renders in software and may be a few frames behind the markers: look a few times.
   Verdict verdict;
@@ -287,8 +319,10 @@ TEST(DemoInRviz, CollidingEllipsesAreRedAndClearOnesGreen) {
     panel = image.findArea({Rgb::value_type(bg[0]), Rgb::value_type(bg[1]), Rgb::value_type(bg[2])},
                            100);
     if (panel.width() < 200 || panel.height() < 200) continue;  // rviz not up yet
-    verdict = judge(image, view, panel, placed, colliding, frame_origins);
-    if (verdict.problems.empty() && verdict.red_checked > 0 && verdict.green_checked > 0) break;
+    verdict = judge(image, view, panel, placed, colliding, warned, frame_origins);
+    if (verdict.problems.empty() && verdict.count(Hue::Red) > 0 && verdict.count(Hue::Green) > 0) {
+      break;
+    }
   }
   if (!screenshot.empty()) image.savePpm(screenshot);
 
@@ -299,10 +333,10 @@ TEST(DemoInRviz, CollidingEllipsesAreRedAndClearOnesGreen) {
         << verdict.report;
   ASSERT_GE(panel.width(), 200) << "no rviz render panel on the screen\n" << where.str();
   EXPECT_EQ(verdict.problems, "") << where.str();
-  EXPECT_GT(verdict.red_checked, 0) << "no colliding ellipse visible enough to judge\n"
-                                    << where.str();
-  EXPECT_GT(verdict.green_checked, 0) << "no clear ellipse visible enough to judge\n"
-                                      << where.str();
+  EXPECT_GT(verdict.count(Hue::Red), 0) << "no colliding ellipse visible enough to judge\n"
+                                        << where.str();
+  EXPECT_GT(verdict.count(Hue::Green), 0) << "no clear ellipse visible enough to judge\n"
+                                          << where.str();
   ROS_INFO_STREAM("demo screenshot: " << where.str());
   EXPECT_TRUE(setPaused(pause, false));
 }

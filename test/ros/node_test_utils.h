@@ -52,6 +52,14 @@ inline const CollisionPair* findPair(const std::vector<CollisionPair>& pairs, co
   return nullptr;
 }
 
+inline const ClearancePair* findWarning(const std::vector<ClearancePair>& pairs,
+                                        const std::string& a, const std::string& b) {
+  for (const ClearancePair& pair : pairs) {
+    if (pair.name_a == a && pair.name_b == b) return &pair;
+  }
+  return nullptr;
+}
+
 inline bool mentions(const std::vector<CollisionPair>& pairs, const std::string& name) {
   for (const CollisionPair& pair : pairs) {
     if (pair.name_a == name || pair.name_b == name) return true;

@@ -147,6 +147,24 @@ TEST(BadConfig, NegativeRateStopsTheNode) {
                   "parameter ~rate, key 'rate': expected a finite number >= 0, got -10");
 }
 
+TEST(BadConfig, NegativeWarningDistanceStopsTheNode) {
+  const NodeRun run = runWith("bad_warning", [](XmlRpcValue& c) { c["warning_distance"] = -0.05; });
+  EXPECT_EQ(run.exit_status, 1) << run.output;
+  EXPECT_CONTAINS(run.output,
+                  "parameter ~warning_distance, key 'warning_distance': expected a finite number "
+                  ">= 0, got -0.05");
+}
+
+TEST(BadConfig, NanWarningDistanceStopsTheNode) {
+  const NodeRun run = runWith("bad_warning_nan", [](XmlRpcValue& c) {
+    c["warning_distance"] = std::numeric_limits<double>::quiet_NaN();
+  });
+  EXPECT_EQ(run.exit_status, 1) << run.output;
+  EXPECT_CONTAINS(run.output,
+                  "parameter ~warning_distance, key 'warning_distance': expected a finite number "
+                  ">= 0, got nan");
+}
+
 }  // namespace
 }  // namespace test
 }  // namespace ellipse_collision

@@ -98,6 +98,32 @@ TEST(Conversions, CollidingPairSurvivesTheRoundTripThroughTheMessage) {
   EXPECT_EQ(msgs[1].contact_scale, 0.5);
 }
 
+TEST(Conversions, NearPairSurvivesTheRoundTripThroughTheClearanceMessage) {
+  const NearPair pair{"arm", "crate", 0.1, {0.3, -1.0 / 3.0}, {0.35, -0.4}};
+  const ClearancePair msg = toMsg(pair);
+  EXPECT_EQ(msg.name_a, "arm");
+  EXPECT_EQ(msg.name_b, "crate");
+  EXPECT_TRUE(sameBits(msg.distance, 0.1));
+  EXPECT_TRUE(sameBits(msg.point_a.x, 0.3));
+  EXPECT_TRUE(sameBits(msg.point_a.y, -1.0 / 3.0));
+  EXPECT_TRUE(sameBits(msg.point_b.x, 0.35));
+  EXPECT_TRUE(sameBits(msg.point_b.y, -0.4));
+  EXPECT_EQ(msg.point_a.z, 0.0);  // points lie in the fixed frame's plane
+  EXPECT_EQ(msg.point_b.z, 0.0);
+  const NearPair back = fromMsg(msg);
+  EXPECT_EQ(back.name_a, pair.name_a);
+  EXPECT_EQ(back.name_b, pair.name_b);
+  EXPECT_TRUE(sameBits(back.distance, pair.distance));
+  EXPECT_EQ(back.point_a, pair.point_a);
+  EXPECT_EQ(back.point_b, pair.point_b);
+
+  const std::vector<ClearancePair> msgs =
+      toMsg(std::vector<NearPair>{pair, {"b", "c", 2.0, {1, 2}, {3, 4}}});
+  ASSERT_EQ(msgs.size(), 2u);
+  EXPECT_EQ(msgs[1].name_a, "b");
+  EXPECT_EQ(msgs[1].point_b.y, 4.0);
+}
+
 TEST(EllipseSpec, PaddingOfEntryAndNodeIsAddedToBothRadii) {
   const Ellipse e = paddedEllipse(sampleSpec(), 0.02);
   EXPECT_DOUBLE_EQ(e.radius_x, 0.3 + 0.01 + 0.02);

@@ -5,10 +5,12 @@
 #include <visualization_msgs/MarkerArray.h>
 
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <sstream>
 
+#include "ellipse_collision/ros/collision_markers.h"
 #include "node_test_utils.h"
 
 namespace ellipse_collision {
@@ -18,13 +20,21 @@ namespace {
 #define EXPECT_CONTAINS(text, part) \
   EXPECT_NE(std::string(text).find(part), std::string::npos) << "in: " << (text)
 
-/// What `rosservice call` printed, read as the flat YAML it prints for these services.
+/// What `rosservice call` printed, read as the block YAML it prints for these services.
 struct CliAnswer {
   int exit_status{-1};
   std::string output;
-  std::map<std::string, std::string> fields;                   ///< top-level scalars, unquoted
+  /// Every scalar by its path, unquoted: "success", "unavailable_frames[0]",
+  /// "warnings[1].point_a.y", "nearest.distance".
+  std::map<std::string, std::string> flat;
+  std::map<std::string, std::string> fields;                   ///< top-level scalars
   std::vector<std::map<std::string, std::string>> collisions;  ///< name_a, name_b, contact_scale
   std::vector<std::string> unavailable_frames;
+
+  double number(const std::string& path) const {
+    const auto found = flat.find(path);
+    return found == flat.end() ? std::nan("") : std::stod(found->second);
+  }
 };
 
 std::string unquote(const std::string& text) {
@@ -44,30 +54,65 @@ std::string trim(const std::string& text) {
 CliAnswer parse(const std::string& output) {
   CliAnswer answer;
   answer.output = output;
-  std::istringstream lines(output);
-  std::string line;
-  std::string list;  // top-level key of the list being read
-  while (std::getline(lines, line)) {
-    if (line.empty()) continue;
-    const std::string content = trim(line);
-    if (line[0] != ' ') {
-      const auto colon = line.find(':');
-      if (colon == std::string::npos) continue;
-      const std::string key = line.substr(0, colon);
-      const std::string value = trim(line.substr(colon + 1));
-      list = value.empty() ? key : "";
-      answer.fields[key] = unquote(value);
-    } else if (list == "unavailable_frames" && content.rfind("- ", 0) == 0) {
-      answer.unavailable_frames.push_back(unquote(trim(content.substr(2))));
-    } else if (list == "collisions" && content == "-") {
-      answer.collisions.emplace_back();
-    } else if (list == "collisions" && !answer.collisions.empty()) {
+  std::vector<std::string> lines;
+  {
+    std::istringstream in(output);
+    std::string line;
+    while (std::getline(in, line)) lines.push_back(line);
+  }
+  // Open maps and lists: where they are indented, their path, how many items a list has so far.
+  struct Open {
+    int indent;
+    std::string path;
+    int items;
+  };
+  std::vector<Open> open = {{-1, "", 0}};
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    const std::string content = trim(lines[i]);
+    if (content.empty()) continue;
+    const int indent = static_cast<int>(lines[i].find_first_not_of(' '));
+    while (open.size() > 1 && open.back().indent >= indent) open.pop_back();
+    Open& parent = open.back();
+    std::string path;
+    std::string value;
+    if (content[0] == '-') {
+      path = parent.path + "[" + std::to_string(parent.items++) + "]";
+      value = trim(content.substr(1));
+    } else {
       const auto colon = content.find(':');
-      if (colon != std::string::npos) {
-        answer.collisions.back()[content.substr(0, colon)] =
-            unquote(trim(content.substr(colon + 1)));
-      }
+      if (colon == std::string::npos) continue;
+      const std::string key = content.substr(0, colon);
+      path = parent.path.empty() ? key : parent.path + "." + key;
+      value = trim(content.substr(colon + 1));
     }
+    if (value.empty()) {
+      open.push_back({indent, path, 0});
+      continue;
+    }
+    // A long double-quoted string goes on over lines that end in '\' (the line break is dropped)
+    // and start with '\' (escaping the space after it).
+    while (value.front() == '"' && (value.size() < 2 || value.back() != '"') &&
+           i + 1 < lines.size()) {
+      if (value.back() == '\\') value.pop_back();
+      std::string next = trim(lines[++i]);
+      if (!next.empty() && next.front() == '\\') next.erase(0, 1);
+      value += next;
+    }
+    answer.flat[path] = unquote(value);
+  }
+  for (const auto& [path, value] : answer.flat) {
+    if (path.find_first_of(".[") == std::string::npos) answer.fields[path] = value;
+  }
+  for (int k = 0; answer.flat.count("unavailable_frames[" + std::to_string(k) + "]"); ++k) {
+    answer.unavailable_frames.push_back(
+        answer.flat["unavailable_frames[" + std::to_string(k) + "]"]);
+  }
+  for (int k = 0; answer.flat.count("collisions[" + std::to_string(k) + "].name_a"); ++k) {
+    std::map<std::string, std::string> pair;
+    for (const char* key : {"name_a", "name_b", "contact_scale"}) {
+      pair[key] = answer.flat["collisions[" + std::to_string(k) + "]." + key];
+    }
+    answer.collisions.push_back(pair);
   }
   return answer;
 }
@@ -179,6 +224,35 @@ TEST_F(NodeCli, BadRequestsAreAnswersOnTheCommandLine) {
   EXPECT_CONTAINS(answer.fields["message"], "names[0] = 'ghost'");
 }
 
+TEST_F(NodeCli, WarningsAndMinDistanceOnTheCommandLine) {
+  // test_scene.yaml: plate's rim at (0, 10.2) is 0.05 m from post's at (0, 10.25).
+  const CliAnswer answer = rosserviceCall("check_collisions", "{min_distance_of: post}");
+  ASSERT_EQ(answer.exit_status, 0) << answer.output;
+  EXPECT_EQ(answer.fields.at("success"), "True") << answer.output;
+  EXPECT_EQ(answer.flat.at("warnings[0].name_a"), "plate") << answer.output;
+  EXPECT_EQ(answer.flat.at("warnings[0].name_b"), "post");
+  EXPECT_NEAR(answer.number("warnings[0].distance"), 0.05, 1e-9);
+  EXPECT_NEAR(answer.number("warnings[0].point_a.y"), 10.2, 1e-9);
+  EXPECT_NEAR(answer.number("warnings[0].point_b.y"), 10.25, 1e-9);
+  EXPECT_EQ(answer.flat.count("warnings[1].name_a"), 0u) << answer.output;
+  EXPECT_EQ(answer.fields.at("has_min_distance"), "True");
+  EXPECT_EQ(answer.flat.at("nearest.name_a"), "post");
+  EXPECT_EQ(answer.flat.at("nearest.name_b"), "plate");
+  EXPECT_NEAR(answer.number("nearest.distance"), 0.05, 1e-9);
+  EXPECT_NEAR(answer.number("nearest.point_a.x"), 0.0, 1e-9);
+  EXPECT_NEAR(answer.number("nearest.point_a.y"), 10.25, 1e-9);
+  EXPECT_NEAR(answer.number("nearest.point_b.y"), 10.2, 1e-9);
+  EXPECT_EQ(answer.number("nearest.point_b.z"), 0.0);
+
+  const CliAnswer unknown = rosserviceCall("check_collisions", "{min_distance_of: ghost}");
+  EXPECT_EQ(unknown.exit_status, 0) << unknown.output;
+  EXPECT_EQ(unknown.fields.at("success"), "False") << unknown.output;
+  EXPECT_EQ(unknown.fields.at("message"),
+            "min_distance_of = 'ghost': expected the name of a link, obstacle or query (or empty), "
+            "got an unknown name");
+  EXPECT_EQ(unknown.fields.at("has_min_distance"), "False");
+}
+
 TEST_F(NodeCli, WithRateZeroTheTopicsChangeOnlyOnAFullCheck) {
   AddObstacles add;
   add.request.obstacles = {ellipseMsg("cli_rock", "base_link", 0.0, 0.0, 0.1, 0.1)};
@@ -201,7 +275,10 @@ TEST_F(NodeCli, WithRateZeroTheTopicsChangeOnlyOnAFullCheck) {
     EXPECT_TRUE(markers.waitForLatest(
         [](const visualization_msgs::MarkerArray& a) {
           for (const auto& m : a.markers) {
-            if (m.text == "cli_rock" && m.color.r > 0.5f) return true;
+            if (m.ns == "obstacles" && m.id == CollisionMarkers::preferredId("cli_rock") &&
+                m.action == visualization_msgs::Marker::ADD && m.color.r > 0.5f) {
+              return true;
+            }
           }
           return false;
         },

@@ -40,6 +40,7 @@ XmlRpcValue validParams() {
   p["tf_timeout"] = 0.5;
   p["padding"] = 0.01;
   p["self_collision"] = false;
+  p["warning_distance"] = 0.25;
   p["links"][0] = ellipseEntry("arm", "arm_link");
   p["links"][1] = ellipseEntry("hand", "hand_link", 1.0, 0.1);
   p["links"][1]["padding"] = 0.02;
@@ -68,6 +69,7 @@ TEST(NodeConfig, ValidConfigurationIsReadCompletely) {
   EXPECT_EQ(config.tf_timeout_s, 0.5);
   EXPECT_EQ(config.padding_m, 0.01);
   EXPECT_FALSE(config.self_collision);
+  EXPECT_EQ(config.warning_distance_m, 0.25);
   ASSERT_EQ(config.links.size(), 2u);
   EXPECT_EQ(config.links[1].name, "hand");
   EXPECT_EQ(config.links[1].frame_id, "hand_link");
@@ -90,6 +92,7 @@ TEST(NodeConfig, OptionalKeysTakeTheirDocumentedDefaults) {
   EXPECT_EQ(config.tf_timeout_s, 0.1);
   EXPECT_EQ(config.padding_m, 0.0);
   EXPECT_TRUE(config.self_collision);
+  EXPECT_EQ(config.warning_distance_m, 0.0);
   EXPECT_TRUE(config.links.empty());
   EXPECT_TRUE(config.obstacles.empty());
   EXPECT_TRUE(config.allowed_pairs.empty());
@@ -214,6 +217,23 @@ TEST(NodeConfig, ScalarParametersAreTypeChecked) {
   p = validParams();
   p["fixed_frame"] = "/map";
   EXPECT_CONTAINS(errorOf(p), "parameter ~fixed_frame, key 'fixed_frame'");
+}
+
+TEST(NodeConfig, WarningDistanceMustBeAFiniteNumberNotBelowZero) {
+  XmlRpcValue p = validParams();
+  p["warning_distance"] = 1;  // an int is a number
+  EXPECT_EQ(parseNodeConfig(p).warning_distance_m, 1.0);
+  const std::pair<double, const char*> bad[] = {
+      {-0.1, "got -0.1"},
+      {std::numeric_limits<double>::quiet_NaN(), "got nan"},
+      {std::numeric_limits<double>::infinity(), "got inf"}};
+  for (const auto& [value, actual] : bad) {
+    p["warning_distance"] = value;
+    EXPECT_EQ(errorOf(p), std::string("parameter ~warning_distance, key 'warning_distance': ") +
+                              "expected a finite number >= 0, " + actual);
+  }
+  p["warning_distance"] = "near";
+  EXPECT_CONTAINS(errorOf(p), "key 'warning_distance': expected a number, got 'near' (a string)");
 }
 
 TEST(NodeConfig, EllipseListsMustBeListsOfDicts) {

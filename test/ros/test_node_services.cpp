@@ -33,11 +33,13 @@ class NodeServices : public ::testing::Test {
 
   CheckCollisions::Response check(const std::vector<std::string>& names = {},
                                   const std::vector<EllipseMsg>& query = {},
-                                  const ros::Time& stamp = ros::Time(0)) {
+                                  const ros::Time& stamp = ros::Time(0),
+                                  const std::string& min_distance_of = "") {
     CheckCollisions srv;
     srv.request.names = names;
     srv.request.query = query;
     srv.request.stamp = stamp;
+    srv.request.min_distance_of = min_distance_of;
     EXPECT_TRUE(check_.call(srv)) << "the node stopped serving ~check_collisions";
     return srv.response;
   }
@@ -54,6 +56,11 @@ class NodeServices : public ::testing::Test {
     srv.request.names = names;
     EXPECT_TRUE(remove_.call(srv)) << "the node stopped serving ~remove_obstacles";
     return srv.response;
+  }
+
+  CheckCollisions::Response minDistanceOf(const std::string& name,
+                                          const std::vector<EllipseMsg>& query = {}) {
+    return check({}, query, ros::Time(0), name);
   }
 
   bool isStored(const std::string& name) { return check({name}).success; }
@@ -132,6 +139,88 @@ TEST_F(NodeServices, StampOutsideTheTfCacheMakesOnlyTheMovingFrameUnavailable) {
   ASSERT_TRUE(r.success) << r.message;
   EXPECT_EQ(r.unavailable_frames, (std::vector<std::string>{"arm_link", "camera_link"}));
   EXPECT_TRUE(findPair(r.collisions, "plate", "post_near"));  // static frames hold at any time
+}
+
+// probe: a 0.05 m circle at (0, 10.52), 0.17 m above post (0.1 m at (0, 10.35)): 0.02 m apart,
+// closest at (0, 10.47) and (0, 10.45); 0.27 m from plate and 0.12 m from post_near.
+EllipseMsg probeNearPost() { return ellipseMsg("probe", "base_link", 0.0, 10.52, 0.05, 0.05); }
+
+void expectPair(const ClearancePair& pair, const std::string& a, const std::string& b,
+                double distance, double ax, double ay, double bx, double by) {
+  EXPECT_EQ(pair.name_a, a);
+  EXPECT_EQ(pair.name_b, b);
+  EXPECT_NEAR(pair.distance, distance, 1e-9);
+  EXPECT_NEAR(pair.point_a.x, ax, 1e-9);
+  EXPECT_NEAR(pair.point_a.y, ay, 1e-9);
+  EXPECT_NEAR(pair.point_b.x, bx, 1e-9);
+  EXPECT_NEAR(pair.point_b.y, by, 1e-9);
+  EXPECT_EQ(pair.point_a.z, 0.0);
+  EXPECT_EQ(pair.point_b.z, 0.0);
+}
+
+TEST_F(NodeServices, TwoCirclesCloserThanTheWarningDistanceAreAWarningWithTheirClosestPoints) {
+  const CheckCollisions::Response r = check({"probe"}, {probeNearPost()});
+  ASSERT_TRUE(r.success) << r.message;
+  EXPECT_TRUE(r.collisions.empty());
+  EXPECT_FALSE(r.in_collision);
+  ASSERT_EQ(r.warnings.size(), 1u);  // not post_near (0.12 m) nor plate (0.27 m): beyond 0.1 m
+  expectPair(r.warnings[0], "probe", "post", 0.02, 0.0, 10.47, 0.0, 10.45);
+  EXPECT_FALSE(r.has_min_distance);  // not asked
+}
+
+TEST_F(NodeServices, FullCheckReportsTheStoredWarningPairAndTheNameFilterAppliesToWarnings) {
+  const CheckCollisions::Response r = check();
+  ASSERT_TRUE(r.success) << r.message;
+  ASSERT_EQ(r.warnings.size(), 1u);
+  expectPair(r.warnings[0], "plate", "post", 0.05, 0.0, 10.2, 0.0, 10.25);
+  EXPECT_EQ(check({"post"}).warnings.size(), 1u);
+  EXPECT_TRUE(check({"crate"}).warnings.empty());
+  // The pair that collides is in collisions, never in warnings.
+  EXPECT_FALSE(findWarning(r.warnings, "plate", "post_near"));
+}
+
+TEST_F(NodeServices, MinDistanceOfAStoredEllipseIsItsNearestPartnerWithItFirst) {
+  const CheckCollisions::Response r = minDistanceOf("post");
+  ASSERT_TRUE(r.success) << r.message;
+  ASSERT_TRUE(r.has_min_distance);
+  expectPair(r.nearest, "post", "plate", 0.05, 0.0, 10.25, 0.0, 10.2);
+  EXPECT_EQ(r.warnings.size(), 1u);  // the check itself is answered as usual
+}
+
+TEST_F(NodeServices, MinDistanceOfAQueryAndOfACollidingEllipse) {
+  CheckCollisions::Response r = minDistanceOf("probe", {probeNearPost()});
+  ASSERT_TRUE(r.success) << r.message;
+  ASSERT_TRUE(r.has_min_distance);
+  expectPair(r.nearest, "probe", "post", 0.02, 0.0, 10.47, 0.0, 10.45);
+
+  r = minDistanceOf("post_near");  // collides with plate
+  ASSERT_TRUE(r.has_min_distance) << r.message;
+  EXPECT_EQ(r.nearest.name_a, "post_near");
+  EXPECT_EQ(r.nearest.name_b, "plate");
+  EXPECT_EQ(r.nearest.distance, 0.0);
+}
+
+TEST_F(NodeServices, MinDistanceFollowsThePairRules) {
+  // bumper overlaps body, but that pair is allowed: its nearest partner is crate, 1.4 m away.
+  const CheckCollisions::Response r = minDistanceOf("bumper");
+  ASSERT_TRUE(r.has_min_distance) << r.message;
+  EXPECT_EQ(r.nearest.name_b, "crate");
+  EXPECT_GT(r.nearest.distance, 1.0);
+  // post is an obstacle: post_near (an obstacle 0 m away) is no partner of it.
+  EXPECT_EQ(minDistanceOf("post").nearest.name_b, "plate");
+}
+
+TEST_F(NodeServices, MinDistanceOfAnEllipseThatCannotBePlacedIsNotMeasured) {
+  CheckCollisions::Response r = minDistanceOf("camera");  // camera_link has no transform
+  EXPECT_TRUE(r.success) << r.message;
+  EXPECT_FALSE(r.has_min_distance);
+  EXPECT_CONTAINS(r.message, "min_distance_of = 'camera': not measured");
+  // The stamp rules of the check: at a time the tf cache does not hold, arm_link is unavailable.
+  r = check({}, {}, ros::Time::now() - ros::Duration(1000.0), "arm");
+  EXPECT_TRUE(r.success) << r.message;
+  EXPECT_FALSE(r.has_min_distance);
+  EXPECT_CONTAINS(r.message, "min_distance_of = 'arm'");
+  EXPECT_TRUE(check({}, {}, ros::Time::now() - ros::Duration(1000.0), "post").has_min_distance);
 }
 
 TEST_F(NodeServices, AddedObstacleCollidesThenIsReplacedAndRemoved) {
@@ -250,6 +339,7 @@ struct BadCheck {
   std::vector<std::string> names;
   std::vector<EllipseMsg> query;
   const char* message_part;
+  std::string min_distance_of{};  // empty: not asked
 };
 
 TEST_F(NodeServices, EveryBadCheckRequestIsAnAnswerNamingFieldAndValue) {
@@ -284,12 +374,21 @@ TEST_F(NodeServices, EveryBadCheckRequestIsAnAnswerNamingFieldAndValue) {
        {},
        {with(ok, [](EllipseMsg& m) { m.frame_id = "nowhere_link"; })},
        "query[0].frame_id = 'nowhere_link'"},
+      {"unknown min_distance_of", {}, {}, "min_distance_of = 'ghost'", "ghost"},
+      {"min_distance_of a refused query",
+       {},
+       {with(ok, [](EllipseMsg& m) { m.x = kNaN; })},
+       "query[0].x = nan",
+       "p"},
+      {"min_distance_of with a bad name filter", {"ghost"}, {}, "names[0] = 'ghost'", "post"},
   };
   for (const BadCheck& c : cases) {
-    const CheckCollisions::Response r = check(c.names, c.query);
+    const CheckCollisions::Response r = check(c.names, c.query, ros::Time(0), c.min_distance_of);
     EXPECT_FALSE(r.success) << c.what;
     EXPECT_CONTAINS(r.message, c.message_part);
     EXPECT_TRUE(r.collisions.empty()) << c.what;
+    EXPECT_TRUE(r.warnings.empty()) << c.what;
+    EXPECT_FALSE(r.has_min_distance) << c.what;
   }
   EXPECT_TRUE(check().success);
 }

@@ -9,6 +9,7 @@
 #include <map>
 #include <set>
 
+#include "ellipse_collision/ros/collision_markers.h"
 #include "node_test_utils.h"
 
 namespace ellipse_collision {
@@ -21,15 +22,34 @@ using visualization_msgs::MarkerArray;
 #define EXPECT_CONTAINS(text, part) \
   EXPECT_NE(std::string(text).find(part), std::string::npos) << "in: " << (text)
 
+const std::set<std::string> kLinks = {"arm", "body", "bumper", "plate"};  // camera: no tf
+
+/// The shown marker of the named link or obstacle, found by its id (CollisionMarkers::preferredId:
+/// no two names of the test scene share a hash).
 const Marker* markerNamed(const MarkerArray& array, const std::string& name) {
+  const std::string ns = kLinks.count(name) ? "links" : "obstacles";
   for (const Marker& m : array.markers) {
-    if (m.action == Marker::ADD && m.text == name) return &m;
+    if (m.action == Marker::ADD && m.ns == ns && m.id == CollisionMarkers::preferredId(name)) {
+      return &m;
+    }
+  }
+  return nullptr;
+}
+
+/// The shown clearance line of a warning pair (names in the pair's order).
+const Marker* lineOf(const MarkerArray& array, const std::string& a, const std::string& b) {
+  for (const Marker& m : array.markers) {
+    if (m.action == Marker::ADD && m.ns == "clearance" &&
+        m.id == CollisionMarkers::preferredId(a, b)) {
+      return &m;
+    }
   }
   return nullptr;
 }
 
 bool isRed(const Marker& m) { return m.color.r > 0.5f && m.color.g < 0.5f; }
 bool isGreen(const Marker& m) { return m.color.g > 0.5f && m.color.r < 0.5f; }
+bool isYellow(const Marker& m) { return m.color.r > 0.5f && m.color.g > 0.5f && m.color.b < 0.5f; }
 
 bool hasDeletion(const MarkerArray& array, const std::string& ns, int id) {
   for (const Marker& m : array.markers) {
@@ -137,18 +157,22 @@ TEST_F(NodeTopics, MarkersShowEveryPlacedEllipseInTheFixedFrame) {
   MarkerArray a;
   ASSERT_TRUE(markers_.waitForLatest([](const MarkerArray& m) { return markerNamed(m, "crate"); },
                                      10.0, &a));
-  std::set<std::string> links;
-  std::set<std::string> obstacles;
   std::set<std::pair<std::string, int>> keys;
   for (const Marker& m : a.markers) {
-    if (m.action != Marker::ADD) continue;
+    if (m.action != Marker::ADD || m.ns == "clearance") continue;
     EXPECT_EQ(m.header.frame_id, "base_link");
     EXPECT_EQ(m.type, Marker::CYLINDER);
+    EXPECT_EQ(m.text, "") << "rviz warns about text on a cylinder";
     EXPECT_TRUE(keys.insert({m.ns, m.id}).second) << "duplicate marker " << m.ns << "/" << m.id;
-    (m.ns == "links" ? links : obstacles).insert(m.text);
   }
-  EXPECT_EQ(links, (std::set<std::string>{"arm", "body", "bumper", "plate"}));  // camera: no tf
-  EXPECT_EQ(obstacles, (std::set<std::string>{"crate", "post", "post_near", "spare"}));
+  std::set<std::pair<std::string, int>> expected;
+  for (const char* name : {"arm", "body", "bumper", "plate"}) {
+    expected.insert({"links", CollisionMarkers::preferredId(name)});
+  }
+  for (const char* name : {"crate", "post", "post_near", "spare"}) {
+    expected.insert({"obstacles", CollisionMarkers::preferredId(name)});
+  }
+  EXPECT_EQ(keys, expected);
 
   // crate: (2, 0) in odom, odom at (1, 0) turned +90 deg -> (1, 2), its 0.3 m axis along y.
   const Marker& crate = *markerNamed(a, "crate");
@@ -164,26 +188,104 @@ TEST_F(NodeTopics, MarkersShowEveryPlacedEllipseInTheFixedFrame) {
   EXPECT_NEAR(plate.pose.position.y, 10.0, 1e-9);
   EXPECT_TRUE(isRed(plate));
   EXPECT_TRUE(isRed(*markerNamed(a, "post_near")));
-  EXPECT_TRUE(isGreen(*markerNamed(a, "post")));
-  EXPECT_TRUE(isGreen(*markerNamed(a, "body")));  // overlaps bumper, but that pair is allowed
+  EXPECT_TRUE(isYellow(*markerNamed(a, "post")));  // 0.05 m from plate, within 0.1 m
+  EXPECT_TRUE(isGreen(*markerNamed(a, "body")));   // overlaps bumper, but that pair is allowed
+  EXPECT_TRUE(isGreen(*markerNamed(a, "crate")));
   EXPECT_NEAR(markerNamed(a, "post_near")->scale.x, 0.2, 1e-12);  // 0.05 m + 0.05 m padding
 }
 
-TEST_F(NodeTopics, MarkerIdsStayWithTheirNames) {
+TEST_F(NodeTopics, EveryArrayShowsTheSameIdsForTheSameScene) {
   ASSERT_TRUE(
       markers_.waitForAny([](const MarkerArray& m) { return markerNamed(m, "crate"); }, 10.0));
   const std::size_t seen = markers_.count();
   ASSERT_TRUE(markers_.waitForAny([](const MarkerArray&) { return true; }, 10.0, seen + 3));
-  std::map<std::string, std::pair<std::string, int>> key_of;
+  std::set<std::set<std::pair<std::string, int>>> shown;
   for (const MarkerArray& array : markers_.all()) {
+    std::set<std::pair<std::string, int>> keys;
     for (const Marker& m : array.markers) {
-      if (m.action != Marker::ADD) continue;
-      const auto key = std::make_pair(m.ns, m.id);
-      const auto inserted = key_of.emplace(m.text, key);
-      EXPECT_EQ(inserted.first->second, key) << m.text << " changed its id";
+      if (m.action == Marker::ADD) keys.insert({m.ns, m.id});
     }
+    if (keys.size() >= 8u) shown.insert(keys);
   }
-  EXPECT_GE(key_of.size(), 8u);
+  EXPECT_EQ(shown.size(), 1u) << "ids changed between arrays of the same scene";
+}
+
+TEST_F(NodeTopics, StateReportsTheWarningPairWithDistanceAndClosestPoints) {
+  CollisionState state;
+  ASSERT_TRUE(collisions_.waitForLatest([](const CollisionState& s) { return !s.warnings.empty(); },
+                                        10.0, &state));
+  // plate's rim at (0, 10.2) is 0.05 m below post's at (0, 10.25) (test_scene.yaml); the only pair.
+  ASSERT_EQ(state.warnings.size(), 1u);
+  const ClearancePair& w = state.warnings[0];
+  EXPECT_EQ(w.name_a, "plate");
+  EXPECT_EQ(w.name_b, "post");
+  EXPECT_NEAR(w.distance, 0.05, 1e-9);
+  EXPECT_NEAR(w.point_a.x, 0.0, 1e-9);
+  EXPECT_NEAR(w.point_a.y, 10.2, 1e-9);
+  EXPECT_NEAR(w.point_b.x, 0.0, 1e-9);
+  EXPECT_NEAR(w.point_b.y, 10.25, 1e-9);
+  EXPECT_EQ(w.point_a.z, 0.0);
+  EXPECT_TRUE(findPair(state.collisions, "plate", "post_near"));  // plate: both kinds of pair
+}
+
+TEST_F(NodeTopics, LinkNearAnObstacleTurnsBothYellowWithALineThatIsDeletedWhenItLeaves) {
+  // crate spans y 1.7..2.3 at x = 1 (0.3 m axis along y); arm (0.4 x 0.1) at (1, 1.55) ends at
+  // y = 1.65: 0.05 m apart along x = 1, where both rims are normal to the gap.
+  moveArm(1.0, 1.55);
+  CollisionState state;
+  ASSERT_TRUE(collisions_.waitForLatest(
+      [](const CollisionState& s) { return findWarning(s.warnings, "arm", "crate") != nullptr; },
+      10.0, &state));
+  const ClearancePair& w = *findWarning(state.warnings, "arm", "crate");
+  EXPECT_NEAR(w.distance, 0.05, 1e-9);
+  EXPECT_NEAR(w.point_a.x, 1.0, 1e-9);
+  EXPECT_NEAR(w.point_a.y, 1.65, 1e-9);
+  EXPECT_NEAR(w.point_b.x, 1.0, 1e-9);
+  EXPECT_NEAR(w.point_b.y, 1.7, 1e-9);
+  EXPECT_FALSE(mentions(state.collisions, "arm"));
+
+  MarkerArray markers;
+  ASSERT_TRUE(markers_.waitForLatest(
+      [](const MarkerArray& a) { return lineOf(a, "arm", "crate") != nullptr; }, 10.0, &markers));
+  ASSERT_TRUE(markerNamed(markers, "arm") && markerNamed(markers, "crate"));
+  EXPECT_TRUE(isYellow(*markerNamed(markers, "arm")));
+  EXPECT_TRUE(isYellow(*markerNamed(markers, "crate")));
+  EXPECT_TRUE(isRed(*markerNamed(markers, "plate")));  // red outranks yellow
+  EXPECT_TRUE(isGreen(*markerNamed(markers, "body")));
+  const Marker& line = *lineOf(markers, "arm", "crate");
+  EXPECT_EQ(line.type, Marker::LINE_LIST);
+  EXPECT_EQ(line.header.frame_id, "base_link");
+  EXPECT_EQ(line.text, "");
+  ASSERT_EQ(line.points.size(), 2u);
+  EXPECT_NEAR(line.points[0].x, 1.0, 1e-9);
+  EXPECT_NEAR(line.points[0].y, 1.65, 1e-9);
+  EXPECT_NEAR(line.points[1].x, 1.0, 1e-9);
+  EXPECT_NEAR(line.points[1].y, 1.7, 1e-9);
+  ASSERT_TRUE(lineOf(markers, "plate", "post"));  // the scene's standing warning pair
+
+  const std::size_t before = markers_.count();
+  moveArm(0.0, -5.0);
+  EXPECT_TRUE(markers_.waitForAny(
+      [](const MarkerArray& m) {
+        for (const Marker& marker : m.markers) {
+          if (marker.action == Marker::DELETE && marker.ns == "clearance" &&
+              marker.id == CollisionMarkers::preferredId("arm", "crate")) {
+            return true;
+          }
+        }
+        return false;
+      },
+      10.0, before));
+  ASSERT_TRUE(markers_.waitForLatest(
+      [](const MarkerArray& a) {
+        return !lineOf(a, "arm", "crate") && markerNamed(a, "arm") &&
+               isGreen(*markerNamed(a, "arm")) && markerNamed(a, "crate") &&
+               isGreen(*markerNamed(a, "crate"));
+      },
+      10.0, &markers));
+  EXPECT_TRUE(lineOf(markers, "plate", "post"));
+  EXPECT_TRUE(collisions_.waitForLatest(
+      [](const CollisionState& s) { return !findWarning(s.warnings, "arm", "crate"); }, 10.0));
 }
 
 TEST_F(NodeTopics, RemovedObstacleIsDeletedAndGetsItsIdBackWhenReAdded) {
@@ -287,6 +389,8 @@ TEST_F(NodeTopics, DiagnosticsReportCountsUnavailableFramesAndCheckDuration) {
   EXPECT_EQ(values["links"], "5");
   EXPECT_EQ(values["obstacles (configured)"], "4");
   EXPECT_EQ(values["unavailable frames"], "camera_link");
+  EXPECT_EQ(values["collisions"], "1");  // plate / post_near
+  EXPECT_EQ(values["warnings"], "1");    // plate / post
   ASSERT_TRUE(values.count("last check duration [ms]"));
   const double duration_ms = std::stod(values["last check duration [ms]"]);
   EXPECT_GT(duration_ms, 0.0);

@@ -5,6 +5,7 @@
 #include <tf2_ros/transform_listener.h>
 
 #include <cstdint>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -33,7 +34,10 @@ class CollisionNode {
     std::vector<std::string> unavailable_frames;  ///< sorted; their ellipses were skipped
     std::vector<std::string> skipped;             ///< why each skipped ellipse was skipped
     std::vector<CollidingPair> collisions;
-    std::string error;  ///< a bad request: nothing was checked
+    std::vector<NearPair> warnings;
+    std::optional<NearPair> nearest;  ///< of min_distance_of, when asked and measured
+    std::string nearest_problem;      ///< why it was asked but not measured
+    std::string error;                ///< a bad request: nothing was checked
   };
 
   /// The last full check (all stored ellipses, latest transforms), which the topics show.
@@ -45,12 +49,13 @@ class CollisionNode {
     std::string failure;  ///< why the latest full check failed (the state above is older)
   };
 
+  /// `min_distance_of` non-empty: also the nearest partner of that (known) name.
   CheckOutcome check(const ros::Time& time, const ros::Duration& timeout,
-                     const std::set<std::string>& only_names,
-                     const std::vector<EllipseSpec>& query);
+                     const std::set<std::string>& only_names, const std::vector<EllipseSpec>& query,
+                     const std::string& min_distance_of);
   /// Checks every stored ellipse at the latest transforms, records the result as the published
   /// state and publishes it (a failed check is only logged and reported in diagnostics).
-  CheckOutcome runFullCheck(const ros::Duration& timeout);
+  CheckOutcome runFullCheck(const ros::Duration& timeout, const std::string& min_distance_of = "");
   void publishState();
   void publishMarkers();
 

@@ -20,4 +20,9 @@ CollidingPair fromMsg(const CollisionPair& msg);
 CollisionPair toMsg(const CollidingPair& pair);
 std::vector<CollisionPair> toMsg(const std::vector<CollidingPair>& pairs);
 
+/// Points in the fixed frame's plane; z is 0 in messages and ignored when read.
+NearPair fromMsg(const ClearancePair& msg);
+ClearancePair toMsg(const NearPair& pair);
+std::vector<ClearancePair> toMsg(const std::vector<NearPair>& pairs);
+
 }  // namespace ellipse_collision

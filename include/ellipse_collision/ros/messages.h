@@ -21,6 +21,7 @@
 
 #include <ellipse_collision/AddObstacles.h>
 #include <ellipse_collision/CheckCollisions.h>
+#include <ellipse_collision/ClearancePair.h>
 #include <ellipse_collision/CollisionPair.h>
 #include <ellipse_collision/CollisionState.h>
 #include <ellipse_collision/EllipseArray.h>

@@ -21,10 +21,11 @@ class ConfigError : public std::runtime_error {
 /// The node's private parameters (see config/ellipse_collision.yaml for the documentation).
 struct NodeConfig {
   std::string fixed_frame{"base_link"};
-  double rate_hz{10.0};       ///< periodic checks [Hz]; 0 = only on service calls
-  double tf_timeout_s{0.1};   ///< how long a service call waits for a transform [s]
-  double padding_m{0.0};      ///< added to both radii of every ellipse [m]
-  bool self_collision{true};  ///< also check link against link
+  double rate_hz{10.0};            ///< periodic checks [Hz]; 0 = only on service calls
+  double tf_timeout_s{0.1};        ///< how long a service call waits for a transform [s]
+  double padding_m{0.0};           ///< added to both radii of every ellipse [m]
+  bool self_collision{true};       ///< also check link against link
+  double warning_distance_m{0.0};  ///< separated pairs closer than this are warnings [m]; 0 = off
   std::vector<EllipseSpec> links;
   std::vector<EllipseSpec> obstacles;
   std::vector<std::pair<std::string, std::string>> allowed_pairs;
