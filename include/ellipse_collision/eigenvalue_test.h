@@ -5,8 +5,9 @@
 namespace ellipse_collision {
 
 /// Eigenvalue test (Gilitschenski & Hanebeck 2012; Perram & Wertheim 1985) deciding overlap only.
-/// It maximises the concave Q(s) and stops as soon as a lower bound exceeds 1 (separate) or an upper
-/// bound from the bracketing tangents is at most 1 (overlap), so it is cheaper than contactScale().
+/// It maximises the concave Q(s) and stops as soon as a lower bound exceeds 1 (separate) or an
+/// upper bound from the bracketing tangents is at most 1 (overlap), so it is cheaper than
+/// contactScale().
 bool eigenvalueOverlap(const Ellipse& a, const Ellipse& b);
 
 /// t*: the factor by which both ellipses, scaled about their own centres, just touch.

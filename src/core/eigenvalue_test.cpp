@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "eigenvalue_test_detail.h"
+#include "ellipse_collision/prepared_ellipse.h"
 #include "relative_shape.h"
 
 namespace ellipse_collision {
@@ -35,34 +36,15 @@ struct Sample {
 
 }  // namespace
 
-QFunction QFunction::fromShape(const RelativeShape& shape) {
-  // Q(s) = d^T (I/(1-s) + M/s)^-1 d with M = axes * axes^T; in M's eigenbasis it separates into
-  // w_i s (1-s) / (lambda_i (1-s) + s).
-  const Eigen::Matrix2d& f = shape.axes;
-  const double m00 = f(0, 0) * f(0, 0) + f(0, 1) * f(0, 1);
-  const double m01 = f(0, 0) * f(1, 0) + f(0, 1) * f(1, 1);
-  const double m11 = f(1, 0) * f(1, 0) + f(1, 1) * f(1, 1);
-  const double half_difference = 0.5 * (m00 - m11);
-  const double root = std::sqrt(half_difference * half_difference + m01 * m01);
-
+QFunction QFunction::fromPrincipal(const PrincipalShape& shape) {
+  // Q(s) = d^T (I/(1-s) + M/s)^-1 d with M = [p q] [p q]^T; in M's eigenbasis it separates
+  // into w_i s (1-s) / (lambda_i (1-s) + s).
   QFunction q;
-  q.lambda[0] = 0.5 * (m00 + m11) + root;
-  // The small eigenvalue from det(M) = det(axes)^2 avoids the cancellation in mean - root.
-  q.lambda[1] = shape.determinant * shape.determinant / q.lambda[0];
-
-  // Eigenvector of lambda[0], from whichever of the two equivalent forms has no cancellation.
-  Eigen::Vector2d e = half_difference >= 0.0 ? Eigen::Vector2d(half_difference + root, m01)
-                                             : Eigen::Vector2d(m01, root - half_difference);
-  double norm_sq = e.squaredNorm();
-  if (!(norm_sq > 0.0)) {  // M is a multiple of the identity: any basis diagonalises it
-    e = Eigen::Vector2d(1.0, 0.0);
-    norm_sq = 1.0;
+  for (int i = 0; i < 2; ++i) {
+    q.lambda[i] = shape.lambda[i];
+    q.root_lambda[i] = shape.semi_axis[i];
+    q.weight[i] = shape.offset[i] * shape.offset[i];
   }
-  const Eigen::Vector2d& d = shape.center;
-  const double along = e.x() * d.x() + e.y() * d.y();
-  const double across = e.x() * d.y() - e.y() * d.x();
-  q.weight[0] = along * along / norm_sq;
-  q.weight[1] = across * across / norm_sq;
   return q;
 }
 
@@ -71,11 +53,11 @@ QMaximum maximizeQ(const QFunction& q, double decision_threshold) {
     Sample sample{p, 0.0, 0.0};
     double curvature = 0.0;
     for (int i = 0; i < 2; ++i) {
-      const double g = q.lambda[i] * p.sc + p.s;
-      const double wg = q.weight[i] / g;
+      const double inverse_g = 1.0 / (q.lambda[i] * p.sc + p.s);
+      const double wg = q.weight[i] * inverse_g;
       sample.value += wg * p.s * p.sc;
-      sample.slope += wg * (q.lambda[i] * p.sc * p.sc - p.s * p.s) / g;
-      curvature += wg * q.lambda[i] / (g * g);
+      sample.slope += wg * (q.lambda[i] * p.sc * p.sc - p.s * p.s) * inverse_g;
+      curvature += wg * q.lambda[i] * inverse_g * inverse_g;
     }
     return std::pair<Sample, double>(sample, -2.0 * curvature);
   };
@@ -92,7 +74,7 @@ QMaximum maximizeQ(const QFunction& q, double decision_threshold) {
 
   // For two circles the maximiser satisfies s / (1 - s) = sqrt(lambda); blend that by weight.
   const double ratio =
-      (q.weight[0] * std::sqrt(q.lambda[0]) + q.weight[1] * std::sqrt(q.lambda[1])) / total_weight;
+      (q.weight[0] * q.root_lambda[0] + q.weight[1] * q.root_lambda[1]) / total_weight;
   Param at = ratio <= 1.0 ? fromS(ratio / (1.0 + ratio)) : fromComplement(1.0 / (1.0 + ratio));
 
   constexpr int kMaxIterations = 100;
@@ -137,22 +119,29 @@ QMaximum maximizeQ(const QFunction& q, double decision_threshold) {
 }  // namespace detail
 
 bool eigenvalueOverlap(const Ellipse& a, const Ellipse& b) {
-  const auto shape = detail::canonicalRelativeShape(a, b);
-  return detail::eigenvalueOverlapRelative(shape);
+  return detail::eigenvalueOverlapPrincipal(
+      detail::principalShape(detail::canonicalRelativeShape(a, b)));
 }
 
 double contactScale(const Ellipse& a, const Ellipse& b) {
-  const auto shape = detail::canonicalRelativeShape(a, b);
-  const auto maximum =
-      detail::maximizeQ(detail::QFunction::fromShape(shape), detail::kNoDecision);
-  return std::sqrt(maximum.lower);
+  return detail::contactScalePrincipal(
+      detail::principalShape(detail::canonicalRelativeShape(a, b)));
+}
+
+double contactScale(const PreparedEllipse& a, const PreparedEllipse& b) {
+  return detail::contactScalePrincipal(
+      detail::principalShape(detail::canonicalRelativeShape(a, b)));
 }
 
 namespace detail {
 
-bool eigenvalueOverlapRelative(const RelativeShape& shape) {
+double contactScalePrincipal(const PrincipalShape& shape) {
+  return std::sqrt(maximizeQ(QFunction::fromPrincipal(shape), kNoDecision).lower);
+}
+
+bool eigenvalueOverlapPrincipal(const PrincipalShape& shape) {
   // max Q = t*^2, so the ellipses overlap iff max Q <= 1.
-  const auto maximum = maximizeQ(QFunction::fromShape(shape), 1.0);
+  const auto maximum = maximizeQ(QFunction::fromPrincipal(shape), 1.0);
   return !(maximum.lower > 1.0);
 }
 

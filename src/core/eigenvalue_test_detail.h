@@ -10,10 +10,11 @@ namespace ellipse_collision::detail {
 /// the eigenbasis of the other ellipse's shape matrix, in the frame where the unit ellipse is the
 /// unit circle. max over s in (0, 1) of Q is t*^2.
 struct QFunction {
-  double weight[2];  ///< squared components of the centre offset along the eigenvectors
-  double lambda[2];  ///< eigenvalues of axes * axes^T, > 0
+  double weight[2];       ///< squared components of the centre offset along the eigenvectors
+  double lambda[2];       ///< eigenvalues of [p q] [p q]^T (see RelativeShape), > 0
+  double root_lambda[2];  ///< sqrt(lambda), for the starting point
 
-  static QFunction fromShape(const RelativeShape& shape);
+  static QFunction fromPrincipal(const PrincipalShape& shape);
 };
 
 /// Bounds on max Q: lower <= max Q <= upper (up to rounding).
@@ -30,6 +31,9 @@ inline constexpr double kNoDecision = std::numeric_limits<double>::quiet_NaN();
 /// upper <= decision_threshold (certified decisions), or when the bounds agree to ~1e-15.
 QMaximum maximizeQ(const QFunction& q, double decision_threshold);
 
-bool eigenvalueOverlapRelative(const RelativeShape& shape);
+bool eigenvalueOverlapPrincipal(const PrincipalShape& shape);
+
+/// t* = sqrt(max Q), fully converged.
+double contactScalePrincipal(const PrincipalShape& shape);
 
 }  // namespace ellipse_collision::detail

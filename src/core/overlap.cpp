@@ -1,27 +1,31 @@
 #include "ellipse_collision/overlap.h"
 
+#include <Eigen/Core>
+
 #include "eigenvalue_test_detail.h"
+#include "ellipse_collision/polygonal_test.h"
+#include "ellipse_collision/prepared_ellipse.h"
+#include "overlap_detail.h"
 #include "polygonal_test_detail.h"
 #include "relative_shape.h"
 
 namespace ellipse_collision {
 namespace {
 
-// The circle tests compare squared lengths computed in double; this keeps their decisions clear
-// of rounding so that near-tangent pairs go on to the exact stages.
-constexpr double kCircleMargin = 1e-12;
-
-}  // namespace
-
-bool overlap(const Ellipse& a, const Ellipse& b) {
-  const double distance_sq = (b.center - a.center).squaredNorm();
-  const double bounding = boundingRadius(a) + boundingRadius(b);
-  if (distance_sq > bounding * bounding * (1.0 + kCircleMargin)) return false;
-  const double inscribed = inscribedRadius(a) + inscribedRadius(b);
-  if (distance_sq < inscribed * inscribed * (1.0 - kCircleMargin)) return true;
-
-  const auto shape = detail::canonicalRelativeShape(a, b);
-  switch (detail::polygonalTestRelative(shape, kDefaultPolygonalIterations)) {
+/// Past the bounding circles: the inscribed circles meeting prove overlap, cheaply and free of
+/// trigonometry; then the polygonal early-out, and the eigenvalue test when it cannot decide, in
+/// the canonical frame of the pair.
+template <typename AnyEllipse>
+bool exactStages(const AnyEllipse& a, const AnyEllipse& b, double inscribed_sum,
+                 int max_iterations) {
+  const Eigen::Vector2d& center_a = detail::ellipseOf(a).center;
+  const Eigen::Vector2d& center_b = detail::ellipseOf(b).center;
+  if ((center_b - center_a).squaredNorm() <
+      inscribed_sum * inscribed_sum * (1.0 - detail::kCircleMargin)) {
+    return true;
+  }
+  const detail::RelativeShape relative = detail::canonicalRelativeShape(a, b);
+  switch (detail::polygonalTestRelative(relative, max_iterations)) {
     case PolygonalResult::Overlap:
       return true;
     case PolygonalResult::Separate:
@@ -29,7 +33,25 @@ bool overlap(const Ellipse& a, const Ellipse& b) {
     case PolygonalResult::Unknown:
       break;
   }
-  return detail::eigenvalueOverlapRelative(shape);
+  return detail::eigenvalueOverlapPrincipal(detail::principalShape(relative));
 }
 
+}  // namespace
+
+namespace detail {
+
+bool overlapOfNearPair(const Ellipse& a, const Ellipse& b) {
+  return exactStages(a, b, inscribedRadius(a) + inscribedRadius(b), kOverlapPolygonalIterations);
+}
+
+bool overlapOfNearPair(const PreparedEllipse& a, const PreparedEllipse& b) {
+  return exactStages(a, b, a.inscribedRadius() + b.inscribedRadius(), kOverlapPolygonalIterations);
+}
+
+bool overlapWithPolygonalCap(const Ellipse& a, const Ellipse& b, int max_iterations) {
+  return !circlesApart(a.center, b.center, boundingRadius(a) + boundingRadius(b)) &&
+         exactStages(a, b, inscribedRadius(a) + inscribedRadius(b), max_iterations);
+}
+
+}  // namespace detail
 }  // namespace ellipse_collision

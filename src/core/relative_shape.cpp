@@ -5,47 +5,39 @@
 
 namespace ellipse_collision::detail {
 
-RelativeShape relativeShape(const Ellipse& unit, const Ellipse& other) {
-  const Eigen::Vector2d offset = other.center - unit.center;
-  const double cos_unit = std::cos(unit.angle);
-  const double sin_unit = std::sin(unit.angle);
-  const double inv_rx = 1.0 / unit.radius_x;
-  const double inv_ry = 1.0 / unit.radius_y;
+PrincipalShape principalShape(const RelativeShape& shape) {
+  const double m00 = shape.p_x * shape.p_x + shape.q_x * shape.q_x;
+  const double m01 = shape.p_x * shape.p_y + shape.q_x * shape.q_y;
+  const double m11 = shape.p_y * shape.p_y + shape.q_y * shape.q_y;
+  const double half_difference = 0.5 * (m00 - m11);
+  const double root = std::sqrt(half_difference * half_difference + m01 * m01);
 
-  RelativeShape shape;
-  shape.center.x() = (cos_unit * offset.x() + sin_unit * offset.y()) * inv_rx;
-  shape.center.y() = (cos_unit * offset.y() - sin_unit * offset.x()) * inv_ry;
+  PrincipalShape principal;
+  principal.lambda[0] = 0.5 * (m00 + m11) + root;
+  principal.semi_axis[0] = std::sqrt(principal.lambda[0]);
+  // The small ones from det(p, q) = product of the semi-axes avoid the cancellation in
+  // mean - root.
+  principal.semi_axis[1] = shape.determinant / principal.semi_axis[0];
+  principal.lambda[1] = principal.semi_axis[1] * principal.semi_axis[1];
 
-  // The relative angle is taken before the trigonometry so that equal angles give an exact
-  // identity rotation.
-  const double relative_angle = other.angle - unit.angle;
-  const double c = std::cos(relative_angle);
-  const double s = std::sin(relative_angle);
-  // axes = diag(1/rx, 1/ry) * R(relative_angle) * diag(other.rx, other.ry)
-  shape.axes << c * other.radius_x * inv_rx, -s * other.radius_y * inv_rx,
-      s * other.radius_x * inv_ry, c * other.radius_y * inv_ry;
-  // axes^-1 = diag(1/other.rx, 1/other.ry) * R(-relative_angle) * diag(rx, ry)
-  const double inv_orx = 1.0 / other.radius_x;
-  const double inv_ory = 1.0 / other.radius_y;
-  shape.inverse_axes << c * unit.radius_x * inv_orx, s * unit.radius_y * inv_orx,
-      -s * unit.radius_x * inv_ory, c * unit.radius_y * inv_ory;
-  shape.determinant = (other.radius_x * inv_rx) * (other.radius_y * inv_ry);
-  return shape;
+  // Eigenvector of lambda[0], from whichever of the two equivalent forms has no cancellation.
+  double ex = half_difference >= 0.0 ? half_difference + root : m01;
+  double ey = half_difference >= 0.0 ? m01 : root - half_difference;
+  double norm_sq = ex * ex + ey * ey;
+  if (!(norm_sq > 0.0)) {  // M is a multiple of the identity: any basis diagonalises it
+    ex = 1.0;
+    ey = 0.0;
+    norm_sq = 1.0;
+  }
+  const double inverse_norm = 1.0 / std::sqrt(norm_sq);
+  principal.offset[0] = std::abs(ex * shape.center_x + ey * shape.center_y) * inverse_norm;
+  principal.offset[1] = std::abs(ex * shape.center_y - ey * shape.center_x) * inverse_norm;
+  return principal;
 }
 
-namespace {
-
-bool precedesAsUnit(const Ellipse& a, const Ellipse& b) {
-  return std::make_tuple(a.radius_x * a.radius_y, a.radius_x, a.radius_y, a.angle, a.center.x(),
-                         a.center.y()) >= std::make_tuple(b.radius_x * b.radius_y, b.radius_x,
-                                                          b.radius_y, b.angle, b.center.x(),
-                                                          b.center.y());
-}
-
-}  // namespace
-
-RelativeShape canonicalRelativeShape(const Ellipse& a, const Ellipse& b) {
-  return precedesAsUnit(a, b) ? relativeShape(a, b) : relativeShape(b, a);
+bool precedesAsUnitOnEqualArea(const Ellipse& a, const Ellipse& b) {
+  return std::make_tuple(a.radius_x, a.radius_y, a.angle, a.center.x(), a.center.y()) >=
+         std::make_tuple(b.radius_x, b.radius_y, b.angle, b.center.x(), b.center.y());
 }
 
 }  // namespace ellipse_collision::detail

@@ -1,0 +1,160 @@
+// Pair tests on the same stored pairs, one benchmark per (method, mix): ours (plain and prepared),
+// the eigenvalue and polygonal tests alone, FCL 0.7 and the seed README's method, and overlap()
+// with polygonal caps 0..8. Each method keeps what it needs per ellipse (prepared ellipses, FCL
+// objects) built before timing; the scene-like pairs share one scene's ellipses. Every benchmark
+// carries, as counters, the seconds per pair and its misclassifications against the
+// quad-precision oracle on those very pairs (computed once, before timing).
+//
+// Extra flag: --pairs_per_mix=N (default 2000). The oracle takes about 1 ms per pair.
+
+#include <benchmark/benchmark.h>
+
+#include <cstdlib>
+#include <cstring>
+#include <deque>
+#include <string>
+#include <vector>
+
+#include "bench_scenes.h"
+#include "ellipse_collision/eigenvalue_test.h"
+#include "ellipse_collision/overlap.h"
+#include "ellipse_collision/polygonal_test.h"
+#include "ellipse_collision/prepared_ellipse.h"
+#include "overlap_detail.h"
+#include "reference_methods.h"
+
+namespace ellipse_collision::bench {
+namespace {
+
+constexpr int kMaxStudiedCap = 8;
+
+/// Calls visit(i, j) for the ellipse indices of every pair of the mix, in its order, as a scene
+/// check would loop: a link against every obstacle, or each pair's own two ellipses.
+template <typename Visit>
+void forEachPair(const PairMix& mix, Visit&& visit) {
+  if (mix.rows > 0) {
+    for (std::size_t i = 0; i < mix.rows; ++i) {
+      for (std::size_t j = mix.rows; j < mix.ellipses.size(); ++j) visit(i, j);
+    }
+  } else {
+    for (std::size_t i = 0; i + 1 < mix.ellipses.size(); i += 2) visit(i, i + 1);
+  }
+}
+
+/// Registers "pair/<method>/<mix>". `verdict(i, j)` answers the pair of ellipses i and j of the
+/// mix; it is run once untimed to count misclassifications, then timed over all pairs per
+/// iteration.
+template <typename Verdict>
+void registerMethod(const std::string& method, const PairMix& mix, Verdict verdict,
+                    int fallbacks = -1) {
+  std::vector<bool> verdicts;
+  forEachPair(mix, [&](std::size_t i, std::size_t j) { verdicts.push_back(verdict(i, j)); });
+  const int wrong = misclassified(mix, verdicts);
+  const std::string name = "pair/" + method + "/" + mix.name;
+  benchmark::RegisterBenchmark(name.c_str(), [&mix, verdict, wrong,
+                                              fallbacks](benchmark::State& state) {
+    for (auto _ : state) {
+      unsigned hits = 0;
+      forEachPair(mix, [&](std::size_t i, std::size_t j) { hits += verdict(i, j) ? 1u : 0u; });
+      benchmark::DoNotOptimize(hits);
+    }
+    using benchmark::Counter;
+    state.counters["sec_per_pair"] = Counter(static_cast<double>(mix.pairs.size()),
+                                             Counter::kIsIterationInvariantRate | Counter::kInvert);
+    state.counters["misclassified"] = wrong;
+    state.counters["counted"] = mix.counted();
+    state.counters["pass_bounding"] = mix.pass_bounding_circles;
+    if (fallbacks >= 0) state.counters["unknown_fallbacks"] = fallbacks;
+  });
+}
+
+/// Everything one mix needs stored before timing, per ellipse; kept alive for the whole run.
+struct MixData {
+  PairMix mix;
+  std::vector<PreparedEllipse> prepared;
+  std::vector<FclEllipse> fcl;
+};
+
+void registerMix(MixData* data) {
+  const PairMix& mix = data->mix;
+  for (const Ellipse& e : mix.ellipses) {
+    data->prepared.emplace_back(e);
+    data->fcl.emplace_back(e);
+  }
+  // Raw pointers, captured by value: the compiler keeps them in registers across the timed loop
+  // instead of reloading them through the vectors for every pair.
+  const Ellipse* const e = mix.ellipses.data();
+  const PreparedEllipse* const prepared = data->prepared.data();
+  const FclEllipse* const fcl = data->fcl.data();
+
+  registerMethod("ours_overlap", mix,
+                 [e](std::size_t i, std::size_t j) { return overlap(e[i], e[j]); });
+  registerMethod("ours_prepared", mix, [prepared](std::size_t i, std::size_t j) {
+    return overlap(prepared[i], prepared[j]);
+  });
+  registerMethod("eigenvalue_alone", mix,
+                 [e](std::size_t i, std::size_t j) { return eigenvalueOverlap(e[i], e[j]); });
+  int fallbacks = 0;
+  for (std::size_t k = 0; k < mix.pairs.size(); ++k) {
+    fallbacks += polygonalTest(mix.a(k), mix.b(k)) == PolygonalResult::Unknown ? 1 : 0;
+  }
+  registerMethod(
+      "polygonal_alone", mix,
+      [e](std::size_t i, std::size_t j) {
+        switch (polygonalTest(e[i], e[j])) {
+          case PolygonalResult::Overlap:
+            return true;
+          case PolygonalResult::Separate:
+            return false;
+          case PolygonalResult::Unknown:
+            break;
+        }
+        return eigenvalueOverlap(e[i], e[j]);  // its fallback, timed with it
+      },
+      fallbacks);
+  registerMethod("fcl", mix,
+                 [fcl](std::size_t i, std::size_t j) { return fclCollide(fcl[i], fcl[j]); });
+  registerMethod("seed_readme", mix,
+                 [e](std::size_t i, std::size_t j) { return seedReadmeOverlap(e[i], e[j]); });
+  for (int cap = 0; cap <= kMaxStudiedCap; ++cap) {
+    registerMethod("cap_study_" + std::to_string(cap), mix, [e, cap](std::size_t i, std::size_t j) {
+      return detail::overlapWithPolygonalCap(e[i], e[j], cap);
+    });
+  }
+}
+
+/// Removes --pairs_per_mix=N from argv (Google Benchmark rejects unknown flags) and returns N.
+int takePairsFlag(int* argc, char** argv) {
+  constexpr const char* kFlag = "--pairs_per_mix=";
+  int pairs = 2000;
+  int kept = 0;
+  for (int i = 0; i < *argc; ++i) {
+    if (std::strncmp(argv[i], kFlag, std::strlen(kFlag)) == 0) {
+      pairs = std::atoi(argv[i] + std::strlen(kFlag));
+    } else {
+      argv[kept++] = argv[i];
+    }
+  }
+  *argc = kept;
+  return pairs > 0 ? pairs : 1;
+}
+
+}  // namespace
+}  // namespace ellipse_collision::bench
+
+int main(int argc, char** argv) {
+  using namespace ellipse_collision::bench;
+  const int pairs = takePairsFlag(&argc, argv);
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+
+  std::deque<MixData> mixes;  // stable addresses: the benchmarks hold references
+  mixes.push_back({sceneLikeMix(pairs, 1), {}, {}});
+  mixes.push_back({nearMix(pairs, 2), {}, {}});
+  mixes.push_back({tangencyMix(pairs, 3), {}, {}});
+  for (MixData& data : mixes) registerMix(&data);
+
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

@@ -1,0 +1,210 @@
+// Scene checks: 50 links against N obstacles, plus the links against each other, per cycle.
+// Every variant computes the same colliding pairs (verified before timing); they differ in how
+// candidate pairs are found:
+//   brute_force        overlap() on all 50 N + 1225 pairs
+//   grid_streamed      the core's BoxGrid over the links' tight boxes; each obstacle's
+//                      trigonometry-free bounding-circle box is made as it streams through
+//   grid_batch         overlappingBoxPairs() on stored boxes: tight for the links, bounding-circle
+//                      for the obstacles; the links among themselves by the one-set variant
+//   grid_tight_boxes   the same with tight boxes (one sincos each) for the obstacles too
+//   grid_prepared      every ellipse prepared, tight boxes, prepared overlap()
+//   sort_and_sweep     the alternative broadphase: both sets sorted on min x and swept
+// Counters: pair_tests = overlap() calls per cycle, collisions = colliding pairs per cycle.
+
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+#include <numeric>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "bench_scenes.h"
+#include "ellipse_collision/broadphase.h"
+#include "ellipse_collision/overlap.h"
+#include "ellipse_collision/prepared_ellipse.h"
+
+namespace ellipse_collision::bench {
+namespace {
+
+constexpr int kLinks = 50;
+constexpr double kWorldSize =
+    50.0;  // [m]: a warehouse; the robot's links lie within 1 m of its centre
+
+struct CycleResult {
+  long pair_tests{0};
+  long collisions{0};
+};
+
+CycleResult bruteForce(const RobotScene& scene) {
+  CycleResult result;
+  const auto& links = scene.links;
+  for (std::size_t i = 0; i < links.size(); ++i) {
+    for (const Ellipse& obstacle : scene.obstacles)
+      result.collisions += overlap(links[i], obstacle);
+    for (std::size_t j = i + 1; j < links.size(); ++j)
+      result.collisions += overlap(links[i], links[j]);
+  }
+  result.pair_tests = static_cast<long>(links.size() * scene.obstacles.size() +
+                                        links.size() * (links.size() - 1) / 2);
+  return result;
+}
+
+template <typename Ellipses>
+CycleResult checkCandidates(const Ellipses& first, const Ellipses& second,
+                            const std::vector<IndexPair>& candidates, CycleResult result) {
+  for (const IndexPair& pair : candidates) {
+    result.collisions += overlap(first[pair.first], second[pair.second]);
+  }
+  result.pair_tests += static_cast<long>(candidates.size());
+  return result;
+}
+
+template <typename BoxOf>
+CycleResult grid(const RobotScene& scene, BoxOf obstacle_box) {
+  std::vector<BoundingBox> link_boxes, obstacle_boxes;
+  link_boxes.reserve(scene.links.size());
+  obstacle_boxes.reserve(scene.obstacles.size());
+  for (const Ellipse& link : scene.links) link_boxes.push_back(boundingBox(link));
+  for (const Ellipse& obstacle : scene.obstacles) obstacle_boxes.push_back(obstacle_box(obstacle));
+  CycleResult result = checkCandidates(scene.links, scene.obstacles,
+                                       overlappingBoxPairs(link_boxes, obstacle_boxes), {});
+  return checkCandidates(scene.links, scene.links, overlappingBoxPairs(link_boxes), result);
+}
+
+CycleResult gridStreamed(const RobotScene& scene) {
+  std::vector<BoundingBox> link_boxes;
+  link_boxes.reserve(scene.links.size());
+  for (const Ellipse& link : scene.links) link_boxes.push_back(boundingBox(link));
+  const BoxGrid grid(std::move(link_boxes));
+  CycleResult result;
+  std::vector<std::size_t> found;
+  for (const Ellipse& obstacle : scene.obstacles) {
+    grid.overlapping(boundingCircleBox(obstacle), &found);
+    for (const std::size_t i : found) result.collisions += overlap(scene.links[i], obstacle);
+    result.pair_tests += static_cast<long>(found.size());
+  }
+  return checkCandidates(scene.links, scene.links, grid.overlappingPairs(), result);
+}
+
+CycleResult gridPrepared(const RobotScene& scene) {
+  std::vector<PreparedEllipse> links, obstacles;
+  std::vector<BoundingBox> link_boxes, obstacle_boxes;
+  links.reserve(scene.links.size());
+  obstacles.reserve(scene.obstacles.size());
+  for (const Ellipse& link : scene.links) {
+    links.emplace_back(link);
+    link_boxes.push_back(links.back().box());
+  }
+  for (const Ellipse& obstacle : scene.obstacles) {
+    obstacles.emplace_back(obstacle);
+    obstacle_boxes.push_back(obstacles.back().box());
+  }
+  CycleResult result =
+      checkCandidates(links, obstacles, overlappingBoxPairs(link_boxes, obstacle_boxes), {});
+  return checkCandidates(links, links, overlappingBoxPairs(link_boxes), result);
+}
+
+/// The alternative considered for the core: sort both sets on min x, sweep, sort the pairs.
+std::vector<IndexPair> sortAndSweep(const std::vector<BoundingBox>& a,
+                                    const std::vector<BoundingBox>& b) {
+  struct Entry {
+    double min_x;
+    std::size_t index;
+    bool in_a;
+  };
+  std::vector<Entry> entries;
+  entries.reserve(a.size() + b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) entries.push_back({a[i].min_x, i, true});
+  for (std::size_t j = 0; j < b.size(); ++j) entries.push_back({b[j].min_x, j, false});
+  std::sort(entries.begin(), entries.end(),
+            [](const Entry& l, const Entry& r) { return l.min_x < r.min_x; });
+  std::vector<std::size_t> active_a, active_b;
+  std::vector<IndexPair> pairs;
+  const auto sweep = [](std::vector<std::size_t>* active, const std::vector<BoundingBox>& boxes,
+                        double x) {
+    active->erase(std::remove_if(active->begin(), active->end(),
+                                 [&](std::size_t k) { return boxes[k].max_x < x; }),
+                  active->end());
+  };
+  // Each active list is pruned only when the other set's entry is about to scan it, so every box
+  // is added and removed once.
+  for (const Entry& entry : entries) {
+    if (entry.in_a) {
+      sweep(&active_b, b, entry.min_x);
+      for (const std::size_t j : active_b) {
+        if (boxesOverlap(a[entry.index], b[j])) pairs.push_back({entry.index, j});
+      }
+      active_a.push_back(entry.index);
+    } else {
+      sweep(&active_a, a, entry.min_x);
+      for (const std::size_t i : active_a) {
+        if (boxesOverlap(a[i], b[entry.index])) pairs.push_back({i, entry.index});
+      }
+      active_b.push_back(entry.index);
+    }
+  }
+  std::sort(pairs.begin(), pairs.end());
+  return pairs;
+}
+
+CycleResult sweepCheck(const RobotScene& scene) {
+  std::vector<BoundingBox> link_boxes, obstacle_boxes;
+  for (const Ellipse& link : scene.links) link_boxes.push_back(boundingBox(link));
+  for (const Ellipse& obstacle : scene.obstacles) {
+    obstacle_boxes.push_back(boundingCircleBox(obstacle));
+  }
+  CycleResult result =
+      checkCandidates(scene.links, scene.obstacles, sortAndSweep(link_boxes, obstacle_boxes), {});
+  return checkCandidates(scene.links, scene.links, overlappingBoxPairs(link_boxes), result);
+}
+
+using Method = CycleResult (*)(const RobotScene&);
+
+const std::pair<const char*, Method> kMethods[] = {
+    {"brute_force", bruteForce},
+    {"grid_streamed", gridStreamed},
+    {"grid_batch", [](const RobotScene& s) { return grid(s, boundingCircleBox); }},
+    {"grid_tight_boxes",
+     [](const RobotScene& s) { return grid(s, [](const Ellipse& e) { return boundingBox(e); }); }},
+    {"grid_prepared", gridPrepared},
+    {"sort_and_sweep", sweepCheck},
+};
+
+}  // namespace
+}  // namespace ellipse_collision::bench
+
+int main(int argc, char** argv) {
+  using namespace ellipse_collision::bench;
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+
+  static std::map<int, RobotScene> scenes;
+  for (const int obstacles : {100, 1000, 10000, 100000}) {
+    scenes[obstacles] = robotScene(kLinks, obstacles, kWorldSize, 7);
+    const RobotScene& scene = scenes[obstacles];
+    const long collisions = bruteForce(scene).collisions;
+    for (const auto& [name, method] : kMethods) {
+      const CycleResult check = method(scene);
+      if (check.collisions != collisions) {
+        std::fprintf(stderr, "%s finds %ld collisions with %d obstacles, brute force %ld\n", name,
+                     check.collisions, obstacles, collisions);
+        return 1;
+      }
+      const std::string label = std::string("scene/") + name + "/" + std::to_string(obstacles);
+      benchmark::RegisterBenchmark(label.c_str(), [&scene, method = method,
+                                                   check](benchmark::State& state) {
+        for (auto _ : state) benchmark::DoNotOptimize(method(scene));
+        state.counters["pair_tests"] = static_cast<double>(check.pair_tests);
+        state.counters["collisions"] = static_cast<double>(check.collisions);
+        state.counters["obstacles"] = static_cast<double>(scene.obstacles.size());
+      })->Unit(benchmark::kMicrosecond);
+    }
+  }
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

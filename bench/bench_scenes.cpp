@@ -1,0 +1,142 @@
+#include "bench_scenes.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "contact_scale_oracle.h"
+
+namespace ellipse_collision::bench {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kAmbiguousBand = 1e-12;
+
+// Sizes of links and obstacles [m] and their largest axis ratios: a mobile manipulator among
+// boxes, poles and people.
+constexpr double kLinkMinMajor = 0.05, kLinkMaxMajor = 0.4, kLinkMaxRatio = 8.0;
+constexpr double kObstacleMinMajor = 0.05, kObstacleMaxMajor = 0.5, kObstacleMaxRatio = 5.0;
+
+/// Fills in the oracle's verdicts once the pairs are stored.
+void judge(PairMix* mix) {
+  for (std::size_t i = 0; i < mix->pairs.size(); ++i) {
+    const Ellipse &a = mix->a(i), &b = mix->b(i);
+    const __float128 t = test::oracleContactScale(a, b).quad;
+    mix->truth.push_back(t <= 1);
+    const __float128 off = t - 1;
+    mix->ambiguous.push_back((off < 0 ? -off : off) <= kAmbiguousBand);
+    const double bound = boundingRadius(a) + boundingRadius(b);
+    if ((b.center - a.center).squaredNorm() <= bound * bound) ++mix->pass_bounding_circles;
+  }
+}
+
+/// Stores a pair of its own two ellipses.
+void addPair(PairMix* mix, const Ellipse& a, const Ellipse& b) {
+  mix->pairs.emplace_back(mix->ellipses.size(), mix->ellipses.size() + 1);
+  mix->ellipses.push_back(a);
+  mix->ellipses.push_back(b);
+}
+
+}  // namespace
+
+double EllipseSampler::uniform(double lo, double hi) {
+  return std::uniform_real_distribution<double>(lo, hi)(rng_);
+}
+
+double EllipseSampler::logUniform(double lo, double hi) {
+  return std::exp(uniform(std::log(lo), std::log(hi)));
+}
+
+Ellipse EllipseSampler::ellipse(double half_width, double min_major, double max_major,
+                                double max_ratio) {
+  Ellipse e;
+  e.center = {uniform(-half_width, half_width), uniform(-half_width, half_width)};
+  const double major = logUniform(min_major, max_major);
+  const double minor = major / logUniform(1.0, max_ratio);
+  const bool x_is_major = uniform(0.0, 1.0) < 0.5;
+  e.radius_x = x_is_major ? major : minor;
+  e.radius_y = x_is_major ? minor : major;
+  e.angle = uniform(-kPi, kPi);
+  return e;
+}
+
+RobotScene robotScene(int links, int obstacles, double world_size, std::uint64_t seed) {
+  EllipseSampler sampler(seed);
+  RobotScene scene;
+  for (int i = 0; i < links; ++i) {
+    scene.links.push_back(sampler.ellipse(1.0, kLinkMinMajor, kLinkMaxMajor, kLinkMaxRatio));
+  }
+  for (int i = 0; i < obstacles; ++i) {
+    scene.obstacles.push_back(
+        sampler.ellipse(0.5 * world_size, kObstacleMinMajor, kObstacleMaxMajor, kObstacleMaxRatio));
+  }
+  return scene;
+}
+
+int PairMix::counted() const {
+  int n = 0;
+  for (const bool a : ambiguous) n += a ? 0 : 1;
+  return n;
+}
+
+PairMix sceneLikeMix(int count, std::uint64_t seed) {
+  // Every link-obstacle pair of one scene, in the order a scene check visits them.
+  constexpr int kLinks = 50;
+  const int obstacles = std::max(1, count / kLinks);
+  const RobotScene scene = robotScene(kLinks, obstacles, 10.0, seed);
+  PairMix mix;
+  mix.name = "scene-like";
+  mix.rows = scene.links.size();
+  mix.ellipses = scene.links;
+  mix.ellipses.insert(mix.ellipses.end(), scene.obstacles.begin(), scene.obstacles.end());
+  for (std::size_t link = 0; link < scene.links.size(); ++link) {
+    for (std::size_t obstacle = 0; obstacle < scene.obstacles.size(); ++obstacle) {
+      mix.pairs.emplace_back(link, scene.links.size() + obstacle);
+    }
+  }
+  judge(&mix);
+  return mix;
+}
+
+PairMix nearMix(int count, std::uint64_t seed) {
+  EllipseSampler sampler(seed);
+  PairMix mix;
+  mix.name = "near";
+  for (int i = 0; i < count; ++i) {
+    const Ellipse a = sampler.ellipse(1.0, kLinkMinMajor, kLinkMaxMajor, kLinkMaxRatio);
+    Ellipse b = sampler.ellipse(0.0, kObstacleMinMajor, kObstacleMaxMajor, kObstacleMaxRatio);
+    const double reach = 1.5 * (boundingRadius(a) + boundingRadius(b));
+    const double r = reach * std::sqrt(sampler.uniform(0.0, 1.0));  // uniform over the disk
+    const double phi = sampler.uniform(-kPi, kPi);
+    b.center = a.center + r * Eigen::Vector2d(std::cos(phi), std::sin(phi));
+    addPair(&mix, a, b);
+  }
+  judge(&mix);
+  return mix;
+}
+
+PairMix tangencyMix(int count, std::uint64_t seed) {
+  EllipseSampler sampler(seed);
+  PairMix mix;
+  mix.name = "tangent";
+  for (int i = 0; i < count; ++i) {
+    const Ellipse a = sampler.ellipse(1.0, kLinkMinMajor, kLinkMaxMajor, kLinkMaxRatio);
+    Ellipse b = sampler.ellipse(0.0, kObstacleMinMajor, kObstacleMaxMajor, kObstacleMaxRatio);
+    const double phi = sampler.uniform(-kPi, kPi);
+    b.center = a.center + Eigen::Vector2d(std::cos(phi), std::sin(phi));
+    const double delta = sampler.logUniform(1e-9, 1e-6);
+    const double target = sampler.uniform(0.0, 1.0) < 0.5 ? 1.0 - delta : 1.0 + delta;
+    addPair(&mix, a, test::placeAtContactScale(a, b, target));
+  }
+  judge(&mix);
+  return mix;
+}
+
+int misclassified(const PairMix& mix, const std::vector<bool>& verdicts) {
+  int wrong = 0;
+  for (std::size_t i = 0; i < mix.pairs.size(); ++i) {
+    if (!mix.ambiguous[i] && verdicts[i] != mix.truth[i]) ++wrong;
+  }
+  return wrong;
+}
+
+}  // namespace ellipse_collision::bench

@@ -1,0 +1,117 @@
+#!/usr/bin/env python3
+"""Prints the collision benchmarks' JSON output (Google Benchmark --benchmark_out) as tables.
+
+Usage: benchmark_table.py PAIRS_JSON SCENES_JSON
+
+Times are CPU times; with repetitions, the median of them. Ratios are taken within the one run.
+"""
+
+import json
+import sys
+
+
+def load_runs(path):
+    """Maps run name -> benchmark entry: the median aggregate if there are repetitions."""
+    with open(path) as f:
+        entries = json.load(f)["benchmarks"]
+    runs = {}
+    for entry in entries:
+        name = entry.get("run_name", entry["name"])
+        if entry.get("run_type") == "aggregate":
+            if entry.get("aggregate_name") == "median":
+                runs[name] = entry
+        elif name not in runs:
+            runs[name] = entry
+    return runs
+
+
+def pair_table(runs):
+    rows = {}  # (method, mix) -> entry
+    for name, entry in runs.items():
+        _, method, mix = name.split("/")
+        rows[(method, mix)] = entry
+    mixes = ordered({mix for _, mix in rows}, ["scene-like", "near", "tangent"])
+    methods = ["ours_overlap", "ours_prepared", "eigenvalue_alone", "polygonal_alone", "fcl",
+               "seed_readme"]
+    print("Pair tests (same stored pairs per mix; misclassified = disagreements with the quad "
+          "oracle, pairs within 1e-12 of tangency left out)")
+    header = (f"{'method':<18} {'mix':<11} {'ns/pair':>9} {'x faster than FCL':>18} "
+              f"{'misclassified':>14} {'Unknown->eigen':>15}")
+    print(header)
+    print("-" * len(header))
+    for mix in mixes:
+        fcl = rows.get(("fcl", mix))
+        fcl_ns = fcl["sec_per_pair"] * 1e9 if fcl else None
+        for method in methods:
+            entry = rows.get((method, mix))
+            if entry is None:
+                continue
+            ns = entry["sec_per_pair"] * 1e9
+            ratio = f"{fcl_ns / ns:.1f}" if fcl_ns else "-"
+            wrong = f"{int(entry['misclassified'])}/{int(entry['counted'])}"
+            fallbacks = entry.get("unknown_fallbacks")
+            fallbacks = f"{int(fallbacks)}" if fallbacks is not None else ""
+            print(f"{method:<18} {mix:<11} {ns:>9.1f} {ratio:>18} {wrong:>14} {fallbacks:>15}")
+        passing = rows[("fcl", mix)]["pass_bounding"] if fcl else 0
+        print(f"{'':<18} {mix:<11} ({int(passing)} of {int(fcl['counted']) if fcl else 0} pairs "
+              f"within their bounding circles)")
+    caps = sorted({int(m.rsplit("_", 1)[1]) for m, _ in rows if m.startswith("cap_study_")})
+    if caps:
+        print()
+        print("overlap() with polygonal iteration caps (ns/pair; the core uses "
+              "kOverlapPolygonalIterations)")
+        print(f"{'cap':>4} " + " ".join(f"{mix:>11}" for mix in mixes))
+        for cap in caps:
+            cells = []
+            for mix in mixes:
+                entry = rows.get((f"cap_study_{cap}", mix))
+                cells.append(f"{entry['sec_per_pair'] * 1e9:>11.1f}" if entry else f"{'-':>11}")
+            print(f"{cap:>4} " + " ".join(cells))
+
+
+def scene_table(runs):
+    rows = {}  # (method, obstacles) -> entry
+    for name, entry in runs.items():
+        _, method, obstacles = name.split("/")
+        rows[(method, int(obstacles))] = entry
+    sizes = sorted({n for _, n in rows})
+    methods = ordered({method for method, _ in rows},
+                      ["brute_force", "grid_streamed", "grid_batch", "grid_tight_boxes",
+                       "grid_prepared", "sort_and_sweep"])
+    print("Scene checks: 50 links vs N obstacles, plus link-link pairs, per cycle on one core")
+    header = (f"{'obstacles':>9} {'method':<17} {'us/cycle':>10} {'pair tests':>11} "
+              f"{'collisions':>10} {'growth vs N/10':>15}")
+    print(header)
+    print("-" * len(header))
+    for n in sizes:
+        for method in methods:
+            entry = rows.get((method, n))
+            if entry is None:
+                continue
+            us = to_microseconds(entry)
+            previous = rows.get((method, n // 10))
+            growth = f"{us / to_microseconds(previous):.1f}x" if previous else ""
+            print(f"{n:>9} {method:<17} {us:>10.1f} {int(entry['pair_tests']):>11} "
+                  f"{int(entry['collisions']):>10} {growth:>15}")
+
+
+def ordered(names, preferred):
+    """`names` in the order of `preferred`, any others after them alphabetically."""
+    return [n for n in preferred if n in names] + sorted(n for n in names if n not in preferred)
+
+
+def to_microseconds(entry):
+    scale = {"ns": 1e-3, "us": 1.0, "ms": 1e3, "s": 1e6}[entry["time_unit"]]
+    return entry["cpu_time"] * scale
+
+
+def main():
+    if len(sys.argv) != 3:
+        sys.exit(__doc__)
+    pair_table(load_runs(sys.argv[1]))
+    print()
+    scene_table(load_runs(sys.argv[2]))
+
+
+if __name__ == "__main__":
+    main()

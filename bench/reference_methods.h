@@ -1,0 +1,34 @@
+#pragma once
+
+// The methods ours is compared against, each used the way its documentation describes.
+
+#include <fcl/fcl.h>
+
+#include <memory>
+
+#include "ellipse_collision/ellipse.h"
+
+namespace ellipse_collision::bench {
+
+/// An ellipse as FCL 0.7 sees it: an Ellipsoidd(radius_x, radius_y, radius_z) at the ellipse's
+/// pose. The bodies are symmetric about z = 0, so two overlap iff their sections at z = 0, the
+/// ellipses, do; radius_z is therefore arbitrary (the smaller radius). Built once, outside timing.
+class FclEllipse {
+ public:
+  explicit FclEllipse(const Ellipse& ellipse);
+  const fcl::CollisionObjectd* object() const { return object_.get(); }
+
+ private:
+  std::unique_ptr<fcl::CollisionObjectd> object_;
+};
+
+/// FCL's answer for a pair: fcl::collide with a default CollisionRequestd (GJK via libccd).
+bool fclCollide(const FclEllipse& a, const FclEllipse& b);
+
+/// The method of the seed README (a demo of the eigenvalue test): the generalised eigenproblem of
+/// (A^-1, B^-1) with Eigen::GeneralizedSelfAdjointEigenSolver, then gradient descent on the
+/// convex K(s) from s = 0.5 with a forward-difference gradient, a fixed learning rate and an
+/// iteration cap (the values of the demo's optimiser); collision iff min K >= 0.
+bool seedReadmeOverlap(const Ellipse& a, const Ellipse& b);
+
+}  // namespace ellipse_collision::bench
