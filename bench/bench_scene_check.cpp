@@ -9,6 +9,9 @@
 //   grid_tight_boxes   the same with tight boxes (one sincos each) for the obstacles too
 //   grid_prepared      every ellipse prepared, tight boxes, prepared overlap()
 //   sort_and_sweep     the alternative broadphase: both sets sorted on min x and swept
+//   checkScene         the core's checkScene() on the named scene, as the node calls it: checks the
+//                      names, grids the links, streams the obstacles, sorts the answer
+//   checkScene_warn    the same with a warning distance of 0.1 m (warning pairs via distance())
 // Counters: pair_tests = overlap() calls per cycle, collisions = colliding pairs per cycle.
 
 #include <benchmark/benchmark.h>
@@ -26,6 +29,7 @@
 #include "ellipse_collision/broadphase.h"
 #include "ellipse_collision/overlap.h"
 #include "ellipse_collision/prepared_ellipse.h"
+#include "ellipse_collision/scene_check.h"
 
 namespace ellipse_collision::bench {
 namespace {
@@ -162,6 +166,18 @@ CycleResult sweepCheck(const RobotScene& scene) {
   return checkCandidates(scene.links, scene.links, overlappingBoxPairs(link_boxes), result);
 }
 
+/// The scene as checkScene() takes it: links and obstacles by name.
+std::vector<NamedEllipse> namedScene(const RobotScene& scene) {
+  std::vector<NamedEllipse> named;
+  for (std::size_t i = 0; i < scene.links.size(); ++i) {
+    named.push_back({"link_" + std::to_string(i), EllipseRole::Link, scene.links[i]});
+  }
+  for (std::size_t i = 0; i < scene.obstacles.size(); ++i) {
+    named.push_back({"obstacle_" + std::to_string(i), EllipseRole::Obstacle, scene.obstacles[i]});
+  }
+  return named;
+}
+
 using Method = CycleResult (*)(const RobotScene&);
 
 const std::pair<const char*, Method> kMethods[] = {
@@ -178,6 +194,7 @@ const std::pair<const char*, Method> kMethods[] = {
 }  // namespace ellipse_collision::bench
 
 int main(int argc, char** argv) {
+  using namespace ellipse_collision;
   using namespace ellipse_collision::bench;
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
@@ -201,6 +218,27 @@ int main(int argc, char** argv) {
         state.counters["pair_tests"] = static_cast<double>(check.pair_tests);
         state.counters["collisions"] = static_cast<double>(check.collisions);
         state.counters["obstacles"] = static_cast<double>(scene.obstacles.size());
+      })->Unit(benchmark::kMicrosecond);
+    }
+
+    static std::map<int, std::vector<NamedEllipse>> named_scenes;
+    const std::vector<NamedEllipse>& named = named_scenes[obstacles] = namedScene(scene);
+    for (const auto& [name, warning_distance] :
+         {std::make_pair("checkScene", 0.0), std::make_pair("checkScene_warn", 0.1)}) {
+      SceneRules rules;  // self collision on, as in the other methods
+      rules.warning_distance = warning_distance;
+      const SceneCheckResult check = checkScene(named, rules);
+      if (!check.ok() || static_cast<long>(check.collisions.size()) != collisions) {
+        std::fprintf(stderr, "%s finds %zu collisions with %d obstacles, brute force %ld %s\n",
+                     name, check.collisions.size(), obstacles, collisions, check.error.c_str());
+        return 1;
+      }
+      const std::string label = std::string("scene/") + name + "/" + std::to_string(obstacles);
+      benchmark::RegisterBenchmark(label.c_str(), [&named, rules, check](benchmark::State& state) {
+        for (auto _ : state) benchmark::DoNotOptimize(checkScene(named, rules));
+        state.counters["pair_tests"] = static_cast<double>(check.pair_tests);
+        state.counters["collisions"] = static_cast<double>(check.collisions.size());
+        state.counters["warnings"] = static_cast<double>(check.warnings.size());
       })->Unit(benchmark::kMicrosecond);
     }
   }

@@ -77,7 +77,7 @@ def scene_table(runs):
     sizes = sorted({n for _, n in rows})
     methods = ordered({method for method, _ in rows},
                       ["brute_force", "grid_streamed", "grid_batch", "grid_tight_boxes",
-                       "grid_prepared", "sort_and_sweep"])
+                       "grid_prepared", "sort_and_sweep", "checkScene", "checkScene_warn"])
     print("Scene checks: 50 links vs N obstacles, plus link-link pairs, per cycle on one core")
     header = (f"{'obstacles':>9} {'method':<17} {'us/cycle':>10} {'pair tests':>11} "
               f"{'collisions':>10} {'growth vs N/10':>15}")

@@ -23,3 +23,11 @@ target_compile_options(bench_pair_tests PRIVATE ${ELLIPSE_COLLISION_WARNINGS})
 add_executable(bench_scene_check bench/bench_scene_check.cpp)
 target_link_libraries(bench_scene_check ellipse_collision_bench_scenes benchmark::benchmark)
 target_compile_options(bench_scene_check PRIVATE ${ELLIPSE_COLLISION_WARNINGS})
+
+# Service round trip (issue 7): a ROS client of the running node, a plain main (not Google
+# Benchmark); scripts/benchmark.sh starts a roscore and the node for it.
+add_executable(bench_service_roundtrip bench/bench_service_roundtrip.cpp)
+target_include_directories(bench_service_roundtrip PRIVATE include ${catkin_INCLUDE_DIRS})
+target_link_libraries(bench_service_roundtrip ${catkin_LIBRARIES})
+target_compile_options(bench_service_roundtrip PRIVATE ${ELLIPSE_COLLISION_WARNINGS})
+add_dependencies(bench_service_roundtrip ${PROJECT_NAME}_generate_messages_cpp)

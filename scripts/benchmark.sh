@@ -5,13 +5,17 @@
 # polygonal iteration-cap study; then scene checks of 50 links against 100 to 100,000 obstacles
 # (us per cycle, pair tests done, growth with N). Times are CPU times, medians of repetitions
 # interleaved at random, so that the methods share the machine's noise within one run.
+# Last, the service round trip (issue 7): a roscore of its own on a free port, the node with
+# bench/service_roundtrip.yaml, and bench_service_roundtrip calling ~check_collisions 10,000 times
+# with 100 and 1,000 ellipses stored (p50/p99 latency, calls per second, wall time). Both are
+# stopped at the end, on failure and on Ctrl-C.
 #
 #   scripts/benchmark.sh                 full run (a few minutes)
-#   scripts/benchmark.sh --smoke         every benchmark once, briefly, on few pairs (for CI)
+#   scripts/benchmark.sh --smoke         every benchmark once, briefly, on few pairs, 200 service
+#                                        calls (for CI)
 #
-# The raw Google Benchmark output (console and JSON) is kept in build/benchmark/.
-# TODO(issue 7): the service round-trip benchmark (CheckCollisions through the node) belongs here
-# once src/ros provides the node; it is not measured yet.
+# The raw output (Google Benchmark console and JSON, round trip, roscore and node logs) is kept
+# in build/benchmark/.
 set -euo pipefail
 
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -27,7 +31,7 @@ out="${repo}/build/benchmark"
 mkdir -p "${out}"
 echo "Building the benchmarks (log: build/benchmark/build.txt)"
 if ! bash "${repo}/scripts/build.sh" -DELLIPSE_COLLISION_BENCHMARKS=ON bench_pair_tests \
-    bench_scene_check > "${out}/build.txt" 2>&1; then
+    bench_scene_check bench_service_roundtrip ellipse_collision_node > "${out}/build.txt" 2>&1; then
   cat "${out}/build.txt" >&2
   exit 1
 fi
@@ -35,11 +39,13 @@ bin="${repo}/build/ws/devel/lib/ellipse_collision"
 if "${smoke}"; then
   pair_args=(--pairs_per_mix=64 --benchmark_min_time=0.01)
   scene_args=(--benchmark_min_time=0.01)
+  roundtrip_calls=200
 else
   repeat=(--benchmark_repetitions=5 --benchmark_enable_random_interleaving=true
           --benchmark_report_aggregates_only=true)
   pair_args=(--pairs_per_mix=2000 --benchmark_min_time=0.3 "${repeat[@]}")
   scene_args=(--benchmark_min_time=0.3 "${repeat[@]}")
+  roundtrip_calls=10000
 fi
 
 # Runs one benchmark program with its console output in build/benchmark/<name>.txt, shown only
@@ -61,3 +67,44 @@ echo
 
 /usr/bin/python3 "${repo}/bench/benchmark_table.py" "${out}/bench_pair_tests.json" \
   "${out}/bench_scene_check.json"
+
+# ---- service round trip (issue 7) ---------------------------------------------------------------
+# Started here, stopped by the EXIT trap whatever ends the script: the node first, then roscore
+# (which stops its rosmaster and rosout on SIGINT).
+ros_pids=()
+stop_ros() {
+  local i
+  for ((i = ${#ros_pids[@]} - 1; i >= 0; i--)); do
+    kill -INT "${ros_pids[i]}" 2>/dev/null || true
+    wait "${ros_pids[i]}" 2>/dev/null || true
+  done
+  ros_pids=()
+}
+trap stop_ros EXIT
+trap 'exit 130' INT TERM
+
+export PATH="/usr/bin:${PATH}"
+port="$(/usr/bin/python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')"
+export ROS_MASTER_URI="http://127.0.0.1:${port}" ROS_IP=127.0.0.1 ROS_LOG_DIR="${out}/ros_log"
+echo
+echo "Running bench_service_roundtrip against ellipse_collision_node (roscore on port ${port})"
+roscore -p "${port}" > "${out}/roscore.txt" 2>&1 &
+ros_pids+=($!)
+for _ in $(seq 100); do
+  rosparam get /run_id > /dev/null 2>&1 && break
+  sleep 0.2
+done
+if ! rosparam get /run_id > /dev/null 2>&1; then
+  cat "${out}/roscore.txt" >&2
+  echo "roscore did not start" >&2
+  exit 1
+fi
+rosparam load "${repo}/bench/service_roundtrip.yaml" /ellipse_collision
+"${bin}/ellipse_collision_node" __name:=ellipse_collision > "${out}/node.txt" 2>&1 &
+ros_pids+=($!)
+if ! "${bin}/bench_service_roundtrip" --calls "${roundtrip_calls}" --sizes 100,1000 \
+    --node /ellipse_collision 2>&1 | tee "${out}/bench_service_roundtrip.txt"; then
+  tail -n 20 "${out}/node.txt" >&2
+  echo "bench_service_roundtrip failed" >&2
+  exit 1
+fi

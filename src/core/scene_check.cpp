@@ -3,11 +3,15 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <optional>
+#include <string_view>
 #include <tuple>
 
+#include "ellipse_collision/broadphase.h"
 #include "ellipse_collision/distance.h"
 #include "ellipse_collision/eigenvalue_test.h"
 #include "ellipse_collision/overlap.h"
+#include "ellipse_collision/prepared_ellipse.h"
 
 namespace ellipse_collision {
 namespace {
@@ -24,23 +28,71 @@ double distanceLowerBound(const Ellipse& a, const Ellipse& b) {
   return centres - reach - kBoundMargin * (centres + reach);
 }
 
+// Relative margin of the warning pad in candidateBox(): distance()'s absolute error (about
+// epsilon times the radii and the centre distance, distance.h) and the rounding of the padded
+// bounds are far smaller, so a pair the boxes rule out is one distance() never reports. The
+// obstacle's own size is covered by the margin of its boundingCircleBox().
+constexpr double kPadMargin = 1e-6;
+
+/// The names seen so far, as views into the scene: open addressing in one array, because a
+/// std::set of copies, or even a std::unordered_set of views with a node per name, costs more than
+/// all the pair tests of a large scene.
+class NameSet {
+ public:
+  explicit NameSet(std::size_t capacity) {
+    std::size_t slots = 16;
+    while (slots < 2 * capacity) slots *= 2;
+    slots_.assign(slots, {});
+  }
+
+  /// False iff `name` was inserted before.
+  bool insert(std::string_view name) {
+    const std::size_t mask = slots_.size() - 1;
+    const std::size_t hash = std::hash<std::string_view>{}(name);
+    for (std::size_t k = hash & mask;; k = (k + 1) & mask) {
+      if (slots_[k].data() == nullptr) {
+        slots_[k] = name;
+        return true;
+      }
+      if (slots_[k] == name) return false;
+    }
+  }
+
+ private:
+  std::vector<std::string_view> slots_;  ///< a null data() marks a free slot; names are non-empty
+};
+
 std::string validate(const std::vector<NamedEllipse>& ellipses, const SceneRules& rules) {
   if (!std::isfinite(rules.warning_distance) || rules.warning_distance < 0.0) {
     char text[64];
     const auto end = std::to_chars(text, text + sizeof(text), rules.warning_distance).ptr;
     return "warning_distance = " + std::string(text, end) + " must be finite and >= 0";
   }
-  std::set<std::string> names;
+  NameSet names(ellipses.size());
   for (std::size_t i = 0; i < ellipses.size(); ++i) {
     const NamedEllipse& entry = ellipses[i];
-    const std::string where = "ellipses[" + std::to_string(i) + "]";
-    if (entry.name.empty()) return where + ".name is empty";
-    if (!names.insert(entry.name).second)
-      return where + ".name = '" + entry.name + "' is a duplicate";
+    // Built only for an error: per entry it would cost more than the whole check.
+    const auto where = [i] { return "ellipses[" + std::to_string(i) + "]"; };
+    if (entry.name.empty()) return where() + ".name is empty";
+    if (!names.insert(entry.name)) return where() + ".name = '" + entry.name + "' is a duplicate";
     const std::string invalid = invalidReason(entry.ellipse);
-    if (!invalid.empty()) return where + " ('" + entry.name + "'): " + invalid;
+    if (!invalid.empty()) return where() + " ('" + entry.name + "'): " + invalid;
   }
   return {};
+}
+
+/// The box a mover's candidate partners must meet: its tight box grown by the warning distance
+/// and a margin, so that every pair distance() could report as closer than the warning distance
+/// has overlapping boxes. Without warnings, the tight box: ellipses that overlap have overlapping
+/// boxes (broadphase.h).
+BoundingBox candidateBox(const PreparedEllipse& mover, double warning_distance) {
+  BoundingBox box = mover.box();
+  if (warning_distance <= 0.0) return box;
+  const Eigen::Vector2d& center = mover.ellipse().center;
+  const double pad = warning_distance + kPadMargin * (warning_distance + (box.max_x - box.min_x) +
+                                                      (box.max_y - box.min_y) +
+                                                      std::abs(center.x()) + std::abs(center.y()));
+  return {box.min_x - pad, box.min_y - pad, box.max_x + pad, box.max_y + pad};
 }
 
 /// Lower role first, then lower name: a pair reads the same whichever way round the loop met it.
@@ -76,8 +128,20 @@ SceneCheckResult checkScene(const std::vector<NamedEllipse>& ellipses, const Sce
   if (!result.error.empty()) return result;
   const double warning_distance = rules.warning_distance;
 
-  // The one pair loop. A broadphase would replace the nested loop by its candidate pairs; the sort
-  // below makes the answer independent of the order in which candidates arrive.
+  // Every pair involves a query or a link (obstacle-obstacle is never checked): grid those few
+  // "movers", prepared once, and stream the obstacles through the grid.
+  std::vector<const NamedEllipse*> movers;
+  std::vector<PreparedEllipse> prepared_movers;
+  std::vector<BoundingBox> mover_boxes;
+  for (const NamedEllipse& entry : ellipses) {
+    if (entry.role == EllipseRole::Obstacle) continue;
+    movers.push_back(&entry);
+    prepared_movers.emplace_back(entry.ellipse);
+    mover_boxes.push_back(candidateBox(prepared_movers.back(), warning_distance));
+  }
+  const BoxGrid grid(std::move(mover_boxes));
+
+  // The sort below makes the answer independent of the order in which candidates arrive.
   struct Found {
     const NamedEllipse* first;
     const NamedEllipse* second;
@@ -86,26 +150,44 @@ SceneCheckResult checkScene(const std::vector<NamedEllipse>& ellipses, const Sce
   };
   std::vector<Found> collisions;
   std::vector<Found> warnings;
-  for (std::size_t i = 0; i < ellipses.size(); ++i) {
-    for (std::size_t j = i + 1; j < ellipses.size(); ++j) {
-      const bool i_first = comesFirst(ellipses[i], ellipses[j]);
-      const NamedEllipse& first = i_first ? ellipses[i] : ellipses[j];
-      const NamedEllipse& second = i_first ? ellipses[j] : ellipses[i];
-      if (!pairWanted(first, second, rules, only_names)) continue;
-      // Always called in canonical order, so swapping the inputs cannot change a rounding bit.
-      if (overlap(first.ellipse, second.ellipse)) {
-        collisions.push_back({&first, &second, contactScale(first.ellipse, second.ellipse), {}});
-        continue;
-      }
-      if (warning_distance <= 0.0 ||
-          distanceLowerBound(first.ellipse, second.ellipse) >= warning_distance) {
-        continue;
-      }
-      const Clearance clearance = distance(first.ellipse, second.ellipse);
-      if (clearance.separated && clearance.distance < warning_distance) {
-        warnings.push_back({&first, &second, 0.0, clearance});
-      }
+  // The narrow phase of one candidate pair, always in canonical order, so that neither the input
+  // order nor the broadphase can change a rounding bit.
+  const auto check = [&](const NamedEllipse& first, const PreparedEllipse& prepared_first,
+                         const NamedEllipse& second, const PreparedEllipse& prepared_second) {
+    ++result.pair_tests;
+    if (overlap(prepared_first, prepared_second)) {
+      collisions.push_back({&first, &second, contactScale(prepared_first, prepared_second), {}});
+      return;
     }
+    if (warning_distance <= 0.0 ||
+        distanceLowerBound(first.ellipse, second.ellipse) >= warning_distance) {
+      return;
+    }
+    const Clearance clearance = distance(first.ellipse, second.ellipse);
+    if (clearance.separated && clearance.distance < warning_distance) {
+      warnings.push_back({&first, &second, 0.0, clearance});
+    }
+  };
+
+  // Movers against obstacles: a mover (query or link) always comes first in a pair with an
+  // obstacle. The obstacle's box needs no trigonometry, and it is prepared only if needed.
+  std::vector<std::size_t> found;
+  for (const NamedEllipse& obstacle : ellipses) {
+    if (obstacle.role != EllipseRole::Obstacle) continue;
+    grid.overlapping(boundingCircleBox(obstacle.ellipse), &found);
+    std::optional<PreparedEllipse> prepared_obstacle;
+    for (const std::size_t i : found) {
+      if (!pairWanted(*movers[i], obstacle, rules, only_names)) continue;
+      if (!prepared_obstacle) prepared_obstacle.emplace(obstacle.ellipse);
+      check(*movers[i], prepared_movers[i], obstacle, *prepared_obstacle);
+    }
+  }
+  // Movers among themselves: query-link always, link-link with self collision.
+  for (const IndexPair& pair : grid.overlappingPairs()) {
+    std::size_t i = pair.first, j = pair.second;
+    if (!comesFirst(*movers[i], *movers[j])) std::swap(i, j);
+    if (!pairWanted(*movers[i], *movers[j], rules, only_names)) continue;
+    check(*movers[i], prepared_movers[i], *movers[j], prepared_movers[j]);
   }
 
   const auto canonical = [](const Found& x, const Found& y) {

@@ -1,0 +1,282 @@
+// checkScene() finds its candidate pairs with a broadphase; these tests hold it to a brute force
+// written here that calls overlap(), contactScale() and distance() on every pair the rules want:
+// the same pairs in the same order with the same bits, warnings included, on random scenes from
+// sparse to dense, with queries, name filters and allowed pairs, and far fewer exact pair tests.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <iostream>
+#include <numeric>
+#include <random>
+#include <tuple>
+
+#include "ellipse_collision/distance.h"
+#include "ellipse_collision/eigenvalue_test.h"
+#include "ellipse_collision/overlap.h"
+#include "ellipse_collision/scene_check.h"
+
+namespace ellipse_collision {
+namespace {
+
+/// Every pair in reporting order, exact tests on all of them: no bound, no box, no grid.
+SceneCheckResult bruteForce(const std::vector<NamedEllipse>& scene, const SceneRules& rules,
+                            const std::set<std::string>& only_names) {
+  std::vector<const NamedEllipse*> sorted;
+  for (const NamedEllipse& e : scene) sorted.push_back(&e);
+  std::sort(sorted.begin(), sorted.end(), [](const NamedEllipse* x, const NamedEllipse* y) {
+    return std::tie(x->role, x->name) < std::tie(y->role, y->name);
+  });
+  SceneCheckResult expected;
+  for (std::size_t i = 0; i < sorted.size(); ++i) {
+    for (std::size_t j = i + 1; j < sorted.size(); ++j) {
+      const NamedEllipse& a = *sorted[i];
+      const NamedEllipse& b = *sorted[j];
+      if (!pairWanted(a, b, rules, only_names)) continue;
+      if (overlap(a.ellipse, b.ellipse)) {
+        expected.collisions.push_back({a.name, b.name, contactScale(a.ellipse, b.ellipse)});
+        continue;
+      }
+      if (rules.warning_distance <= 0.0) continue;
+      const Clearance c = distance(a.ellipse, b.ellipse);
+      if (c.separated && c.distance < rules.warning_distance) {
+        expected.warnings.push_back({a.name, b.name, c.distance, c.point_a, c.point_b});
+      }
+    }
+  }
+  return expected;
+}
+
+bool sameBits(double x, double y) { return std::memcmp(&x, &y, sizeof(double)) == 0; }
+
+/// Exactly the same answer: names, order and every bit of every number.
+void expectSame(const SceneCheckResult& actual, const SceneCheckResult& expected,
+                const std::string& label) {
+  ASSERT_TRUE(actual.ok()) << label << ": " << actual.error;
+  ASSERT_EQ(actual.collisions.size(), expected.collisions.size()) << label;
+  for (std::size_t i = 0; i < expected.collisions.size(); ++i) {
+    const CollidingPair& p = actual.collisions[i];
+    const CollidingPair& q = expected.collisions[i];
+    EXPECT_EQ(p.name_a, q.name_a) << label << " collision " << i;
+    EXPECT_EQ(p.name_b, q.name_b) << label << " collision " << i;
+    EXPECT_TRUE(sameBits(p.contact_scale, q.contact_scale))
+        << label << " " << p.name_a << "/" << p.name_b << ": " << p.contact_scale << " vs "
+        << q.contact_scale;
+  }
+  ASSERT_EQ(actual.warnings.size(), expected.warnings.size()) << label;
+  for (std::size_t i = 0; i < expected.warnings.size(); ++i) {
+    const NearPair& p = actual.warnings[i];
+    const NearPair& q = expected.warnings[i];
+    EXPECT_EQ(p.name_a, q.name_a) << label << " warning " << i;
+    EXPECT_EQ(p.name_b, q.name_b) << label << " warning " << i;
+    EXPECT_TRUE(sameBits(p.distance, q.distance) && sameBits(p.point_a.x(), q.point_a.x()) &&
+                sameBits(p.point_a.y(), q.point_a.y()) && sameBits(p.point_b.x(), q.point_b.x()) &&
+                sameBits(p.point_b.y(), q.point_b.y()))
+        << label << " " << p.name_a << "/" << p.name_b;
+  }
+}
+
+/// Pairs the rules want, whatever the geometry: what an all-pairs check would test.
+std::size_t wantedPairs(const std::vector<NamedEllipse>& scene, const SceneRules& rules,
+                        const std::set<std::string>& only_names) {
+  std::size_t count = 0;
+  for (std::size_t i = 0; i < scene.size(); ++i) {
+    for (std::size_t j = i + 1; j < scene.size(); ++j) {
+      count += pairWanted(scene[i], scene[j], rules, only_names);
+    }
+  }
+  return count;
+}
+
+struct SceneShape {
+  int queries;
+  int links;
+  int obstacles;
+  double links_half_width;      ///< links' centres in [-w, w]^2 [m]
+  double obstacles_half_width;  ///< obstacles' centres in [-w, w]^2 [m]
+  double max_major;             ///< [m]
+};
+
+/// Ellipses of every role, with names that do not follow their roles (so the reporting order is
+/// not the input order), axis ratios up to 20 and any angle.
+std::vector<NamedEllipse> randomScene(std::mt19937_64& rng, const SceneShape& shape) {
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const int count = shape.queries + shape.links + shape.obstacles;
+  std::vector<int> labels(static_cast<std::size_t>(count));
+  std::iota(labels.begin(), labels.end(), 0);
+  std::shuffle(labels.begin(), labels.end(), rng);
+  std::vector<NamedEllipse> scene;
+  for (int i = 0; i < count; ++i) {
+    NamedEllipse e;
+    e.name = "e" + std::to_string(labels[static_cast<std::size_t>(i)]);
+    e.role = i < shape.queries
+                 ? EllipseRole::Query
+                 : (i < shape.queries + shape.links ? EllipseRole::Link : EllipseRole::Obstacle);
+    const double half_width =
+        e.role == EllipseRole::Obstacle ? shape.obstacles_half_width : shape.links_half_width;
+    e.ellipse.center =
+        Eigen::Vector2d(half_width * (2.0 * unit(rng) - 1.0), half_width * (2.0 * unit(rng) - 1.0));
+    const double major = shape.max_major * std::pow(1e-2, unit(rng));  // log-uniform, 2 decades
+    e.ellipse.radius_x = major;
+    e.ellipse.radius_y = major / std::pow(20.0, unit(rng));
+    e.ellipse.angle = 6.283185307179586 * unit(rng) - 3.141592653589793;
+    scene.push_back(e);
+  }
+  std::shuffle(scene.begin(), scene.end(), rng);
+  return scene;
+}
+
+TEST(SceneBroadphase, MatchesBruteForceOnRandomScenesWithRulesAndWarnings) {
+  std::mt19937_64 rng(20240607);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::size_t collisions = 0, warnings = 0, allowed_hits = 0, filtered = 0;
+  // Sparse and dense, few movers (the grid's plain list) and more than 64 (its cells).
+  const SceneShape shapes[] = {{0, 8, 40, 1.0, 10.0, 1.0},     {2, 20, 200, 2.0, 20.0, 0.8},
+                               {3, 50, 300, 1.0, 25.0, 0.5},   {5, 80, 150, 5.0, 5.0, 0.6},
+                               {0, 120, 0, 3.0, 3.0, 0.5},     {10, 60, 400, 2.0, 4.0, 1.5},
+                               {4, 100, 500, 20.0, 20.0, 2.0}, {1, 3, 1000, 0.5, 50.0, 0.3}};
+  const double warning_distances[] = {0.0, 0.02, 0.3, 2.0};
+  for (int trial = 0; trial < 64; ++trial) {
+    const SceneShape& shape = shapes[trial % 8];
+    const std::vector<NamedEllipse> scene = randomScene(rng, shape);
+    SceneRules rules;
+    rules.self_collision = trial % 3 != 0;
+    rules.warning_distance = warning_distances[(trial / 8) % 4];
+    std::set<std::string> only_names;
+    std::uniform_int_distribution<std::size_t> pick(0, scene.size() - 1);
+    if (trial % 4 == 1) {
+      for (int k = 0; k < 5; ++k) only_names.insert(scene[pick(rng)].name);
+      only_names.insert("not_in_scene");
+    }
+    // Allow some pairs that really collide or warn, so that the rule is put to the test.
+    const SceneCheckResult unrestricted = bruteForce(scene, rules, only_names);
+    if (trial % 2 == 0) {
+      for (std::size_t i = 0; i < unrestricted.collisions.size(); i += 3) {
+        rules.allowed.add(unrestricted.collisions[i].name_b, unrestricted.collisions[i].name_a);
+      }
+      for (std::size_t i = 0; i < unrestricted.warnings.size(); i += 3) {
+        rules.allowed.add(unrestricted.warnings[i].name_a, unrestricted.warnings[i].name_b);
+      }
+      for (int k = 0; k < 10; ++k) rules.allowed.add(scene[pick(rng)].name, scene[pick(rng)].name);
+    }
+
+    const SceneCheckResult expected = bruteForce(scene, rules, only_names);
+    const SceneCheckResult actual = checkScene(scene, rules, only_names);
+    expectSame(actual, expected, "trial " + std::to_string(trial));
+    if (HasFatalFailure()) return;
+    collisions += expected.collisions.size();
+    warnings += expected.warnings.size();
+    allowed_hits += unrestricted.collisions.size() + unrestricted.warnings.size() -
+                    expected.collisions.size() - expected.warnings.size();
+    filtered += only_names.empty() ? 0 : 1;
+  }
+  // Not vacuous: many collisions and warnings, and the allowed pairs removed real ones.
+  std::cout << "[          ] " << collisions << " collisions, " << warnings << " warnings, "
+            << allowed_hits << " allowed away\n";
+  EXPECT_GT(collisions, 400u);
+  EXPECT_GT(warnings, 400u);
+  EXPECT_GT(allowed_hits, 100u);
+  EXPECT_EQ(filtered, 16u);
+}
+
+TEST(SceneBroadphase, WarningsAtTheWarningDistanceMatchBruteForce) {
+  // Obstacles placed so that their gap to a link is the warning distance give or take a few
+  // ulps, in every direction: distance() decides, and the boxes must not have decided first.
+  std::mt19937_64 rng(77);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (const double warning_distance : {1e-3, 0.25, 3.0}) {
+    std::vector<NamedEllipse> scene;
+    for (int i = 0; i < 70; ++i) {  // more than 64 links: the grid's cells, not its plain list
+      const double radius = 0.05 + 0.1 * unit(rng);
+      const Eigen::Vector2d centre(20.0 * unit(rng), 20.0 * unit(rng));
+      scene.push_back({"link" + std::to_string(i), EllipseRole::Link, {centre, radius, radius, 0}});
+      const double direction = 6.283185307179586 * unit(rng);
+      const double obstacle_radius = 0.02 + 0.3 * unit(rng);
+      const double gap = warning_distance * (1.0 + (unit(rng) - 0.5) * 4e-15);
+      const Eigen::Vector2d offset = (radius + obstacle_radius + gap) *
+                                     Eigen::Vector2d(std::cos(direction), std::sin(direction));
+      scene.push_back({"obstacle" + std::to_string(i),
+                       EllipseRole::Obstacle,
+                       {centre + offset, obstacle_radius, obstacle_radius, 0}});
+    }
+    SceneRules rules;
+    rules.self_collision = false;
+    rules.warning_distance = warning_distance;
+    const SceneCheckResult expected = bruteForce(scene, rules, {});
+    expectSame(checkScene(scene, rules), expected, "w = " + std::to_string(warning_distance));
+    // The gaps fall on either side of the warning distance.
+    std::size_t placed = 0;
+    for (const NearPair& pair : expected.warnings) {
+      placed += pair.name_a.substr(4) == pair.name_b.substr(8);
+    }
+    std::cout << "[          ] w = " << warning_distance << ": " << placed << " of 70\n";
+    EXPECT_GT(placed, 5u);
+    EXPECT_LT(placed, 65u);
+  }
+}
+
+TEST(SceneBroadphase, WarningIsFoundBeyondTheLinksBox) {
+  // The obstacle's box is 0.5 m from the link's box; only the warning distance joins them.
+  const std::vector<NamedEllipse> scene = {
+      {"arm", EllipseRole::Link, {Eigen::Vector2d(0, 0), 1.0, 0.2, 0.0}},
+      {"crate", EllipseRole::Obstacle, {Eigen::Vector2d(2.0, 0), 0.5, 0.5, 0.0}},
+      {"wall", EllipseRole::Obstacle, {Eigen::Vector2d(0, 5.0), 0.5, 0.5, 0.0}}};
+  SceneRules rules;
+  rules.warning_distance = 0.6;
+  const SceneCheckResult result = checkScene(scene, rules);
+  ASSERT_EQ(result.warnings.size(), 1u);
+  EXPECT_EQ(result.warnings[0].name_b, "crate");
+  EXPECT_NEAR(result.warnings[0].distance, 0.5, 1e-12);
+  EXPECT_EQ(result.pair_tests, 1u);  // the wall is too far for the boxes
+}
+
+TEST(SceneBroadphase, CountsEveryWantedPairWhenAllBoxesOverlap) {
+  // Everything at the origin: the broadphase can rule nothing out, so the exact test runs on
+  // every wanted pair: 3 x 4 link-obstacle, 3 link-link, 2 x 7 query; not query-query.
+  std::vector<NamedEllipse> scene;
+  for (int i = 0; i < 3; ++i) {
+    scene.push_back({"l" + std::to_string(i), EllipseRole::Link, {Eigen::Vector2d(0, 0), 1, 1, 0}});
+  }
+  for (int i = 0; i < 4; ++i) {
+    scene.push_back(
+        {"o" + std::to_string(i), EllipseRole::Obstacle, {Eigen::Vector2d(0.1 * i, 0), 1, 1, 0}});
+  }
+  for (int i = 0; i < 2; ++i) {
+    scene.push_back(
+        {"q" + std::to_string(i), EllipseRole::Query, {Eigen::Vector2d(0, 0), 1, 1, 0}});
+  }
+  SceneRules rules;
+  const SceneCheckResult result = checkScene(scene, rules);
+  EXPECT_EQ(result.pair_tests, 12u + 3u + 14u);
+  EXPECT_EQ(result.collisions.size(), 29u);
+  rules.self_collision = false;
+  EXPECT_EQ(checkScene(scene, rules).pair_tests, 12u + 14u);
+}
+
+TEST(SceneBroadphase, FiftyLinksAmongTenThousandObstaclesTestFewPairs) {
+  // A robot of 50 links within 1 m of its centre in a 50 m x 50 m warehouse.
+  std::mt19937_64 rng(4242);
+  const SceneShape shape{2, 50, 10000, 1.0, 25.0, 0.6};
+  const std::vector<NamedEllipse> scene = randomScene(rng, shape);
+  for (const double warning_distance : {0.0, 0.5}) {
+    SceneRules rules;
+    rules.warning_distance = warning_distance;
+    const SceneCheckResult expected = bruteForce(scene, rules, {});
+    const SceneCheckResult actual = checkScene(scene, rules);
+    const std::string label = "w = " + std::to_string(warning_distance);
+    expectSame(actual, expected, label);
+    EXPECT_GT(expected.collisions.size(), 20u) << label;
+    const std::size_t all_pairs = wantedPairs(scene, rules, {});
+    EXPECT_GT(all_pairs, 500000u);
+    // The ellipses near the robot and no more: under 1 % of the pairs an all-pairs check tests.
+    EXPECT_LT(actual.pair_tests, all_pairs / 100) << label;
+    EXPECT_GE(actual.pair_tests, actual.collisions.size() + actual.warnings.size()) << label;
+    std::cout << "[          ] " << label << ": " << actual.pair_tests << " exact pair tests of "
+              << all_pairs << " wanted pairs, " << actual.collisions.size() << " collisions, "
+              << actual.warnings.size() << " warnings\n";
+  }
+}
+
+}  // namespace
+}  // namespace ellipse_collision
