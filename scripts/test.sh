@@ -18,4 +18,33 @@ rm -rf "${results}"
 # not share the 2 cores. run_tests itself succeeds even when tests fail; the counter decides.
 ELLIPSE_COLLISION_JOBS=1 bash "${repo}/scripts/build.sh" run_tests
 
+# Runs one more check outside catkin and records it as a JUnit test case, so the counter below
+# counts it like any other test (and a failure fails the run).
+record_check() {
+  local name="$1"
+  shift
+  local log="${results}/ellipse_collision/${name}.log"
+  local status=0
+  mkdir -p "${results}/ellipse_collision"
+  "$@" > "${log}" 2>&1 || status=$?
+  tail -n 5 "${log}"
+  /usr/bin/python3 - "${results}/ellipse_collision/check-${name}.xml" "${name}" "${status}" "${log}" <<'PY'
+import sys
+from xml.sax.saxutils import escape
+path, name, status, log = sys.argv[1], sys.argv[2], int(sys.argv[3]), sys.argv[4]
+failure = ""
+if status != 0:
+    tail = open(log, errors="replace").read()[-4000:]
+    failure = '<failure message="exit status %d">%s</failure>' % (status, escape(tail))
+with open(path, "w") as out:
+    out.write('<?xml version="1.0" encoding="UTF-8"?>\n<testsuite name="%s" tests="1" failures="%d" '
+              'errors="0"><testcase classname="checks" name="%s">%s</testcase></testsuite>\n'
+              % (name, 1 if status else 0, name, failure))
+PY
+}
+
+# The benchmarks compile and run once, briefly, so that they never rot (the full run is
+# scripts/benchmark.sh).
+record_check benchmark_smoke bash "${repo}/scripts/benchmark.sh" --smoke
+
 /usr/bin/python3 "${repo}/scripts/count_test_results.py" "${results}"
