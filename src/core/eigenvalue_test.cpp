@@ -40,10 +40,13 @@ QFunction QFunction::fromPrincipal(const PrincipalShape& shape) {
   // Q(s) = d^T (I/(1-s) + M/s)^-1 d with M = [p q] [p q]^T; in M's eigenbasis it separates
   // into w_i s (1-s) / (lambda_i (1-s) + s).
   QFunction q;
+  q.offset_scale = std::max(shape.offset[0], shape.offset[1]);
+  const double inverse_scale = q.offset_scale > 0.0 ? 1.0 / q.offset_scale : 0.0;
   for (int i = 0; i < 2; ++i) {
     q.lambda[i] = shape.lambda[i];
     q.root_lambda[i] = shape.semi_axis[i];
-    q.weight[i] = shape.offset[i] * shape.offset[i];
+    const double normalised = shape.offset[i] * inverse_scale;
+    q.weight[i] = normalised * normalised;
   }
   return q;
 }
@@ -136,13 +139,19 @@ double contactScale(const PreparedEllipse& a, const PreparedEllipse& b) {
 namespace detail {
 
 double contactScalePrincipal(const PrincipalShape& shape) {
-  return std::sqrt(maximizeQ(QFunction::fromPrincipal(shape), kNoDecision).lower);
+  const QFunction q = QFunction::fromPrincipal(shape);
+  return q.offset_scale * std::sqrt(maximizeQ(q, kNoDecision).lower);
 }
 
 bool eigenvalueOverlapPrincipal(const PrincipalShape& shape) {
-  // max Q = t*^2, so the ellipses overlap iff max Q <= 1.
-  const auto maximum = maximizeQ(QFunction::fromPrincipal(shape), 1.0);
-  return !(maximum.lower > 1.0);
+  // max Q = t*^2, so the ellipses overlap iff max Q <= 1, i.e. iff the normalised maximum is at
+  // most 1 / offset_scale^2 (infinite for nearly coincident centres: overlap).
+  const QFunction q = QFunction::fromPrincipal(shape);
+  if (!(q.offset_scale > 0.0)) return true;  // coincident centres
+  const double inverse_scale = 1.0 / q.offset_scale;
+  const double threshold = inverse_scale * inverse_scale;
+  const auto maximum = maximizeQ(q, threshold);
+  return !(maximum.lower > threshold);
 }
 
 }  // namespace detail

@@ -10,7 +10,11 @@ namespace ellipse_collision::detail {
 /// the eigenbasis of the other ellipse's shape matrix, in the frame where the unit ellipse is the
 /// unit circle. max over s in (0, 1) of Q is t*^2.
 struct QFunction {
-  double weight[2];       ///< squared components of the centre offset along the eigenvectors
+  /// Squared components of the centre offset along the eigenvectors, divided by offset_scale^2:
+  /// Q is homogeneous of degree 2 in the offset, and normalising keeps tiny offsets from
+  /// underflowing to "coincident centres". The true Q is offset_scale^2 times this one.
+  double weight[2];
+  double offset_scale;    ///< the larger offset component (0 for coincident centres)
   double lambda[2];       ///< eigenvalues of [p q] [p q]^T (see RelativeShape), > 0
   double root_lambda[2];  ///< sqrt(lambda), for the starting point
 

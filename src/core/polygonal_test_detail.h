@@ -59,6 +59,20 @@ inline PolygonalMargins polygonalMargins(const RelativeShape& shape) {
   return {(1.0 - margin) * (1.0 - margin), (1.0 + margin) * (1.0 + margin)};
 }
 
+/// Whether the picture can be judged with polygons in double precision: the rounding margin must
+/// stay small against the unit circle, and the ellipse's thickness far above the rounding of its
+/// coordinates (a needle thinner than that has triangles whose orientation tests are noise).
+/// Otherwise the answer is Unknown and the eigenvalue test decides.
+inline bool polygonalResolvable(const RelativeShape& shape) {
+  constexpr double kMaxScale = 1e7;          // margin <= 1e-3 of the unit circle
+  constexpr double kMinThickness = 1e-6;     // minor semi-axis / scale, >> the margin
+  const double extent = std::max(std::abs(shape.p_x), std::abs(shape.p_y)) +
+                        std::max(std::abs(shape.q_x), std::abs(shape.q_y));
+  const double scale = 1.0 + std::max(std::abs(shape.center_x), std::abs(shape.center_y)) + extent;
+  // det / extent bounds the minor semi-axis from below (up to a factor 2).
+  return scale <= kMaxScale && shape.determinant >= kMinThickness * scale * extent;
+}
+
 /// Level 0 of the polygonal test, on the inscribed parallelogram (+-p, +-q) and the
 /// circumscribed one (+-p +-q), without branches as in segmentWithin(). It decides most pairs
 /// that the circle tests leave, and inline it stays in registers.
@@ -99,6 +113,7 @@ PolygonalResult polygonalRefinement(const RelativeShape& shape, const PolygonalM
 
 /// The polygonal test against the unit circle at the origin for `shape` (see relativeShape()).
 inline PolygonalResult polygonalTestRelative(const RelativeShape& shape, int max_iterations) {
+  if (!polygonalResolvable(shape)) return PolygonalResult::Unknown;
   const PolygonalMargins margins = polygonalMargins(shape);
   const PolygonalResult level_zero = polygonalLevelZero(shape, margins);
   if (level_zero != PolygonalResult::Unknown || max_iterations <= 0) return level_zero;

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "ellipse_collision/eigenvalue_test.h"
+#include "ellipse_collision/overlap.h"
 
 namespace ellipse_collision {
 namespace {
@@ -192,6 +193,21 @@ TEST(EigenvalueOverlap, AgreesWithContactScaleAwayFromTangency) {
   }
   EXPECT_GT(overlapping, 50);  // both answers must be exercised
   EXPECT_LT(overlapping, 950);
+}
+
+
+// Fuzzer finding: an offset so small that its squared components underflow is still an offset.
+TEST(ContactScale, TinyCentreOffsetDoesNotUnderflowToCoincidentCentres) {
+  const Ellipse a{{0.0, 0.0}, 1e-9, 1e9, 0.0};
+  const Ellipse b{{-2.237502219360062e-154, 7.9989294464120617e-315}, 1e9, 1.030517578125, 0.5};
+  const double t = contactScale(a, b);
+  EXPECT_GT(t, 0.0);
+  EXPECT_TRUE(overlap(a, b));
+  EXPECT_TRUE(eigenvalueOverlap(a, b));
+  // t* is homogeneous in the offset: doubling it doubles t*, exactly as far as rounding allows.
+  Ellipse b2 = b;
+  b2.center *= 2.0;
+  EXPECT_NEAR(contactScale(a, b2) / t, 2.0, 1e-12);
 }
 
 }  // namespace

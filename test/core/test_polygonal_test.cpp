@@ -196,6 +196,29 @@ TEST(PolygonalTest, ZeroIterationsStillDecidesObviousPairs) {
   EXPECT_EQ(polygonalTest(a, makeEllipse(100, -50, 0.5, 3, -0.2), 0), PolygonalResult::Separate);
 }
 
+
+// Fuzzer findings: pictures too large or needles too thin for polygons in double precision must
+// be left to the eigenvalue test, never decided wrongly.
+TEST(PolygonalTest, UnresolvablePicturesAreNeverDecidedWrongly) {
+  const std::pair<Ellipse, Ellipse> pairs[] = {
+      // 200 m needles, 2 nm thick, 90 m apart: the margin of the picture exceeded the unit circle.
+      {Ellipse{{0.0, 0.0}, 100.0, 1e-9, 0.0}, Ellipse{{0.0, 90.0}, 100.0, 1e-9, 1.0}},
+      // A circle against a 1e9 m needle: from 9 iterations on it was certified separate.
+      {Ellipse{{1e9, 3.0000000000000004}, 3.0000000000000004, 2.9999999999999987, 1.0},
+       Ellipse{{20.371089100837708, 6.111326733559963e-08}, 1e9, 1e-9, -2.4983353906949635e-127}},
+  };
+  for (const auto& [a, b] : pairs) {
+    const bool truth = oracleOverlap(a, b);
+    for (int iterations : {0, 2, 6, 9, 12, 20, 30}) {
+      const PolygonalResult result = polygonalTest(a, b, iterations);
+      if (result != PolygonalResult::Unknown) {
+        EXPECT_EQ(result == PolygonalResult::Overlap, truth)
+            << describePair(a, b) << " at " << iterations << " iterations";
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace test
 }  // namespace ellipse_collision
