@@ -43,6 +43,9 @@ DEBIAN_PACKAGES=(
   xauth
   imagemagick
   libx11-dev
+  # fuzzing: clang with libFuzzer and the sanitizer runtimes
+  clang
+  libclang-rt-14-dev
   # libraries
   libeigen3-dev
   libgtest-dev
