@@ -4,6 +4,7 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <utility>
 
 namespace ellipse_collision {
 namespace {
@@ -25,6 +26,19 @@ std::string describe(double value) {
 
 }  // namespace
 
+namespace {
+
+// A tilt can thin a valid ellipse below kMinRadius, a transform move it beyond kMaxCoordinate.
+ProjectionResult checkedProjection(ProjectionResult result, const std::string& name) {
+  const std::string unusable = invalidReason(result.ellipse);
+  if (!unusable.empty()) {
+    result.error = "ellipse '" + name + "': its projection is out of range (" + unusable + ")";
+  }
+  return result;
+}
+
+}  // namespace
+
 ProjectionResult projectToPlane(const Ellipse& in_frame, const Eigen::Isometry3d& fixed_from_frame,
                                 const std::string& name) {
   ProjectionResult result;
@@ -39,6 +53,18 @@ ProjectionResult projectToPlane(const Ellipse& in_frame, const Eigen::Isometry3d
   }
 
   const Eigen::Matrix2d plane_block = fixed_from_frame.linear().topLeftCorner<2, 2>();
+  const Eigen::Matrix3d& rotation = fixed_from_frame.linear();
+  if (rotation(2, 0) == 0.0 && rotation(2, 1) == 0.0 && rotation(0, 2) == 0.0 &&
+      rotation(1, 2) == 0.0 && rotation(2, 2) > 0.0) {
+    // A rotation about z only (every planar robot's frames): the projection keeps the radii
+    // exactly and turns the ellipse by the yaw, so no rounding can push a radius out of range.
+    result.ellipse.center =
+        fixed_from_frame.translation().head<2>() + plane_block * in_frame.center;
+    result.ellipse.radius_x = in_frame.radius_x;
+    result.ellipse.radius_y = in_frame.radius_y;
+    result.ellipse.angle = in_frame.angle + std::atan2(rotation(1, 0), rotation(0, 0));
+    return checkedProjection(std::move(result), name);
+  }
   const double c = std::cos(in_frame.angle);
   const double s = std::sin(in_frame.angle);
   Eigen::Matrix2d shape;  // R(angle) diag(radius_x, radius_y)
@@ -81,12 +107,7 @@ ProjectionResult projectToPlane(const Ellipse& in_frame, const Eigen::Isometry3d
   result.ellipse.radius_x = major;
   result.ellipse.radius_y = minor;
   result.ellipse.angle = angle;
-  // A tilt can thin a valid ellipse below kMinRadius, a transform move it beyond kMaxCoordinate.
-  const std::string unusable = invalidReason(result.ellipse);
-  if (!unusable.empty()) {
-    result.error = "ellipse '" + name + "': its projection is out of range (" + unusable + ")";
-  }
-  return result;
+  return checkedProjection(std::move(result), name);
 }
 
 }  // namespace ellipse_collision

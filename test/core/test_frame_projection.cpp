@@ -272,5 +272,26 @@ TEST(FrameProjection, NonFiniteTransformIsAnError) {
   EXPECT_NE(out.error.find("'lost'"), std::string::npos) << out.error;
 }
 
+
+// Fuzzer finding: planar frames must not round the radii, or an ellipse at the edge of the valid
+// range would be refused after a mere yaw.
+TEST(FrameProjection, RotationAboutZKeepsRadiiExactlyAtTheRangeEdges) {
+  for (double yaw : {0.0, 0.3, -2.0, 3.1}) {
+    Eigen::Isometry3d transform = Eigen::Isometry3d::Identity();
+    transform.linear() = Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+    transform.translation() = Eigen::Vector3d(1.0, -2.0, 0.5);
+    for (double angle : {0.0, 0.7, 1.9}) {
+      const Ellipse e{{0.25, 0.5}, kMinRadius, kMaxRadius, angle};
+      const ProjectionResult placed = projectToPlane(e, transform, "edge");
+      ASSERT_TRUE(placed.ok()) << placed.error;
+      EXPECT_EQ(placed.ellipse.radius_x, kMinRadius);
+      EXPECT_EQ(placed.ellipse.radius_y, kMaxRadius);
+      EXPECT_NEAR(std::remainder(placed.ellipse.angle - angle - yaw, 2.0 * M_PI), 0.0, 1e-15);
+      EXPECT_TRUE(placed.ellipse.center.isApprox(
+          (transform * Eigen::Vector3d(0.25, 0.5, 0.0)).head<2>(), 1e-15));
+    }
+  }
+}
+
 }  // namespace
 }  // namespace ellipse_collision
