@@ -200,7 +200,7 @@ void CollisionNode::publishMarkers() {
 std::string CollisionNode::validateAttached(const std::vector<EllipseSpec>& specs,
                                             const std::string& field) {
   for (std::size_t i = 0; i < specs.size(); ++i) {
-    if (const auto invalid = findInvalidField(specs[i])) {
+    if (const auto invalid = findInvalidPaddedField(specs[i], config_.padding_m)) {
       return describeRequestError(entry(field, i), *invalid);
     }
   }
@@ -246,7 +246,7 @@ bool CollisionNode::onCheckCollisions(CheckCollisions::Request& request,
   std::set<std::string> query_names;
   for (std::size_t i = 0; i < request.query.size(); ++i) {
     query.push_back(fromMsg(request.query[i]));
-    if (const auto invalid = findInvalidField(query.back())) {
+    if (const auto invalid = findInvalidPaddedField(query.back(), config_.padding_m)) {
       response.message = describeRequestError(entry("query", i), *invalid);
       return true;
     }

@@ -2,6 +2,31 @@
 
 namespace ellipse_collision {
 
+std::optional<FieldError> findInvalidPaddedField(const EllipseSpec& spec, double global_padding,
+                                                 const std::string& frame_key) {
+  if (auto invalid = findInvalidField(spec, frame_key)) return invalid;
+  // The same sums as paddedEllipse(), so that what passes here passes the core's invalidReason().
+  const Ellipse padded = paddedEllipse(spec, global_padding);
+  const struct {
+    const char* key;
+    double value;
+    double padded;
+  } radii[] = {{"radius_x", spec.radius_x, padded.radius_x},
+               {"radius_y", spec.radius_y, padded.radius_y}};
+  for (const auto& radius : radii) {
+    if (!(radius.padded >= kMinRadius && radius.padded <= kMaxRadius)) {
+      return FieldError{radius.key,
+                        "a number whose padded radius (" + std::string(radius.key) + " + padding " +
+                            formatNumber(spec.padding) + " + global padding " +
+                            formatNumber(global_padding) + " = " + formatNumber(radius.padded) +
+                            ") lies within [" + formatNumber(kMinRadius) + ", " +
+                            formatNumber(kMaxRadius) + "]",
+                        formatNumber(radius.value)};
+    }
+  }
+  return std::nullopt;
+}
+
 EllipseSpec fromMsg(const EllipseMsg& msg) {
   EllipseSpec spec;
   spec.name = msg.name;

@@ -6,6 +6,8 @@
 #include <map>
 #include <set>
 
+#include "ellipse_collision/ros/conversions.h"
+
 namespace ellipse_collision {
 namespace {
 
@@ -73,6 +75,21 @@ double readNonNegative(const XmlRpcValue& value, const std::string& where, const
   return number;
 }
 
+/// A finite number >= 0 within [min, max] (or exactly 0 when zero_allowed, for "off"). Refused,
+/// never clamped.
+double readInRange(const XmlRpcValue& value, const std::string& where, const std::string& key,
+                   double min, double max, bool zero_allowed = false) {
+  const double number = readNonNegative(value, where, key);
+  if (zero_allowed && number == 0.0) return number;
+  if (!(number >= min && number <= max)) {
+    fail(where, key,
+         std::string(zero_allowed ? "0 or " : "") + "a number within [" + formatNumber(min) + ", " +
+             formatNumber(max) + "]",
+         formatNumber(number));
+  }
+  return number;
+}
+
 std::string readFrame(const XmlRpcValue& value, const std::string& where, const std::string& key) {
   const std::string frame = readString(value, where, key);
   if (frame.empty()) fail(where, key, "a non-empty tf frame id", "''");
@@ -82,7 +99,7 @@ std::string readFrame(const XmlRpcValue& value, const std::string& where, const 
   return frame;
 }
 
-EllipseSpec readEllipse(const XmlRpcValue& entry, const std::string& where) {
+EllipseSpec readEllipse(const XmlRpcValue& entry, const std::string& where, double global_padding) {
   if (entry.getType() != XmlRpcValue::TypeStruct) {
     throw ConfigError(where + ": expected a dict with keys " + std::string(kEllipseKeys) +
                       ", got " + describeValue(entry));
@@ -116,19 +133,20 @@ EllipseSpec readEllipse(const XmlRpcValue& entry, const std::string& where) {
   spec.radius_x = readNumber(entry["radius_x"], label, "radius_x");
   spec.radius_y = readNumber(entry["radius_y"], label, "radius_y");
   if (entry.hasMember("padding")) spec.padding = readNumber(entry["padding"], label, "padding");
-  if (const auto invalid = findInvalidField(spec, "frame")) {
+  if (const auto invalid = findInvalidPaddedField(spec, global_padding, "frame")) {
     fail(label, invalid->key, invalid->expected, invalid->actual);
   }
   return spec;
 }
 
-std::vector<EllipseSpec> readEllipseList(const XmlRpcValue& list, const std::string& key) {
+std::vector<EllipseSpec> readEllipseList(const XmlRpcValue& list, const std::string& key,
+                                         double global_padding) {
   if (list.getType() != XmlRpcValue::TypeArray) {
     fail("parameter ~" + key, key, "a list of ellipses", describeValue(list));
   }
   std::vector<EllipseSpec> specs;
   for (int i = 0; i < list.size(); ++i) {
-    specs.push_back(readEllipse(list[i], key + "[" + std::to_string(i) + "]"));
+    specs.push_back(readEllipse(list[i], key + "[" + std::to_string(i) + "]", global_padding));
   }
   return specs;
 }
@@ -200,13 +218,18 @@ NodeConfig parseNodeConfig(const XmlRpcValue& params) {
   if (has("fixed_frame")) {
     config.fixed_frame = readFrame(root["fixed_frame"], "parameter ~fixed_frame", "fixed_frame");
   }
-  if (has("rate")) config.rate_hz = readNonNegative(root["rate"], "parameter ~rate", "rate");
+  if (has("rate")) {
+    config.rate_hz =
+        readInRange(root["rate"], "parameter ~rate", "rate", kMinRateHz, kMaxRateHz, true);
+  }
   if (has("tf_timeout")) {
     config.tf_timeout_s =
-        readNonNegative(root["tf_timeout"], "parameter ~tf_timeout", "tf_timeout");
+        readInRange(root["tf_timeout"], "parameter ~tf_timeout", "tf_timeout", 0.0, kMaxTfTimeoutS);
   }
-  if (has("padding"))
-    config.padding_m = readNonNegative(root["padding"], "parameter ~padding", "padding");
+  if (has("padding")) {
+    config.padding_m =
+        readInRange(root["padding"], "parameter ~padding", "padding", 0.0, kMaxRadius);
+  }
   if (has("self_collision")) {
     config.self_collision =
         readBool(root["self_collision"], "parameter ~self_collision", "self_collision");
@@ -220,8 +243,10 @@ NodeConfig parseNodeConfig(const XmlRpcValue& params) {
         "parameter ~links, key 'links': expected a list of ellipses (required; may be []), got "
         "nothing (is the YAML loaded into the node's private namespace?)");
   }
-  config.links = readEllipseList(root["links"], "links");
-  if (has("obstacles")) config.obstacles = readEllipseList(root["obstacles"], "obstacles");
+  config.links = readEllipseList(root["links"], "links", config.padding_m);
+  if (has("obstacles")) {
+    config.obstacles = readEllipseList(root["obstacles"], "obstacles", config.padding_m);
+  }
 
   std::map<std::string, std::string> defined;  // name -> entry that defines it
   for (const char* list : {"links", "obstacles"}) {

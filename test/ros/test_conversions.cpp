@@ -187,6 +187,64 @@ TEST(EllipseSpec, RequestErrorNamesEntryFieldValueAndExpectation) {
             "obstacles[2].radius_x = -1: expected a finite number > 0");
 }
 
+TEST(EllipseSpec, PaddedRadiiMustStayWithinTheCoreRange) {
+  // Each field within range, but radius + entry padding + global padding beyond kMaxRadius.
+  EllipseSpec spec = sampleSpec();
+  EXPECT_FALSE(findInvalidPaddedField(spec, 0.02));
+  spec.radius_x = kMaxRadius;
+  EXPECT_FALSE(findInvalidField(spec));  // alone it is fine; the entry padding 0.01 is not
+  auto invalid = findInvalidPaddedField(spec, 0.0);
+  ASSERT_TRUE(invalid);
+  EXPECT_EQ(invalid->key, "radius_x");
+  EXPECT_EQ(invalid->actual, "1e+09");
+  EXPECT_EQ(describeRequestError("query[0]", *invalid),
+            "query[0].radius_x = 1e+09: expected a number whose padded radius (radius_x + padding "
+            "0.01 + global padding 0 = 1000000000.01) lies within [1e-09, 1e+09]");
+
+  spec = sampleSpec();
+  spec.padding = 0.0;
+  spec.radius_y = kMaxRadius;
+  EXPECT_FALSE(findInvalidPaddedField(spec, 0.0));  // exactly at the limit
+  invalid = findInvalidPaddedField(spec, 0.02);     // the global padding pushes it over
+  ASSERT_TRUE(invalid);
+  EXPECT_EQ(invalid->key, "radius_y");
+  EXPECT_EQ(
+      describeRequestError("obstacles[3]", *invalid).rfind("obstacles[3].radius_y = 1e+09: ", 0),
+      0u);
+
+  spec = sampleSpec();
+  spec.radius_x = 6e8;
+  spec.padding = 5e8;
+  invalid = findInvalidPaddedField(spec, 0.0, "frame");
+  ASSERT_TRUE(invalid);
+  EXPECT_EQ(invalid->key, "radius_x");
+  EXPECT_EQ(invalid->actual, "6e+08");
+}
+
+TEST(EllipseSpec, PaddedCheckReportsPlainFieldErrorsFirst) {
+  EllipseSpec spec = sampleSpec();
+  spec.frame_id = "";
+  EXPECT_EQ(findInvalidPaddedField(spec, 0.0, "frame")->key, "frame");
+  spec = sampleSpec();
+  spec.padding = 2e9;
+  EXPECT_EQ(findInvalidPaddedField(spec, 0.0)->key, "padding");
+}
+
+TEST(EllipseSpec, AcceptedPaddedSpecIsValidForTheCore) {
+  for (double radius : {kMinRadius, 1.0, kMaxRadius - 1.0, kMaxRadius}) {
+    for (double padding : {0.0, 0.5, 1.0}) {
+      for (double global : {0.0, 0.02, 0.5}) {
+        EllipseSpec spec = sampleSpec();
+        spec.radius_x = radius;
+        spec.padding = padding;
+        const bool accepted = !findInvalidPaddedField(spec, global);
+        EXPECT_EQ(accepted, invalidReason(paddedEllipse(spec, global)).empty())
+            << radius << " + " << padding << " + " << global;
+      }
+    }
+  }
+}
+
 TEST(EllipseSpec, NumbersAreFormattedShortestAndReadBackExactly) {
   EXPECT_EQ(formatNumber(0.1), "0.1");
   EXPECT_EQ(formatNumber(-2), "-2");

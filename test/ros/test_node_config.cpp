@@ -258,5 +258,80 @@ TEST(NodeConfig, EmptyOrSlashedFrameOfAnEntryStopsTheNode) {
   EXPECT_CONTAINS(errorOf(p), "links[0] (name ''), key 'name'");
 }
 
+TEST(NodeConfig, RateIsZeroOrWithinItsDocumentedRange) {
+  XmlRpcValue p = validParams();
+  for (double ok : {0.0, kMinRateHz, kMaxRateHz, 1e-3, 1e3}) {
+    p["rate"] = ok;
+    EXPECT_EQ(parseNodeConfig(p).rate_hz, ok);
+  }
+  // 1e-12 Hz: a period of 1e12 s, beyond ros::Duration; 1e12 Hz: a period that rounds to 0.
+  const std::pair<double, const char*> bad[] = {
+      {1e-12, "got 1e-12"}, {9.99e-4, "got 0.000999"}, {1000.5, "got 1000.5"}, {1e12, "got 1e+12"}};
+  for (const auto& [value, actual] : bad) {
+    p["rate"] = value;
+    EXPECT_EQ(errorOf(p), std::string("parameter ~rate, key 'rate': expected 0 or a number within "
+                                      "[0.001, 1000], ") +
+                              actual);
+  }
+  p["rate"] = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(errorOf(p), "parameter ~rate, key 'rate': expected a finite number >= 0, got inf");
+}
+
+TEST(NodeConfig, TfTimeoutIsWithinItsDocumentedRange) {
+  XmlRpcValue p = validParams();
+  for (double ok : {0.0, 1e-9, kMaxTfTimeoutS}) {
+    p["tf_timeout"] = ok;
+    EXPECT_EQ(parseNodeConfig(p).tf_timeout_s, ok);
+  }
+  p["tf_timeout"] = 3600.5;
+  EXPECT_EQ(errorOf(p),
+            "parameter ~tf_timeout, key 'tf_timeout': expected a number within [0, 3600], got "
+            "3600.5");
+  p["tf_timeout"] = 1e12;  // every service call would fail building ros::Duration
+  EXPECT_EQ(errorOf(p),
+            "parameter ~tf_timeout, key 'tf_timeout': expected a number within [0, 3600], got "
+            "1e+12");
+}
+
+TEST(NodeConfig, GlobalPaddingIsWithinTheCoreRadiusRange) {
+  XmlRpcValue p;
+  p["links"].setSize(0);  // no entries: the padding's own range is checked
+  p["padding"] = kMaxRadius;
+  EXPECT_EQ(parseNodeConfig(p).padding_m, kMaxRadius);
+  p["padding"] = 1.5e9;
+  EXPECT_EQ(errorOf(p),
+            "parameter ~padding, key 'padding': expected a number within [0, 1e+09], got 1.5e+09");
+  p = validParams();
+  p["padding"] = 1e12;
+  EXPECT_CONTAINS(errorOf(p), "parameter ~padding, key 'padding'");
+}
+
+TEST(NodeConfig, PaddedRadiiBeyondTheCoreRangeStopTheNode) {
+  // radius + entry padding + global padding must stay within [kMinRadius, kMaxRadius].
+  XmlRpcValue p = validParams();  // global padding 0.01
+  p["links"][0]["radius_x"] = kMaxRadius;
+  std::string error = errorOf(p);
+  EXPECT_CONTAINS(error,
+                  "links[0] (name 'arm'), key 'radius_x': expected a number whose padded "
+                  "radius (radius_x + padding 0 + global padding 0.01 = ");
+  EXPECT_CONTAINS(error, ") lies within [1e-09, 1e+09], got 1e+09");
+
+  p = validParams();
+  p["obstacles"][0]["radius_y"] = 6e8;
+  p["obstacles"][0]["padding"] = 5e8;  // each within range, the sum is not
+  EXPECT_CONTAINS(errorOf(p), "obstacles[0] (name 'table'), key 'radius_y'");
+  EXPECT_CONTAINS(errorOf(p), "got 6e+08");
+
+  p = validParams();
+  p["padding"] = 6e8;
+  p["links"][1]["radius_x"] = 5e8;  // the global padding pushes it over
+  EXPECT_CONTAINS(errorOf(p), "links[1] (name 'hand'), key 'radius_x'");
+
+  p = validParams();
+  p["padding"] = 0.0;
+  p["links"][0]["radius_x"] = kMaxRadius;  // exactly at the limit, unpadded: accepted
+  EXPECT_EQ(parseNodeConfig(p).links[0].radius_x, kMaxRadius);
+}
+
 }  // namespace
 }  // namespace ellipse_collision

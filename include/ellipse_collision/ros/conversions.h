@@ -1,5 +1,6 @@
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -9,7 +10,14 @@
 
 namespace ellipse_collision {
 
-/// Field by field; no validation (see findInvalidField()).
+/// findInvalidField(), then the radii the core is given: radius_x and radius_y grown by
+/// spec.padding + global_padding (as paddedEllipse() does) must lie within [kMinRadius,
+/// kMaxRadius]. A violation names the radius key, with its own value as `actual`. The node checks
+/// every configured entry and every request or topic ellipse with this before using it.
+std::optional<FieldError> findInvalidPaddedField(const EllipseSpec& spec, double global_padding,
+                                                 const std::string& frame_key = "frame_id");
+
+/// Field by field; no validation (see findInvalidPaddedField()).
 EllipseSpec fromMsg(const EllipseMsg& msg);
 EllipseMsg toMsg(const EllipseSpec& spec);
 

@@ -18,13 +18,20 @@ class ConfigError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// Accepted ranges of the scalar parameters (documented in config/ellipse_collision.yaml). They
+/// keep the timer period 1 / rate and the tf timeout well inside ros::Duration (+-2^31 s, 1 ns
+/// resolution), and the global padding within the core's radius range.
+constexpr double kMinRateHz = 1e-3;        ///< rate is 0 or within [kMinRateHz, kMaxRateHz]
+constexpr double kMaxRateHz = 1e3;         ///< [Hz]
+constexpr double kMaxTfTimeoutS = 3600.0;  ///< tf_timeout within [0, kMaxTfTimeoutS] [s]
+
 /// The node's private parameters (see config/ellipse_collision.yaml for the documentation).
 struct NodeConfig {
   std::string fixed_frame{"base_link"};
-  double rate_hz{10.0};            ///< periodic checks [Hz]; 0 = only on service calls
-  double tf_timeout_s{0.1};        ///< how long a service call waits for a transform [s]
-  double padding_m{0.0};           ///< added to both radii of every ellipse [m]
-  bool self_collision{true};       ///< also check link against link
+  double rate_hz{10.0};       ///< periodic checks [Hz]; 0 = only on service calls, else [1e-3, 1e3]
+  double tf_timeout_s{0.1};   ///< how long a service call waits for a transform [s], [0, 3600]
+  double padding_m{0.0};      ///< added to both radii of every ellipse [m], [0, kMaxRadius]
+  bool self_collision{true};  ///< also check link against link
   double warning_distance_m{0.0};  ///< separated pairs closer than this are warnings [m]; 0 = off
   std::vector<EllipseSpec> links;
   std::vector<EllipseSpec> obstacles;
@@ -34,7 +41,8 @@ struct NodeConfig {
 /// Parses and validates the node's private namespace given as one XmlRpc struct. `links` is
 /// required (an empty list is fine), every other key optional; unknown keys are errors, so that a
 /// typo cannot silently fall back to a default. Integers are accepted where a double is expected.
-/// Throws ConfigError.
+/// Values out of their documented range are refused, never clamped; every ellipse must pass
+/// findInvalidPaddedField() with the global padding. Throws ConfigError.
 NodeConfig parseNodeConfig(const XmlRpc::XmlRpcValue& params);
 
 /// Reads the whole private namespace of `private_nh` from the parameter server and parses it.
