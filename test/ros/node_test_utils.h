@@ -4,8 +4,11 @@
 // filling while a test waits or calls a service.
 #include <gtest/gtest.h>
 #include <ros/ros.h>
+#include <sys/wait.h>
 
+#include <array>
 #include <chrono>
+#include <cstdio>
 #include <functional>
 #include <mutex>
 #include <string>
@@ -65,6 +68,81 @@ inline bool mentions(const std::vector<CollisionPair>& pairs, const std::string&
     if (pair.name_a == name || pair.name_b == name) return true;
   }
   return false;
+}
+
+/// Calls the node's three services; every call expects the node to still serve it. A fixture
+/// derives from it and connects in SetUp, once the services are up.
+class NodeServiceClient {
+ public:
+  void connectServices(ros::NodeHandle& nh) {
+    check_ = nh.serviceClient<CheckCollisions>(nodeTopic("check_collisions"));
+    add_ = nh.serviceClient<AddObstacles>(nodeTopic("add_obstacles"));
+    remove_ = nh.serviceClient<RemoveObstacles>(nodeTopic("remove_obstacles"));
+  }
+
+  CheckCollisions::Response check(const std::vector<std::string>& names = {},
+                                  const std::vector<EllipseMsg>& query = {},
+                                  const ros::Time& stamp = ros::Time(0),
+                                  const std::string& min_distance_of = "") {
+    CheckCollisions srv;
+    srv.request.names = names;
+    srv.request.query = query;
+    srv.request.stamp = stamp;
+    srv.request.min_distance_of = min_distance_of;
+    EXPECT_TRUE(check_.call(srv)) << "the node stopped serving ~check_collisions";
+    return srv.response;
+  }
+
+  AddObstacles::Response add(const std::vector<EllipseMsg>& obstacles) {
+    AddObstacles srv;
+    srv.request.obstacles = obstacles;
+    EXPECT_TRUE(add_.call(srv)) << "the node stopped serving ~add_obstacles";
+    return srv.response;
+  }
+
+  RemoveObstacles::Response remove(const std::vector<std::string>& names) {
+    RemoveObstacles srv;
+    srv.request.names = names;
+    EXPECT_TRUE(remove_.call(srv)) << "the node stopped serving ~remove_obstacles";
+    return srv.response;
+  }
+
+  /// Whether the node stores an ellipse called `name` (a name filter on it is accepted).
+  bool isStored(const std::string& name) { return check({name}).success; }
+
+ private:
+  ros::ServiceClient check_;
+  ros::ServiceClient add_;
+  ros::ServiceClient remove_;
+};
+
+/// Publishes `ellipses` in `frame`, stamped now, on the node's ~obstacles topic (`publisher`).
+inline void publishObstacles(const ros::Publisher& publisher, const std::string& frame,
+                             const std::vector<EllipseMsg>& ellipses) {
+  EllipseArray msg;
+  msg.header.frame_id = frame;
+  msg.header.stamp = ros::Time::now();
+  msg.ellipses = ellipses;
+  publisher.publish(msg);
+}
+
+struct CommandRun {
+  int exit_status{-1};  ///< the command's exit status; 124 when `timeout` stopped it
+  std::string output;   ///< stdout and stderr
+};
+
+/// Runs `command` through the shell for at most `seconds` (SIGKILL 5 s later if it ignores
+/// SIGTERM), capturing its output.
+inline CommandRun runCommand(const std::string& command, int seconds) {
+  CommandRun run;
+  const std::string line = "timeout -k 5 " + std::to_string(seconds) + " " + command + " 2>&1";
+  FILE* pipe = popen(line.c_str(), "r");
+  if (!pipe) return run;
+  std::array<char, 4096> buffer;
+  while (fgets(buffer.data(), buffer.size(), pipe)) run.output += buffer.data();
+  const int status = pclose(pipe);
+  run.exit_status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return run;
 }
 
 /// Every message received on a topic since construction.

@@ -2,10 +2,6 @@
 // status 1 and a message naming the entry and the key. Each case spoils a copy of the shared scene
 // (test_scene.yaml, loaded under /good_config by bad_config.test) and runs the node under its own
 // name, so that its private namespace holds exactly that copy.
-#include <sys/wait.h>
-
-#include <array>
-#include <cstdio>
 #include <functional>
 #include <limits>
 
@@ -20,24 +16,9 @@ using XmlRpc::XmlRpcValue;
 #define EXPECT_CONTAINS(text, part) \
   EXPECT_NE(std::string(text).find(part), std::string::npos) << "in: " << (text)
 
-struct NodeRun {
-  int exit_status{-1};  ///< 124 when `timeout` had to stop a node that kept running
-  std::string output;
-};
-
 /// Runs the node as /<name> for at most `seconds`, with stdout and stderr captured.
-NodeRun runNode(const std::string& name, int seconds) {
-  const std::string command = "timeout " + std::to_string(seconds) + " " +
-                              std::string(ELLIPSE_COLLISION_NODE_BIN) + " __name:=" + name +
-                              " 2>&1";
-  NodeRun run;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return run;
-  std::array<char, 4096> buffer;
-  while (fgets(buffer.data(), buffer.size(), pipe)) run.output += buffer.data();
-  const int status = pclose(pipe);
-  run.exit_status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return run;
+CommandRun runNode(const std::string& name, int seconds) {
+  return runCommand(std::string(ELLIPSE_COLLISION_NODE_BIN) + " __name:=" + name, seconds);
 }
 
 XmlRpcValue goodConfig() {
@@ -47,8 +28,8 @@ XmlRpcValue goodConfig() {
 }
 
 /// Sets a spoiled copy of the good configuration as /<name> and runs the node with it.
-NodeRun runWith(const std::string& name, const std::function<void(XmlRpcValue&)>& spoil,
-                int seconds = 30) {
+CommandRun runWith(const std::string& name, const std::function<void(XmlRpcValue&)>& spoil,
+                   int seconds = 30) {
   XmlRpcValue config = goodConfig();
   spoil(config);
   ros::param::del("/" + name);
@@ -67,7 +48,7 @@ XmlRpcValue& entryNamed(XmlRpcValue& list, const std::string& name) {
 
 TEST(BadConfig, GoodConfigurationKeepsTheNodeRunning) {
   // The control case: the harness does tell a running node from one that stopped.
-  const NodeRun run = runWith(
+  const CommandRun run = runWith(
       "good_node", [](XmlRpcValue&) {}, 4);
   EXPECT_EQ(run.exit_status, 124) << run.output;
 }
@@ -76,13 +57,13 @@ TEST(BadConfig, MissingLinksStopsTheNode) {
   XmlRpcValue empty;
   empty["rate"] = 1.0;
   ros::param::set("/bad_missing_links", empty);
-  const NodeRun run = runNode("bad_missing_links", 30);
+  const CommandRun run = runNode("bad_missing_links", 30);
   EXPECT_EQ(run.exit_status, 1) << run.output;
   EXPECT_CONTAINS(run.output, "parameter ~links");
 }
 
 TEST(BadConfig, MissingKeyNamesEntryAndKey) {
-  const NodeRun run = runWith("bad_missing_key", [](XmlRpcValue& c) {
+  const CommandRun run = runWith("bad_missing_key", [](XmlRpcValue& c) {
     XmlRpcValue& arm = entryNamed(c["links"], "arm");
     XmlRpcValue without;
     for (auto it = arm.begin(); it != arm.end(); ++it) {
@@ -95,7 +76,7 @@ TEST(BadConfig, MissingKeyNamesEntryAndKey) {
 }
 
 TEST(BadConfig, WrongTypeNamesEntryKeyExpectedAndActual) {
-  const NodeRun run =
+  const CommandRun run =
       runWith("bad_type", [](XmlRpcValue& c) { entryNamed(c["obstacles"], "crate")["x"] = "two"; });
   EXPECT_EQ(run.exit_status, 1) << run.output;
   EXPECT_CONTAINS(run.output,
@@ -103,7 +84,7 @@ TEST(BadConfig, WrongTypeNamesEntryKeyExpectedAndActual) {
 }
 
 TEST(BadConfig, NonPositiveRadiusStopsTheNode) {
-  const NodeRun run = runWith(
+  const CommandRun run = runWith(
       "bad_radius", [](XmlRpcValue& c) { entryNamed(c["links"], "body")["radius_x"] = -0.5; });
   EXPECT_EQ(run.exit_status, 1) << run.output;
   EXPECT_CONTAINS(run.output,
@@ -111,7 +92,7 @@ TEST(BadConfig, NonPositiveRadiusStopsTheNode) {
 }
 
 TEST(BadConfig, NanStopsTheNode) {
-  const NodeRun run = runWith("bad_nan", [](XmlRpcValue& c) {
+  const CommandRun run = runWith("bad_nan", [](XmlRpcValue& c) {
     entryNamed(c["links"], "plate")["angle"] = std::numeric_limits<double>::quiet_NaN();
   });
   EXPECT_EQ(run.exit_status, 1) << run.output;
@@ -120,7 +101,7 @@ TEST(BadConfig, NanStopsTheNode) {
 }
 
 TEST(BadConfig, DuplicateNameStopsTheNode) {
-  const NodeRun run = runWith(
+  const CommandRun run = runWith(
       "bad_duplicate", [](XmlRpcValue& c) { entryNamed(c["obstacles"], "spare")["name"] = "arm"; });
   EXPECT_EQ(run.exit_status, 1) << run.output;
   EXPECT_CONTAINS(run.output, "obstacles[3] (name 'arm'), key 'name'");
@@ -128,27 +109,28 @@ TEST(BadConfig, DuplicateNameStopsTheNode) {
 }
 
 TEST(BadConfig, UnknownAllowedPairNameStopsTheNode) {
-  const NodeRun run =
+  const CommandRun run =
       runWith("bad_pair", [](XmlRpcValue& c) { c["allowed_pairs"][0][1] = "bumpr"; });
   EXPECT_EQ(run.exit_status, 1) << run.output;
   EXPECT_CONTAINS(run.output, "allowed_pairs[0][1] = 'bumpr'");
 }
 
 TEST(BadConfig, MisspelledParameterStopsTheNode) {
-  const NodeRun run = runWith("bad_key", [](XmlRpcValue& c) { c["tf_timout"] = 0.1; });
+  const CommandRun run = runWith("bad_key", [](XmlRpcValue& c) { c["tf_timout"] = 0.1; });
   EXPECT_EQ(run.exit_status, 1) << run.output;
   EXPECT_CONTAINS(run.output, "parameter ~tf_timout: unknown key");
 }
 
 TEST(BadConfig, NegativeRateStopsTheNode) {
-  const NodeRun run = runWith("bad_rate", [](XmlRpcValue& c) { c["rate"] = -10; });
+  const CommandRun run = runWith("bad_rate", [](XmlRpcValue& c) { c["rate"] = -10; });
   EXPECT_EQ(run.exit_status, 1) << run.output;
   EXPECT_CONTAINS(run.output,
                   "parameter ~rate, key 'rate': expected a finite number >= 0, got -10");
 }
 
 TEST(BadConfig, NegativeWarningDistanceStopsTheNode) {
-  const NodeRun run = runWith("bad_warning", [](XmlRpcValue& c) { c["warning_distance"] = -0.05; });
+  const CommandRun run =
+      runWith("bad_warning", [](XmlRpcValue& c) { c["warning_distance"] = -0.05; });
   EXPECT_EQ(run.exit_status, 1) << run.output;
   EXPECT_CONTAINS(run.output,
                   "parameter ~warning_distance, key 'warning_distance': expected a finite number "
@@ -156,7 +138,7 @@ TEST(BadConfig, NegativeWarningDistanceStopsTheNode) {
 }
 
 TEST(BadConfig, NanWarningDistanceStopsTheNode) {
-  const NodeRun run = runWith("bad_warning_nan", [](XmlRpcValue& c) {
+  const CommandRun run = runWith("bad_warning_nan", [](XmlRpcValue& c) {
     c["warning_distance"] = std::numeric_limits<double>::quiet_NaN();
   });
   EXPECT_EQ(run.exit_status, 1) << run.output;

@@ -15,13 +15,11 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 #define EXPECT_CONTAINS(text, part) \
   EXPECT_NE(std::string(text).find(part), std::string::npos) << "in: " << (text)
 
-class NodeServices : public ::testing::Test {
+class NodeServices : public ::testing::Test, protected NodeServiceClient {
  protected:
   void SetUp() override {
     ASSERT_TRUE(ros::service::waitForService(nodeTopic("check_collisions"), ros::Duration(30)));
-    check_ = nh_.serviceClient<CheckCollisions>(nodeTopic("check_collisions"));
-    add_ = nh_.serviceClient<AddObstacles>(nodeTopic("add_obstacles"));
-    remove_ = nh_.serviceClient<RemoveObstacles>(nodeTopic("remove_obstacles"));
+    connectServices(nh_);
     // tf is up once every frame of the helper is seen (camera_link is missing on purpose).
     ASSERT_TRUE(waitUntil(
         [this] {
@@ -31,44 +29,12 @@ class NodeServices : public ::testing::Test {
         30.0));
   }
 
-  CheckCollisions::Response check(const std::vector<std::string>& names = {},
-                                  const std::vector<EllipseMsg>& query = {},
-                                  const ros::Time& stamp = ros::Time(0),
-                                  const std::string& min_distance_of = "") {
-    CheckCollisions srv;
-    srv.request.names = names;
-    srv.request.query = query;
-    srv.request.stamp = stamp;
-    srv.request.min_distance_of = min_distance_of;
-    EXPECT_TRUE(check_.call(srv)) << "the node stopped serving ~check_collisions";
-    return srv.response;
-  }
-
-  AddObstacles::Response add(const std::vector<EllipseMsg>& obstacles) {
-    AddObstacles srv;
-    srv.request.obstacles = obstacles;
-    EXPECT_TRUE(add_.call(srv)) << "the node stopped serving ~add_obstacles";
-    return srv.response;
-  }
-
-  RemoveObstacles::Response remove(const std::vector<std::string>& names) {
-    RemoveObstacles srv;
-    srv.request.names = names;
-    EXPECT_TRUE(remove_.call(srv)) << "the node stopped serving ~remove_obstacles";
-    return srv.response;
-  }
-
   CheckCollisions::Response minDistanceOf(const std::string& name,
                                           const std::vector<EllipseMsg>& query = {}) {
     return check({}, query, ros::Time(0), name);
   }
 
-  bool isStored(const std::string& name) { return check({name}).success; }
-
   ros::NodeHandle nh_;
-  ros::ServiceClient check_;
-  ros::ServiceClient add_;
-  ros::ServiceClient remove_;
 };
 
 TEST_F(NodeServices, TiltedFrameIsProjectedExactly) {

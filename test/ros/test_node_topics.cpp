@@ -86,14 +86,6 @@ class NodeTopics : public ::testing::Test {
     arm_pose_.publish(t);
   }
 
-  void publishObstacles(const std::string& frame, const std::vector<EllipseMsg>& ellipses) {
-    EllipseArray msg;
-    msg.header.frame_id = frame;
-    msg.header.stamp = ros::Time::now();
-    msg.ellipses = ellipses;
-    obstacles_.publish(msg);
-  }
-
   bool call(const std::string& service, AddObstacles& srv) {
     return ros::service::call(nodeTopic(service), srv);
   }
@@ -317,8 +309,9 @@ TEST_F(NodeTopics, RemovedObstacleIsDeletedAndGetsItsIdBackWhenReAdded) {
 
 TEST_F(NodeTopics, ObstacleStreamReplacesThePreviousTopicObstacles) {
   // rock1 takes the header frame (odom): at crate's centre; rock2 sits on body.
-  publishObstacles("odom", {ellipseMsg("rock1", "", 2.0, 0.0, 0.1, 0.1),
-                            ellipseMsg("rock2", "base_link", 0.0, 0.0, 0.1, 0.1)});
+  publishObstacles(obstacles_, "odom",
+                   {ellipseMsg("rock1", "", 2.0, 0.0, 0.1, 0.1),
+                    ellipseMsg("rock2", "base_link", 0.0, 0.0, 0.1, 0.1)});
   MarkerArray markers;
   ASSERT_TRUE(markers_.waitForLatest(
       [](const MarkerArray& m) { return markerNamed(m, "rock1") && markerNamed(m, "rock2"); }, 10.0,
@@ -330,7 +323,7 @@ TEST_F(NodeTopics, ObstacleStreamReplacesThePreviousTopicObstacles) {
   const int rock2_id = markerNamed(markers, "rock2")->id;
 
   const std::size_t before = markers_.count();
-  publishObstacles("base_link", {ellipseMsg("rock3", "", 0.0, 0.0, 0.1, 0.1)});
+  publishObstacles(obstacles_, "base_link", {ellipseMsg("rock3", "", 0.0, 0.0, 0.1, 0.1)});
   ASSERT_TRUE(collisions_.waitForLatest(
       [](const CollisionState& s) {
         return findPair(s.collisions, "body", "rock3") && !mentions(s.collisions, "rock2");
@@ -348,7 +341,7 @@ TEST_F(NodeTopics, ObstacleStreamReplacesThePreviousTopicObstacles) {
   Recorder<diagnostic_msgs::DiagnosticArray> diagnostics(nh_, "/diagnostics");
   EllipseMsg bad = ellipseMsg("rock4", "", 0.0, 0.0, 0.1, 0.1);
   bad.x = std::numeric_limits<double>::quiet_NaN();
-  publishObstacles("base_link", {bad});
+  publishObstacles(obstacles_, "base_link", {bad});
   EXPECT_TRUE(diagnostics.waitForAny(
       [](const diagnostic_msgs::DiagnosticArray& a) {
         return !a.status.empty() &&
@@ -361,14 +354,14 @@ TEST_F(NodeTopics, ObstacleStreamReplacesThePreviousTopicObstacles) {
   EXPECT_FALSE(mentions(state.collisions, "rock4"));
 
   // A topic obstacle may not take a configured name; an empty message clears the stream's set.
-  publishObstacles("base_link", {ellipseMsg("crate", "", 0.0, 0.0, 0.1, 0.1)});
+  publishObstacles(obstacles_, "base_link", {ellipseMsg("crate", "", 0.0, 0.0, 0.1, 0.1)});
   EXPECT_TRUE(diagnostics.waitForAny(
       [](const diagnostic_msgs::DiagnosticArray& a) {
         return !a.status.empty() &&
                a.status[0].message.find("ellipses[0].name = 'crate'") != std::string::npos;
       },
       10.0));
-  publishObstacles("base_link", {});
+  publishObstacles(obstacles_, "base_link", {});
   EXPECT_TRUE(collisions_.waitForLatest(
       [](const CollisionState& s) { return !mentions(s.collisions, "rock3"); }, 10.0));
 }
