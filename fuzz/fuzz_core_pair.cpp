@@ -1,0 +1,164 @@
+// Fuzz target: one pair of ellipses through every stage of the core (validation, the polygonal
+// test, the eigenvalue test, contactScale, overlap, distance). Fields are arbitrary doubles:
+// NaN, inf, subnormals, 1e300, range edges, raw bit patterns (see fuzz_input.h).
+//
+// Invariants:
+//  - invalidReason() agrees with the documented rule (ellipse.h) and names a field; an invalid
+//    pair is refused by checkScene() before any arithmetic. The stages themselves require valid
+//    input (ellipse.h), so only valid pairs reach them; there NaN cannot arise, and subnormal
+//    centres, 1e300 or DBL_MAX angles and the range edges still do;
+//  - every stage is exactly symmetric in (a, b): same bits, not just close;
+//  - contactScale is finite and >= 0, and overlap iff contactScale <= 1 outside a tiny band
+//    around 1 (see kTangencyBand); each stage's certified answer agrees with it;
+//  - halving both radii doubles the contact scale (t* is homogeneous), so overlap of the halved
+//    pair implies overlap of the original;
+//  - distance() reports separation exactly when overlap() does not.
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <string>
+
+#include "ellipse_collision/distance.h"
+#include "ellipse_collision/ellipse_collision.h"
+#include "ellipse_collision/scene_check.h"
+#include "fuzz_input.h"
+
+namespace ellipse_collision::fuzz {
+namespace {
+
+// overlap() decides by certified bounds, contactScale() converges to ~1e-15 relative but is only
+// claimed accurate to 1e-9 (test_overlap_accuracy.cpp): within that band of exact tangency the
+// two may legitimately disagree by rounding, so the comparison is only made outside it.
+constexpr double kTangencyBand = 1e-9;
+
+bool sameBits(double x, double y) { return std::memcmp(&x, &y, sizeof x) == 0; }
+
+std::string pairText(const Ellipse& a, const Ellipse& b) {
+  return "a = " + describe(a) + ", b = " + describe(b);
+}
+
+void checkValidation(const Ellipse& e) {
+  const std::string reason = invalidReason(e);
+  FUZZ_REQUIRE(
+      reason.empty() == documentedValid(e),
+      "invalidReason disagrees with the documented rule for " + describe(e) + ": '" + reason + "'");
+  if (!reason.empty()) {
+    const bool names_field = reason.rfind("center.x", 0) == 0 || reason.rfind("center.y", 0) == 0 ||
+                             reason.rfind("radius_x", 0) == 0 || reason.rfind("radius_y", 0) == 0 ||
+                             reason.rfind("angle", 0) == 0;
+    FUZZ_REQUIRE(names_field, "invalidReason does not start with a field name: '" + reason + "'");
+  }
+}
+
+void checkInvalidPairIsRefused(const Ellipse& a, const Ellipse& b) {
+  const SceneCheckResult result =
+      checkScene({{"a", EllipseRole::Link, a}, {"b", EllipseRole::Obstacle, b}}, SceneRules{});
+  FUZZ_REQUIRE(!result.ok() && result.collisions.empty(),
+               "checkScene accepted an invalid pair " + pairText(a, b));
+  const std::string& bad_name = invalidReason(a).empty() ? "'b'" : "'a'";
+  FUZZ_REQUIRE(result.error.find(bad_name) != std::string::npos,
+               "checkScene error does not name the invalid entry: " + result.error);
+}
+
+void checkValidPair(const Ellipse& a, const Ellipse& b, int polygonal_iterations) {
+  const double t = contactScale(a, b);
+  FUZZ_REQUIRE(sameBits(t, contactScale(b, a)), "contactScale not symmetric: " + pairText(a, b));
+  FUZZ_REQUIRE(std::isfinite(t) && t >= 0.0,
+               "contactScale = " + text(t) + " is not finite and >= 0: " + pairText(a, b));
+  const bool clearly_overlapping = t < 1.0 - kTangencyBand;
+  const bool clearly_separate = t > 1.0 + kTangencyBand;
+
+  const bool overlapping = overlap(a, b);
+  FUZZ_REQUIRE(overlapping == overlap(b, a), "overlap not symmetric: " + pairText(a, b));
+  FUZZ_REQUIRE(!(clearly_overlapping && !overlapping) && !(clearly_separate && overlapping),
+               "overlap = " + std::string(overlapping ? "true" : "false") +
+                   " but contactScale = " + text(t) + ": " + pairText(a, b));
+
+  const bool eigen = eigenvalueOverlap(a, b);
+  FUZZ_REQUIRE(eigen == eigenvalueOverlap(b, a),
+               "eigenvalueOverlap not symmetric: " + pairText(a, b));
+  FUZZ_REQUIRE(!(clearly_overlapping && !eigen) && !(clearly_separate && eigen),
+               "eigenvalueOverlap = " + std::string(eigen ? "true" : "false") +
+                   " but contactScale = " + text(t) + ": " + pairText(a, b));
+
+  const PolygonalResult polygonal = polygonalTest(a, b, polygonal_iterations);
+  FUZZ_REQUIRE(polygonal == polygonalTest(b, a, polygonal_iterations),
+               "polygonalTest not symmetric: " + pairText(a, b));
+  FUZZ_REQUIRE(!(clearly_overlapping && polygonal == PolygonalResult::Separate) &&
+                   !(clearly_separate && polygonal == PolygonalResult::Overlap),
+               std::string("polygonalTest = ") + toString(polygonal) + " (iterations " +
+                   std::to_string(polygonal_iterations) + ") but contactScale = " + text(t) + ": " +
+                   pairText(a, b));
+
+  // t* is homogeneous of degree -1 in the radii; halving is exact in binary. Below t ~ 1e-100
+  // the squared offsets inside the eigenvalue test reach the subnormal range and lose relative
+  // precision, which no overlap decision can notice, so the check stops there.
+  Ellipse half_a = a, half_b = b;
+  half_a.radius_x /= 2, half_a.radius_y /= 2, half_b.radius_x /= 2, half_b.radius_y /= 2;
+  if (documentedValid(half_a) && documentedValid(half_b) && t > 1e-100) {
+    const double t_half = contactScale(half_a, half_b);
+    FUZZ_REQUIRE(std::fabs(t_half - 2.0 * t) <= kTangencyBand * 2.0 * t,
+                 "contactScale of the halved pair " + text(t_half) + " is not twice " + text(t) +
+                     ": " + pairText(a, b));
+    FUZZ_REQUIRE(!overlap(half_a, half_b) || overlapping,
+                 "halved pair overlaps but the original does not: " + pairText(a, b));
+  }
+
+  const Clearance clearance = distance(a, b);
+  FUZZ_REQUIRE(clearance.separated == !overlapping,
+               "distance().separated disagrees with overlap(): " + pairText(a, b));
+  FUZZ_REQUIRE(std::isfinite(clearance.distance) && clearance.distance >= 0.0 &&
+                   clearance.point_a.allFinite() && clearance.point_b.allFinite(),
+               "distance() returned a non-finite or negative result: " + pairText(a, b));
+}
+
+}  // namespace
+}  // namespace ellipse_collision::fuzz
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  using namespace ellipse_collision;
+  using namespace ellipse_collision::fuzz;
+  FuzzInput input(data, size);
+  Ellipse a = input.ellipse();
+  Ellipse b = input.ellipse();
+  const int shape = input.integer(0, 3);
+  // Out-of-range counts are clamped by the test; feed some to check that too.
+  const int polygonal_iterations = input.integer(-2, 40);
+
+  checkValidation(a);
+  checkValidation(b);
+  const bool valid = invalidReason(a).empty() && invalidReason(b).empty();
+  if (!valid) {
+    checkInvalidPairIsRefused(a, b);
+    return 0;
+  }
+
+  // Arbitrary pairs are rarely close to touching or concentric; these shapes make them so.
+  switch (shape) {
+    case 1: {  // move b along the centre line to (near) exact tangency: t* is linear in it
+      const double t = contactScale(a, b);
+      if (t > 0.0) {
+        Ellipse touching = b;
+        touching.center = a.center + (b.center - a.center) / t;
+        if (invalidReason(touching).empty()) b = touching;
+      }
+      break;
+    }
+    case 2:
+      b.center = a.center;  // concentric: t* = 0
+      break;
+    case 3:
+      b.radius_x = a.radius_x, b.radius_y = a.radius_y;  // congruent shapes
+      break;
+    default:
+      break;
+  }
+  checkValidPair(a, b, polygonal_iterations);
+  if (shape == 2) {
+    FUZZ_REQUIRE(
+        contactScale(a, b) == 0.0 && overlap(a, b),
+        "concentric pair must overlap with contact scale 0: " + describe(a) + ", " + describe(b));
+  }
+  return 0;
+}

@@ -1,0 +1,272 @@
+// Fuzz target: the ROS layer's message-to-core conversion and request validation, without a
+// master: a sequence of ~add_obstacles, ~remove_obstacles, ~obstacles and ~check_collisions
+// queries built from the input is put through fromMsg(), findInvalidPaddedField() and the
+// EllipseRegistry as the node does (collision_node.cpp), with every frame at the identity.
+//
+// Invariants:
+//  - fromMsg()/toMsg() keep every field bit for bit; an EllipseArray entry without a frame takes
+//    the header's frame and no other does;
+//  - findInvalidPaddedField() refuses exactly what the documented rule refuses (ellipse_spec.h: finite,
+//    radii > 0, padding >= 0, the core's ranges), and the request error names the entry, the key
+//    and the value;
+//  - a spec it accepts reaches the core valid: paddedEllipse() passes invalidReason(), so that an
+//    accepted obstacle or query is really checked (invalid input never gets to the arithmetic);
+//  - every registry change is all-or-nothing, links are never replaced or removed, names stay
+//    unique, and what a successful call says it did is what the registry holds afterwards.
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "ellipse_collision/frame_projection.h"
+#include "ellipse_collision/ros/conversions.h"
+#include "ellipse_collision/ros/ellipse_registry.h"
+#include "ellipse_collision/scene_check.h"
+#include "fuzz_input.h"
+
+namespace ellipse_collision::fuzz {
+namespace {
+
+const char* const kNames[] = {"", "body", "arm", "crate", "box", "q", "box/2", "a b", "\xff\xfe"};
+const char* const kFrames[] = {"", "base_link", "odom", "/odom", "arm_link", " ", "a\nb"};
+constexpr int kMaxEntries = 6;
+
+template <std::size_t N>
+std::string pick(FuzzInput& input, const char* const (&table)[N]) {
+  const int index = input.integer(0, N);  // N: a made-up string instead
+  if (index < static_cast<int>(N)) return table[index];
+  std::string text(static_cast<std::size_t>(input.integer(0, 12)), 'x');
+  for (char& c : text) c = static_cast<char>(input.byte());
+  return text;
+}
+
+bool sameBits(double x, double y) { return std::memcmp(&x, &y, sizeof x) == 0; }
+
+bool sameSpec(const EllipseSpec& a, const EllipseSpec& b) {
+  return a.name == b.name && a.frame_id == b.frame_id && sameBits(a.x, b.x) && sameBits(a.y, b.y) &&
+         sameBits(a.angle, b.angle) && sameBits(a.radius_x, b.radius_x) &&
+         sameBits(a.radius_y, b.radius_y) && sameBits(a.padding, b.padding);
+}
+
+bool sameMsg(const EllipseMsg& a, const EllipseMsg& b) {
+  return a.name == b.name && a.frame_id == b.frame_id && sameBits(a.x, b.x) && sameBits(a.y, b.y) &&
+         sameBits(a.angle, b.angle) && sameBits(a.radius_x, b.radius_x) &&
+         sameBits(a.radius_y, b.radius_y) && sameBits(a.padding, b.padding);
+}
+
+EllipseMsg readMsg(FuzzInput& input) {
+  EllipseMsg msg;
+  msg.name = pick(input, kNames);
+  msg.frame_id = pick(input, kFrames);
+  msg.x = input.number();
+  msg.y = input.number();
+  msg.angle = input.number();
+  msg.radius_x = input.number();
+  msg.radius_y = input.number();
+  msg.padding = input.flag() ? 0.0 : input.number();
+  return msg;
+}
+
+/// The rule of ellipse_spec.h and conversions.h restated: which key findInvalidPaddedField() must
+/// name, or "". The padded sums are formed in the same order as paddedEllipse().
+std::string expectedInvalidKey(const EllipseSpec& s, double global_padding) {
+  const auto coordinate_bad = [](double v) {
+    return !std::isfinite(v) || std::fabs(v) > kMaxCoordinate;
+  };
+  const auto radius_bad = [](double v) {
+    return !(std::isfinite(v) && v > 0.0) || v < kMinRadius || v > kMaxRadius;
+  };
+  if (s.name.empty()) return "name";
+  if (s.frame_id.empty() || s.frame_id.front() == '/') return "frame_id";
+  if (coordinate_bad(s.x)) return "x";
+  if (coordinate_bad(s.y)) return "y";
+  if (!std::isfinite(s.angle)) return "angle";
+  if (radius_bad(s.radius_x)) return "radius_x";
+  if (radius_bad(s.radius_y)) return "radius_y";
+  if (!(std::isfinite(s.padding) && s.padding >= 0.0) || s.padding > kMaxRadius) return "padding";
+  const double padded_x = s.radius_x + s.padding + global_padding;
+  const double padded_y = s.radius_y + s.padding + global_padding;
+  if (!(padded_x >= kMinRadius && padded_x <= kMaxRadius)) return "radius_x";
+  if (!(padded_y >= kMinRadius && padded_y <= kMaxRadius)) return "radius_y";
+  return "";
+}
+
+/// Converts and validates the entries of one request like the node; "" when all are accepted.
+std::string validate(const std::vector<EllipseMsg>& msgs, const std::vector<EllipseSpec>& specs,
+                     const std::string& field, double global_padding) {
+  for (std::size_t i = 0; i < specs.size(); ++i) {
+    FUZZ_REQUIRE(sameSpec(specs[i], fromMsg(msgs[i])) && sameMsg(toMsg(specs[i]), msgs[i]),
+                 "msg -> spec -> msg changed a field of " + field + "[" + std::to_string(i) + "]");
+
+    const auto invalid = findInvalidPaddedField(specs[i], global_padding);
+    const std::string expected_key = expectedInvalidKey(specs[i], global_padding);
+    FUZZ_REQUIRE((invalid ? invalid->key : "") == expected_key,
+                 "findInvalidPaddedField named '" + (invalid ? invalid->key : std::string()) +
+                     "', the documented rule '" + expected_key + "' for " + field + "[" +
+                     std::to_string(i) + "]");
+    if (invalid) {
+      const std::string where = field + "[" + std::to_string(i) + "]";
+      const std::string message = describeRequestError(where, *invalid);
+      FUZZ_REQUIRE(message.rfind(where + "." + invalid->key + " = ", 0) == 0 &&
+                       message.find(": expected ") != std::string::npos && !invalid->actual.empty(),
+                   "request error does not name entry, key, value and expectation: " + message);
+      return message;
+    }
+    // Accepted means checkable: the padded ellipse is one the core takes (before any transform).
+    const Ellipse padded = paddedEllipse(specs[i], global_padding);
+    FUZZ_REQUIRE(invalidReason(padded).empty(),
+                 field + "[" + std::to_string(i) +
+                     "] passed request validation but the core refuses it: " +
+                     invalidReason(padded) + " (spec " + describe(padded) + ")");
+  }
+  return {};
+}
+
+using Snapshot = std::map<std::string, std::pair<EllipseSource, EllipseSpec>>;
+
+Snapshot snapshot(const EllipseRegistry& registry) {
+  Snapshot copy;
+  for (const auto& [name, stored] : registry.entries()) copy[name] = {stored.source, stored.spec};
+  return copy;
+}
+
+bool sameSnapshot(const Snapshot& a, const Snapshot& b) {
+  if (a.size() != b.size()) return false;
+  for (auto x = a.begin(), y = b.begin(); x != a.end(); ++x, ++y) {
+    if (x->first != y->first || x->second.first != y->second.first ||
+        !sameSpec(x->second.second, y->second.second)) {
+      return false;
+    }
+  }
+  return true;
+}
+
+EllipseSpec configured(const char* name, const char* frame, double x) {
+  EllipseSpec spec;
+  spec.name = name;
+  spec.frame_id = frame;
+  spec.x = x;
+  spec.radius_x = 0.5;
+  spec.radius_y = 0.25;
+  return spec;
+}
+
+}  // namespace
+}  // namespace ellipse_collision::fuzz
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  using namespace ellipse_collision;
+  using namespace ellipse_collision::fuzz;
+  FuzzInput input(data, size);
+  EllipseRegistry registry(
+      {configured("body", "base_link", 0.0), configured("arm", "arm_link", 1.0)},
+      {configured("crate", "odom", 2.0)});
+  const double global_padding = input.flag() ? 0.0 : 0.02;
+
+  for (int operation = 0; operation < 8 && input.remaining() > 0; ++operation) {
+    const Snapshot before = snapshot(registry);
+    const int kind = input.integer(0, 3);
+    std::vector<EllipseMsg> msgs(static_cast<std::size_t>(input.integer(0, kMaxEntries)));
+    for (EllipseMsg& msg : msgs) msg = readMsg(input);
+
+    if (kind == 0) {  // ~add_obstacles
+      std::vector<EllipseSpec> specs;
+      for (const EllipseMsg& msg : msgs) specs.push_back(fromMsg(msg));
+      std::string error = validate(msgs, specs, "obstacles", global_padding);
+      if (error.empty()) error = registry.addObstacles(specs, "obstacles");
+      if (!error.empty()) {
+        FUZZ_REQUIRE(sameSnapshot(before, snapshot(registry)), "refused add changed the registry");
+        FUZZ_REQUIRE(error.rfind("obstacles[", 0) == 0, "add error names no entry: " + error);
+      } else {
+        for (const EllipseSpec& spec : specs) {
+          const auto found = registry.entries().find(spec.name);
+          FUZZ_REQUIRE(found != registry.entries().end() &&
+                           found->second.source == EllipseSource::ServiceObstacle &&
+                           sameSpec(found->second.spec, spec),
+                       "added obstacle '" + spec.name + "' is not stored as given");
+          FUZZ_REQUIRE(!before.count(spec.name) ||
+                           before.at(spec.name).first == EllipseSource::ConfiguredObstacle ||
+                           before.at(spec.name).first == EllipseSource::ServiceObstacle,
+                       "add replaced a link or topic obstacle '" + spec.name + "'");
+        }
+      }
+    } else if (kind == 1) {  // ~remove_obstacles
+      std::vector<std::string> names;
+      for (const EllipseMsg& msg : msgs) names.push_back(msg.name);
+      const std::string error = registry.removeObstacles(names, "names");
+      if (!error.empty()) {
+        FUZZ_REQUIRE(sameSnapshot(before, snapshot(registry)),
+                     "refused remove changed the registry");
+        FUZZ_REQUIRE(error.rfind("names[", 0) == 0, "remove error names no entry: " + error);
+      } else {
+        for (const std::string& name : names) {
+          FUZZ_REQUIRE(before.count(name) &&
+                           before.at(name).first != EllipseSource::ConfiguredLink &&
+                           !registry.contains(name),
+                       "remove of '" + name + "' succeeded wrongly");
+        }
+        FUZZ_REQUIRE(before.size() == registry.entries().size() + names.size(),
+                     "remove took away more or fewer entries than named");
+      }
+    } else if (kind == 2) {  // ~obstacles topic: EllipseArray with a header frame
+      EllipseArray array;
+      array.header.frame_id = pick(input, kFrames);
+      array.ellipses = msgs;
+      const std::vector<EllipseSpec> specs = fromMsg(array);
+      FUZZ_REQUIRE(specs.size() == msgs.size(), "fromMsg(EllipseArray) lost entries");
+      for (std::size_t i = 0; i < specs.size(); ++i) {
+        const std::string& frame =
+            msgs[i].frame_id.empty() ? array.header.frame_id : msgs[i].frame_id;
+        FUZZ_REQUIRE(specs[i].frame_id == frame, "frame_id not inherited as documented");
+      }
+      std::vector<EllipseMsg> resolved = msgs;
+      for (std::size_t i = 0; i < specs.size(); ++i) resolved[i].frame_id = specs[i].frame_id;
+      std::string error = validate(resolved, specs, "ellipses", global_padding);
+      if (error.empty()) error = registry.replaceTopicObstacles(specs, "ellipses");
+      if (!error.empty()) {
+        FUZZ_REQUIRE(sameSnapshot(before, snapshot(registry)),
+                     "refused topic message changed the registry");
+      } else {
+        FUZZ_REQUIRE(registry.count(EllipseSource::TopicObstacle) == specs.size(),
+                     "topic obstacles are not exactly the last message's");
+      }
+    } else {  // ~check_collisions query: validated, then placed and checked with the stored ones
+      std::vector<EllipseSpec> specs;
+      for (const EllipseMsg& msg : msgs) specs.push_back(fromMsg(msg));
+      if (validate(msgs, specs, "query", global_padding).empty()) {
+        std::vector<NamedEllipse> scene;
+        std::set<std::string> names;
+        for (const EllipseSpec& spec : specs) {
+          if (registry.contains(spec.name) || !names.insert(spec.name).second) continue;
+          const ProjectionResult placed = projectToPlane(paddedEllipse(spec, global_padding),
+                                                         Eigen::Isometry3d::Identity(), spec.name);
+          FUZZ_REQUIRE(placed.ok(), "accepted query refused by projectToPlane: " + placed.error);
+          scene.push_back({spec.name, EllipseRole::Query, placed.ellipse});
+        }
+        for (const auto& [name, stored] : registry.entries()) {
+          const ProjectionResult placed = projectToPlane(paddedEllipse(stored.spec, global_padding),
+                                                         Eigen::Isometry3d::Identity(), name);
+          FUZZ_REQUIRE(placed.ok(),
+                       "stored '" + name + "' refused by projectToPlane: " + placed.error);
+          scene.push_back({name, stored.role(), placed.ellipse});
+        }
+        const SceneCheckResult result = checkScene(scene, SceneRules{});
+        FUZZ_REQUIRE(result.ok(), "checkScene refused a validated scene: " + result.error);
+        for (const CollidingPair& pair : result.collisions) {
+          const CollidingPair back = fromMsg(toMsg(pair));
+          FUZZ_REQUIRE(back.name_a == pair.name_a && back.name_b == pair.name_b &&
+                           sameBits(back.contact_scale, pair.contact_scale),
+                       "CollisionPair round trip changed a field");
+        }
+      }
+    }
+    FUZZ_REQUIRE(registry.count(EllipseSource::ConfiguredLink) == 2 && registry.contains("body") &&
+                     registry.contains("arm"),
+                 "a configured link was removed or replaced");
+  }
+  return 0;
+}

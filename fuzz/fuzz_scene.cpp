@@ -1,0 +1,281 @@
+// Fuzz target: the core's scene-level entry points, checkScene(), nearestTo() and projectToPlane(),
+// fed arbitrary names, roles, rules, transforms and field values (see fuzz_input.h).
+//
+// Invariants:
+//  - checkScene() refuses a scene iff the warning distance is not finite and >= 0 or some entry
+//    has an empty or duplicate name or an invalid ellipse, and the error names the first such
+//    entry; refused scenes report nothing;
+//  - an accepted scene reports exactly the wanted pairs that overlap(), each with its
+//    contactScale(), and exactly the wanted separated pairs whose distance() is below the warning
+//    distance, with its distance and points (brute force over all pairs, so a broadphase or bound
+//    that drops a pair is caught), in the documented order, the same bits whatever the input order;
+//  - nearestTo() answers what a brute force over all partners answers (colliding partner of the
+//    smallest contact scale, else the smallest distance, ties in pair order);
+//  - projectToPlane() refuses an invalid ellipse or a non-finite transform naming the ellipse; an
+//    accepted projection is valid for the core (checkScene takes it), radius_x >= radius_y,
+//    angle in (-pi/2, pi/2], and a rotation about z alone keeps the radii.
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <set>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "ellipse_collision/distance.h"
+#include "ellipse_collision/ellipse_collision.h"
+#include "ellipse_collision/frame_projection.h"
+#include "ellipse_collision/scene_check.h"
+#include "fuzz_input.h"
+
+namespace ellipse_collision::fuzz {
+namespace {
+
+constexpr int kMaxEllipses = 10;
+// Names from a small alphabet so that duplicates, allowed pairs and filters actually match.
+const char* const kNames[] = {"", "a", "b", "c", "d", "e", "f", "g", "h", "link/1", "obstacle 2"};
+constexpr int kNameCount = sizeof(kNames) / sizeof(kNames[0]);
+
+bool sameBits(double x, double y) { return std::memcmp(&x, &y, sizeof x) == 0; }
+
+bool sameNear(const NearPair& p, const NearPair& q) {
+  return p.name_a == q.name_a && p.name_b == q.name_b && sameBits(p.distance, q.distance) &&
+         sameBits(p.point_a.x(), q.point_a.x()) && sameBits(p.point_a.y(), q.point_a.y()) &&
+         sameBits(p.point_b.x(), q.point_b.x()) && sameBits(p.point_b.y(), q.point_b.y());
+}
+
+bool sameResult(const SceneCheckResult& x, const SceneCheckResult& y) {
+  if (x.warnings.size() != y.warnings.size()) return false;
+  for (std::size_t i = 0; i < x.warnings.size(); ++i) {
+    if (!sameNear(x.warnings[i], y.warnings[i])) return false;
+  }
+  if (x.error != y.error || x.collisions.size() != y.collisions.size()) return false;
+  for (std::size_t i = 0; i < x.collisions.size(); ++i) {
+    const CollidingPair& p = x.collisions[i];
+    const CollidingPair& q = y.collisions[i];
+    // Same bits: the scene is a set, its order must not change any rounding.
+    if (p.name_a != q.name_a || p.name_b != q.name_b ||
+        std::memcmp(&p.contact_scale, &q.contact_scale, sizeof(double)) != 0) {
+      return false;
+    }
+  }
+  return true;
+}
+
+/// The first bad entry, restating scene_check.h's rules; -1 when the scene is good.
+int firstBadEntry(const std::vector<NamedEllipse>& scene) {
+  std::set<std::string> seen;
+  for (std::size_t i = 0; i < scene.size(); ++i) {
+    if (scene[i].name.empty() || !seen.insert(scene[i].name).second ||
+        !documentedValid(scene[i].ellipse)) {
+      return static_cast<int>(i);
+    }
+  }
+  return -1;
+}
+
+void checkScenes(FuzzInput& input) {
+  std::vector<NamedEllipse> scene(static_cast<std::size_t>(input.integer(0, kMaxEllipses)));
+  for (NamedEllipse& entry : scene) {
+    entry.name = kNames[input.integer(0, kNameCount - 1)];
+    entry.role = static_cast<EllipseRole>(input.integer(0, 2));
+    entry.ellipse = input.ellipse();
+    // Mostly valid fields, so that the pair loop runs: arbitrary values are rarely valid.
+    if (input.flag()) {
+      entry.ellipse.center = entry.ellipse.center.unaryExpr(
+          [](double v) { return std::isfinite(v) ? std::fmod(v, 100.0) : 1.0; });
+      entry.ellipse.radius_x = std::clamp(std::fabs(entry.ellipse.radius_x), 1e-3, 1e3);
+      entry.ellipse.radius_y = std::clamp(std::fabs(entry.ellipse.radius_y), 1e-3, 1e3);
+      if (!std::isfinite(entry.ellipse.angle)) entry.ellipse.angle = 0.0;
+      if (!std::isfinite(entry.ellipse.radius_x)) entry.ellipse.radius_x = 1.0;
+      if (!std::isfinite(entry.ellipse.radius_y)) entry.ellipse.radius_y = 1.0;
+    }
+  }
+  SceneRules rules;
+  rules.self_collision = input.flag();
+  for (int i = input.integer(0, 4); i > 0; --i) {
+    rules.allowed.add(kNames[input.integer(0, kNameCount - 1)],
+                      kNames[input.integer(0, kNameCount - 1)]);
+  }
+  std::set<std::string> only_names;
+  for (int i = input.integer(0, 3); i > 0; --i)
+    only_names.insert(kNames[input.integer(0, kNameCount - 1)]);
+  switch (input.integer(0, 2)) {
+    case 0:
+      break;  // no warnings
+    case 1:
+      rules.warning_distance = input.number();  // NaN, inf, negative ...
+      break;
+    default: {
+      const double d = std::fabs(input.number());
+      rules.warning_distance = std::isfinite(d) ? std::fmod(d, 10.0) : 0.5;
+    }
+  }
+  const std::string nearest_name = kNames[input.integer(0, kNameCount - 1)];
+
+  const SceneCheckResult result = checkScene(scene, rules, only_names);
+  const NearestResult nearest = nearestTo(scene, rules, nearest_name);
+  if (!(std::isfinite(rules.warning_distance) && rules.warning_distance >= 0.0)) {
+    FUZZ_REQUIRE(!result.ok() && result.collisions.empty() && result.warnings.empty() &&
+                     result.error.rfind("warning_distance = ", 0) == 0 && !nearest.ok(),
+                 "checkScene accepted warning_distance " + text(rules.warning_distance));
+    return;
+  }
+  const int bad = firstBadEntry(scene);
+  if (bad >= 0) {
+    FUZZ_REQUIRE(!nearest.ok() && !nearest.found, "nearestTo accepted a bad scene");
+    FUZZ_REQUIRE(!result.ok() && result.collisions.empty(),
+                 "checkScene accepted a scene whose entry " + std::to_string(bad) + " is bad");
+    const std::string where = "ellipses[" + std::to_string(bad) + "]";
+    FUZZ_REQUIRE(result.error.rfind(where, 0) == 0,
+                 "checkScene error does not start with " + where + ": " + result.error);
+    return;
+  }
+  FUZZ_REQUIRE(result.ok(), "checkScene refused a good scene: " + result.error);
+
+  // Each unordered pair once, read lower role first, then lower name, in that order: the loops
+  // below meet them in the documented output order.
+  std::vector<const NamedEllipse*> sorted;
+  for (const NamedEllipse& e : scene) sorted.push_back(&e);
+  std::sort(sorted.begin(), sorted.end(), [](const NamedEllipse* x, const NamedEllipse* y) {
+    return std::tie(x->role, x->name) < std::tie(y->role, y->name);
+  });
+  SceneCheckResult expected;
+  for (std::size_t i = 0; i < sorted.size(); ++i) {
+    for (std::size_t j = i + 1; j < sorted.size(); ++j) {
+      const NamedEllipse& first = *sorted[i];
+      const NamedEllipse& second = *sorted[j];
+      if (!pairWanted(first, second, rules, only_names)) continue;
+      if (overlap(first.ellipse, second.ellipse)) {
+        expected.collisions.push_back(
+            {first.name, second.name, contactScale(first.ellipse, second.ellipse)});
+        continue;
+      }
+      const Clearance c = distance(first.ellipse, second.ellipse);
+      if (c.separated && c.distance < rules.warning_distance) {
+        expected.warnings.push_back({first.name, second.name, c.distance, c.point_a, c.point_b});
+      }
+    }
+  }
+  FUZZ_REQUIRE(sameResult(result, expected),
+               "checkScene differs from the brute force over all pairs (" +
+                   std::to_string(result.collisions.size()) + " vs " +
+                   std::to_string(expected.collisions.size()) + " collisions, " +
+                   std::to_string(result.warnings.size()) + " vs " +
+                   std::to_string(expected.warnings.size()) + " warnings)");
+
+  // nearestTo(): every partner the rules allow, whatever the name filter.
+  const auto target = std::find_if(scene.begin(), scene.end(),
+                                   [&](const NamedEllipse& e) { return e.name == nearest_name; });
+  if (target == scene.end()) {
+    FUZZ_REQUIRE(!nearest.ok() && !nearest.found, "nearestTo found an unknown name");
+  } else {
+    FUZZ_REQUIRE(nearest.ok(), "nearestTo refused a good scene: " + nearest.error);
+    bool found = false, colliding = false;
+    double best_scale = 0.0;
+    NearPair best;
+    for (const NamedEllipse* other : sorted) {  // in pair order: the first of equals wins
+      if (other == &*target) continue;
+      const bool target_first =
+          std::tie(target->role, target->name) < std::tie(other->role, other->name);
+      const NamedEllipse& first = target_first ? *target : *other;
+      const NamedEllipse& second = target_first ? *other : *target;
+      if (!pairWanted(first, second, rules, {})) continue;
+      const Clearance c = distance(first.ellipse, second.ellipse);
+      NearPair candidate{target->name, other->name, c.distance,
+                         target_first ? c.point_a : c.point_b,
+                         target_first ? c.point_b : c.point_a};
+      if (!c.separated) {
+        const double scale = contactScale(first.ellipse, second.ellipse);
+        if (!found || !colliding || scale < best_scale) {
+          best = candidate, best_scale = scale;
+        }
+        found = colliding = true;
+      } else if (!found || (!colliding && c.distance < best.distance)) {
+        best = candidate;
+        found = true;
+      }
+    }
+    FUZZ_REQUIRE(nearest.found == found && (!found || sameNear(nearest.nearest, best)),
+                 "nearestTo('" + nearest_name + "') answered '" + nearest.nearest.name_b + "' at " +
+                     text(nearest.nearest.distance) + ", the brute force '" + best.name_b +
+                     "' at " + text(best.distance));
+  }
+
+  std::vector<NamedEllipse> reversed(scene.rbegin(), scene.rend());
+  FUZZ_REQUIRE(sameResult(result, checkScene(reversed, rules, only_names)),
+               "checkScene depends on the order of the ellipses");
+}
+
+void checkProjection(FuzzInput& input) {
+  const Ellipse in_frame = input.ellipse();
+  const Eigen::Vector3d translation(input.number(), input.number(), input.number());
+  const bool about_z_only = input.flag();
+  Eigen::Matrix3d rotation;
+  if (about_z_only) {
+    rotation = Eigen::AngleAxisd(input.number(), Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  } else {
+    Eigen::Quaterniond q(input.number(), input.number(), input.number(), input.number());
+    const double norm = q.norm();
+    // tf hands out unit quaternions; a zero or non-finite one stays as it is to test the refusal.
+    if (std::isfinite(norm) && norm > 0.0) q.coeffs() /= norm;
+    rotation = q.toRotationMatrix();
+  }
+  Eigen::Isometry3d fixed_from_frame = Eigen::Isometry3d::Identity();
+  fixed_from_frame.linear() = rotation;
+  fixed_from_frame.translation() = translation;
+
+  const ProjectionResult result = projectToPlane(in_frame, fixed_from_frame, "e");
+  if (!documentedValid(in_frame) || !fixed_from_frame.matrix().allFinite()) {
+    FUZZ_REQUIRE(!result.ok() && result.error.find("'e'") != std::string::npos,
+                 "projectToPlane accepted an invalid ellipse or transform: " + describe(in_frame));
+    return;
+  }
+  if (!result.ok()) {
+    // A rotation about z alone never makes a frame edge-on; a translation can move any centre
+    // out of range.
+    const bool edge_on = result.error.find("edge-on") != std::string::npos && !about_z_only;
+    const bool out_of_range = result.error.find("out of range") != std::string::npos;
+    FUZZ_REQUIRE(edge_on || out_of_range, "projectToPlane refused a valid input: " + result.error);
+    return;
+  }
+  FUZZ_REQUIRE(
+      documentedValid(result.ellipse),
+      "projectToPlane accepted a projection the core refuses: " + describe(result.ellipse));
+  const Ellipse& e = result.ellipse;
+  // radius_x >= radius_y up to rounding: for a near-circle the minor radius |det| / major can
+  // come out an ulp above the major one, which changes no collision answer.
+  FUZZ_REQUIRE(std::isfinite(e.center.x()) && std::isfinite(e.center.y()) &&
+                   std::isfinite(e.angle) && e.radius_y <= e.radius_x * (1.0 + 1e-15) &&
+                   e.radius_y > 0.0 && std::isfinite(e.radius_x) && e.angle > -M_PI / 2 &&
+                   e.angle <= M_PI / 2,
+               "projectToPlane returned " + describe(e) + " for " + describe(in_frame));
+  if (about_z_only) {
+    const double major = std::max(in_frame.radius_x, in_frame.radius_y);
+    const double minor = std::min(in_frame.radius_x, in_frame.radius_y);
+    FUZZ_REQUIRE(
+        std::fabs(e.radius_x - major) <= 1e-12 * major &&
+            std::fabs(e.radius_y - minor) <= 1e-12 * major,
+        "a rotation about z changed the radii: " + describe(e) + " from " + describe(in_frame));
+  }
+  // The node hands projections straight to checkScene.
+  const SceneCheckResult scene = checkScene(
+      {{"e", EllipseRole::Link, e}, {"f", EllipseRole::Obstacle, in_frame}}, SceneRules{});
+  FUZZ_REQUIRE(scene.ok(), "checkScene refused a projection: " + scene.error);
+}
+
+}  // namespace
+}  // namespace ellipse_collision::fuzz
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  ellipse_collision::fuzz::FuzzInput input(data, size);
+  if (input.flag()) {
+    ellipse_collision::fuzz::checkScenes(input);
+  } else {
+    ellipse_collision::fuzz::checkProjection(input);
+  }
+  return 0;
+}
