@@ -43,6 +43,10 @@ with open(path, "w") as out:
 PY
 }
 
+# The libFuzzer targets, built with clang, ASan and UBSan, run for about a minute in all; one JUnit
+# test case per target (scripts/fuzz.sh --long SECONDS fuzzes for longer).
+bash "${repo}/scripts/fuzz.sh" --ci --junit "${results}/fuzz/fuzz.xml" || true
+
 # The benchmarks compile and run once, briefly, so that they never rot (the full run is
 # scripts/benchmark.sh).
 record_check benchmark_smoke bash "${repo}/scripts/benchmark.sh" --smoke
