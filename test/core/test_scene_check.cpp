@@ -9,54 +9,17 @@
 #include <random>
 
 #include "ellipse_collision/scene_check.h"
+#include "scene_test_helpers.h"
 
 namespace ellipse_collision {
 namespace {
 
-NamedEllipse circle(const std::string& name, EllipseRole role, double x, double y, double r) {
-  NamedEllipse e;
-  e.name = name;
-  e.role = role;
-  e.ellipse.center = Eigen::Vector2d(x, y);
-  e.ellipse.radius_x = r;
-  e.ellipse.radius_y = r;
-  e.ellipse.angle = 0.0;
-  return e;
-}
+using namespace scene_test;
 
 std::vector<std::pair<std::string, std::string>> namesOf(const SceneCheckResult& result) {
   std::vector<std::pair<std::string, std::string>> names;
   for (const CollidingPair& p : result.collisions) names.emplace_back(p.name_a, p.name_b);
   return names;
-}
-
-using Names = std::vector<std::pair<std::string, std::string>>;
-
-/// Rule table, written independently of pairWanted(): which role combinations are checked.
-bool rolesChecked(EllipseRole a, EllipseRole b, bool self_collision) {
-  const std::map<std::pair<EllipseRole, EllipseRole>, bool> table = {
-      {{EllipseRole::Link, EllipseRole::Link}, self_collision},
-      {{EllipseRole::Link, EllipseRole::Obstacle}, true},
-      {{EllipseRole::Obstacle, EllipseRole::Link}, true},
-      {{EllipseRole::Obstacle, EllipseRole::Obstacle}, false},
-      {{EllipseRole::Query, EllipseRole::Link}, true},
-      {{EllipseRole::Link, EllipseRole::Query}, true},
-      {{EllipseRole::Query, EllipseRole::Obstacle}, true},
-      {{EllipseRole::Obstacle, EllipseRole::Query}, true},
-      {{EllipseRole::Query, EllipseRole::Query}, false}};
-  return table.at({a, b});
-}
-
-int roleRank(EllipseRole role) {
-  switch (role) {
-    case EllipseRole::Query:
-      return 0;
-    case EllipseRole::Link:
-      return 1;
-    case EllipseRole::Obstacle:
-      return 2;
-  }
-  return -1;
 }
 
 struct Expected {

@@ -12,25 +12,12 @@
 #include "ellipse_collision/distance.h"
 #include "ellipse_collision/eigenvalue_test.h"
 #include "ellipse_collision/scene_check.h"
+#include "scene_test_helpers.h"
 
 namespace ellipse_collision {
 namespace {
 
-NamedEllipse ellipse(const std::string& name, EllipseRole role, double x, double y, double rx,
-                     double ry, double angle = 0.0) {
-  NamedEllipse e;
-  e.name = name;
-  e.role = role;
-  e.ellipse.center = Eigen::Vector2d(x, y);
-  e.ellipse.radius_x = rx;
-  e.ellipse.radius_y = ry;
-  e.ellipse.angle = angle;
-  return e;
-}
-
-NamedEllipse circle(const std::string& name, EllipseRole role, double x, double y, double r) {
-  return ellipse(name, role, x, y, r, r);
-}
+using namespace scene_test;
 
 SceneRules warnWithin(double warning_distance) {
   SceneRules rules;
@@ -38,42 +25,13 @@ SceneRules warnWithin(double warning_distance) {
   return rules;
 }
 
-using Names = std::vector<std::pair<std::string, std::string>>;
-
 Names namesOf(const std::vector<NearPair>& pairs) {
   Names names;
   for (const NearPair& p : pairs) names.emplace_back(p.name_a, p.name_b);
   return names;
 }
 
-// ---- brute force, written independently of scene_check.cpp
-
-/// Which role combinations are checked, as a table.
-bool rolesChecked(EllipseRole a, EllipseRole b, bool self_collision) {
-  const std::map<std::pair<EllipseRole, EllipseRole>, bool> table = {
-      {{EllipseRole::Link, EllipseRole::Link}, self_collision},
-      {{EllipseRole::Link, EllipseRole::Obstacle}, true},
-      {{EllipseRole::Obstacle, EllipseRole::Link}, true},
-      {{EllipseRole::Obstacle, EllipseRole::Obstacle}, false},
-      {{EllipseRole::Query, EllipseRole::Link}, true},
-      {{EllipseRole::Link, EllipseRole::Query}, true},
-      {{EllipseRole::Query, EllipseRole::Obstacle}, true},
-      {{EllipseRole::Obstacle, EllipseRole::Query}, true},
-      {{EllipseRole::Query, EllipseRole::Query}, false}};
-  return table.at({a, b});
-}
-
-int roleRank(EllipseRole role) {
-  switch (role) {
-    case EllipseRole::Query:
-      return 0;
-    case EllipseRole::Link:
-      return 1;
-    case EllipseRole::Obstacle:
-      return 2;
-  }
-  return -1;
-}
+// ---- brute force, written independently of scene_check.cpp (rule table: scene_test_helpers.h)
 
 bool reportedFirst(const NamedEllipse& a, const NamedEllipse& b) {
   return std::make_pair(roleRank(a.role), a.name) < std::make_pair(roleRank(b.role), b.name);
