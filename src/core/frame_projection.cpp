@@ -60,9 +60,15 @@ ProjectionResult projectToPlane(const Ellipse& in_frame, const Eigen::Isometry3d
     // exactly and turns the ellipse by the yaw, so no rounding can push a radius out of range.
     result.ellipse.center =
         fixed_from_frame.translation().head<2>() + plane_block * in_frame.center;
-    result.ellipse.radius_x = in_frame.radius_x;
-    result.ellipse.radius_y = in_frame.radius_y;
-    result.ellipse.angle = in_frame.angle + std::atan2(rotation(1, 0), rotation(0, 0));
+    // Same conventions as the general case: radius_x the major radius, angle in (-pi/2, pi/2].
+    const bool swap = in_frame.radius_y > in_frame.radius_x;
+    result.ellipse.radius_x = swap ? in_frame.radius_y : in_frame.radius_x;
+    result.ellipse.radius_y = swap ? in_frame.radius_x : in_frame.radius_y;
+    double angle = std::remainder(
+        in_frame.angle + std::atan2(rotation(1, 0), rotation(0, 0)) + (swap ? M_PI / 2 : 0.0),
+        M_PI);
+    if (angle <= -M_PI / 2) angle += M_PI;
+    result.ellipse.angle = angle;
     return checkedProjection(std::move(result), name);
   }
   const double c = std::cos(in_frame.angle);

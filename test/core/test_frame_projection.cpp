@@ -284,9 +284,12 @@ TEST(FrameProjection, RotationAboutZKeepsRadiiExactlyAtTheRangeEdges) {
       const Ellipse e{{0.25, 0.5}, kMinRadius, kMaxRadius, angle};
       const ProjectionResult placed = projectToPlane(e, transform, "edge");
       ASSERT_TRUE(placed.ok()) << placed.error;
-      EXPECT_EQ(placed.ellipse.radius_x, kMinRadius);
-      EXPECT_EQ(placed.ellipse.radius_y, kMaxRadius);
-      EXPECT_NEAR(std::remainder(placed.ellipse.angle - angle - yaw, 2.0 * M_PI), 0.0, 1e-15);
+      // Reported as major radius first, the angle turned by a quarter turn to match.
+      EXPECT_EQ(placed.ellipse.radius_x, kMaxRadius);
+      EXPECT_EQ(placed.ellipse.radius_y, kMinRadius);
+      EXPECT_GT(placed.ellipse.angle, -M_PI / 2);
+      EXPECT_LE(placed.ellipse.angle, M_PI / 2);
+      EXPECT_NEAR(std::remainder(placed.ellipse.angle - angle - yaw - M_PI / 2, M_PI), 0.0, 1e-15);
       EXPECT_TRUE(placed.ellipse.center.isApprox(
           (transform * Eigen::Vector3d(0.25, 0.5, 0.0)).head<2>(), 1e-15));
     }
