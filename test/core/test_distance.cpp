@@ -16,6 +16,7 @@
 #include <utility>
 #include <vector>
 
+#include "contact_scale_oracle.h"
 #include "distance_oracle.h"
 #include "ellipse_collision/distance.h"
 #include "ellipse_collision/overlap.h"
@@ -36,15 +37,6 @@ constexpr double kRimTolerance = 1e-9;
 // rounding b's centre to double.
 constexpr double kOracleTolerance = 1e-20;
 constexpr int kMaxReportedFailures = 8;
-
-std::string describe(const Ellipse& a, const Ellipse& b) {
-  char buffer[512];
-  std::snprintf(buffer, sizeof buffer,
-                "a = {%.17g, %.17g, %.17g, %.17g, %.17g}, b = {%.17g, %.17g, %.17g, %.17g, %.17g}",
-                a.center.x(), a.center.y(), a.radius_x, a.radius_y, a.angle, b.center.x(),
-                b.center.y(), b.radius_x, b.radius_y, b.angle);
-  return buffer;
-}
 
 std::string str(quad value) {
   char buffer[64];
@@ -176,7 +168,7 @@ class Checker {
 
   void report(const Ellipse& a, const Ellipse& b, const std::string& what) {
     if (++failures_ <= kMaxReportedFailures) {
-      ADD_FAILURE() << family_ << ": " << describe(a, b) << ": " << what;
+      ADD_FAILURE() << family_ << ": " << describePair(a, b) << ": " << what;
     } else if (failures_ == kMaxReportedFailures + 1) {
       ADD_FAILURE() << family_ << ": further failures not shown";
     }
@@ -205,17 +197,17 @@ TEST(Distance, CirclesMatchTheClosedForm) {
     const quad exact = sqrtq(dx * dx + dy * dy) - a.radius_x - b.radius_x;
     const Clearance c = distance(a, b);
     if (exact <= 0) {
-      EXPECT_FALSE(c.separated) << describe(a, b);
+      EXPECT_FALSE(c.separated) << describePair(a, b);
       continue;
     }
-    ASSERT_TRUE(c.separated) << describe(a, b);
+    ASSERT_TRUE(c.separated) << describePair(a, b);
     const double error = static_cast<double>(fabsq(c.distance - exact) / exact);
     max_error = std::max(max_error, error);
-    ASSERT_LE(error, kRelTolerance) << describe(a, b) << ": " << c.distance << " vs " << str(exact);
+    ASSERT_LE(error, kRelTolerance) << describePair(a, b) << ": " << c.distance << " vs " << str(exact);
     // The witness points lie on the line of centres (coordinates are below 150 m).
     const Eigen::Vector2d d_hat = (b.center - a.center).normalized();
-    EXPECT_NEAR((c.point_a - (a.center + a.radius_x * d_hat)).norm(), 0.0, 1e-10) << describe(a, b);
-    EXPECT_NEAR((c.point_b - (b.center - b.radius_x * d_hat)).norm(), 0.0, 1e-10) << describe(a, b);
+    EXPECT_NEAR((c.point_a - (a.center + a.radius_x * d_hat)).norm(), 0.0, 1e-10) << describePair(a, b);
+    EXPECT_NEAR((c.point_b - (b.center - b.radius_x * d_hat)).norm(), 0.0, 1e-10) << describePair(a, b);
   }
   std::printf("[ circles                ] max rel. error %.3g\n", max_error);
 }
@@ -364,10 +356,10 @@ TEST(Distance, OverlappingPairsAreNotSeparatedAndHaveZeroDistance) {
   small.center = big.center;
   pairs.emplace_back(small, big);  // coincident centres
   for (const auto& [a, b] : pairs) {
-    ASSERT_TRUE(overlap(a, b)) << describe(a, b);
+    ASSERT_TRUE(overlap(a, b)) << describePair(a, b);
     const Clearance c = distance(a, b);
-    EXPECT_FALSE(c.separated) << describe(a, b);
-    EXPECT_EQ(c.distance, 0.0) << describe(a, b);
+    EXPECT_FALSE(c.separated) << describePair(a, b);
+    EXPECT_EQ(c.distance, 0.0) << describePair(a, b);
   }
 }
 
@@ -379,11 +371,11 @@ TEST(Distance, SwappingTheEllipsesSwapsTheWitnessPoints) {
     const Built built = place(a, b, uniform(rng, -kPi, kPi), logUniform(rng, 1e-6, 1));
     const Clearance ab = distance(built.a, built.b);
     const Clearance ba = distance(built.b, built.a);
-    ASSERT_TRUE(ab.separated && ba.separated) << describe(built.a, built.b);
+    ASSERT_TRUE(ab.separated && ba.separated) << describePair(built.a, built.b);
     const double scale = std::max(size(a), size(b));
-    EXPECT_NEAR(ab.distance, ba.distance, 1e-9 * ab.distance) << describe(built.a, built.b);
-    EXPECT_NEAR((ab.point_a - ba.point_b).norm(), 0.0, 1e-9 * scale) << describe(built.a, built.b);
-    EXPECT_NEAR((ab.point_b - ba.point_a).norm(), 0.0, 1e-9 * scale) << describe(built.a, built.b);
+    EXPECT_NEAR(ab.distance, ba.distance, 1e-9 * ab.distance) << describePair(built.a, built.b);
+    EXPECT_NEAR((ab.point_a - ba.point_b).norm(), 0.0, 1e-9 * scale) << describePair(built.a, built.b);
+    EXPECT_NEAR((ab.point_b - ba.point_a).norm(), 0.0, 1e-9 * scale) << describePair(built.a, built.b);
   }
 }
 
