@@ -18,10 +18,10 @@
 #include <vector>
 
 #include "distance_oracle.h"
-#include "ellipse_collision/distance.h"
-#include "ellipse_collision/overlap.h"
+#include "ellipse_collision/core/distance.h"
+#include "ellipse_collision/core/overlap.h"
 
-namespace ellipse_collision {
+namespace ellipse_collision::core {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
@@ -189,6 +189,6 @@ BENCHMARK_CAPTURE(BM_Fcl, thin_libccd, Set::Thin, fcl::GST_LIBCCD);
 BENCHMARK_CAPTURE(BM_Fcl, thin_indep, Set::Thin, fcl::GST_INDEP);
 
 }  // namespace
-}  // namespace ellipse_collision
+}  // namespace ellipse_collision::core
 
 BENCHMARK_MAIN();

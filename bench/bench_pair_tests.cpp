@@ -16,14 +16,14 @@
 #include <vector>
 
 #include "bench_scenes.h"
-#include "ellipse_collision/eigenvalue_test.h"
-#include "ellipse_collision/overlap.h"
-#include "ellipse_collision/polygonal_test.h"
-#include "ellipse_collision/prepared_ellipse.h"
+#include "ellipse_collision/core/eigenvalue_test.h"
+#include "ellipse_collision/core/overlap.h"
+#include "ellipse_collision/core/polygonal_test.h"
+#include "ellipse_collision/core/prepared_ellipse.h"
 #include "overlap_detail.h"
 #include "reference_methods.h"
 
-namespace ellipse_collision::bench {
+namespace ellipse_collision::core::bench {
 namespace {
 
 constexpr int kMaxStudiedCap = 8;
@@ -140,10 +140,10 @@ int takePairsFlag(int* argc, char** argv) {
 }
 
 }  // namespace
-}  // namespace ellipse_collision::bench
+}  // namespace ellipse_collision::core::bench
 
 int main(int argc, char** argv) {
-  using namespace ellipse_collision::bench;
+  using namespace ellipse_collision::core::bench;
   const int pairs = takePairsFlag(&argc, argv);
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;

@@ -26,12 +26,12 @@
 #include <vector>
 
 #include "bench_scenes.h"
-#include "ellipse_collision/broadphase.h"
-#include "ellipse_collision/overlap.h"
-#include "ellipse_collision/prepared_ellipse.h"
-#include "ellipse_collision/scene_check.h"
+#include "ellipse_collision/core/broadphase.h"
+#include "ellipse_collision/core/overlap.h"
+#include "ellipse_collision/core/prepared_ellipse.h"
+#include "ellipse_collision/core/scene_check.h"
 
-namespace ellipse_collision::bench {
+namespace ellipse_collision::core::bench {
 namespace {
 
 constexpr int kLinks = 50;
@@ -191,11 +191,11 @@ const std::pair<const char*, Method> kMethods[] = {
 };
 
 }  // namespace
-}  // namespace ellipse_collision::bench
+}  // namespace ellipse_collision::core::bench
 
 int main(int argc, char** argv) {
   using namespace ellipse_collision;
-  using namespace ellipse_collision::bench;
+  using namespace ellipse_collision::core::bench;
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
 

@@ -5,7 +5,7 @@
 
 #include "contact_scale_oracle.h"
 
-namespace ellipse_collision::bench {
+namespace ellipse_collision::core::bench {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
@@ -139,4 +139,4 @@ int misclassified(const PairMix& mix, const std::vector<bool>& verdicts) {
   return wrong;
 }
 
-}  // namespace ellipse_collision::bench
+}  // namespace ellipse_collision::core::bench

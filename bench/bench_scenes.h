@@ -9,9 +9,9 @@
 #include <utility>
 #include <vector>
 
-#include "ellipse_collision/ellipse.h"
+#include "ellipse_collision/core/ellipse.h"
 
-namespace ellipse_collision::bench {
+namespace ellipse_collision::core::bench {
 
 /// Seeded source of random ellipses.
 class EllipseSampler {
@@ -71,4 +71,4 @@ PairMix tangencyMix(int count, std::uint64_t seed);
 /// Number of pairs where `verdicts` disagrees with the oracle, ambiguous pairs left out.
 int misclassified(const PairMix& mix, const std::vector<bool>& verdicts);
 
-}  // namespace ellipse_collision::bench
+}  // namespace ellipse_collision::core::bench

@@ -110,12 +110,12 @@ void print(const char* connection, int stored, const Series& series) {
 }
 
 /// Obstacles on the fixed frame, scattered over the floor, named bench_0, bench_1, ...
-std::vector<EllipseMsg> obstacles(int count, const std::string& frame) {
+std::vector<Ellipse> obstacles(int count, const std::string& frame) {
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> position(-10.0, 10.0), radius(0.05, 0.4), angle(-3.1, 3.1);
-  std::vector<EllipseMsg> result;
+  std::vector<Ellipse> result;
   for (int i = 0; i < count; ++i) {
-    EllipseMsg msg;
+    Ellipse msg;
     msg.name = "bench_" + std::to_string(i);
     msg.frame_id = frame;
     msg.x = position(rng);
@@ -172,7 +172,7 @@ int run(const Options& options) {
     if (ok) print("per call", stored, fresh);
 
     RemoveObstacles remove;
-    for (const EllipseMsg& obstacle : add.request.obstacles) {
+    for (const Ellipse& obstacle : add.request.obstacles) {
       remove.request.names.push_back(obstacle.name);
     }
     if (!ros::service::call(remove_name, remove) || !remove.response.success) {

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace ellipse_collision::bench {
+namespace ellipse_collision::core::bench {
 namespace {
 
 std::unique_ptr<fcl::CollisionObjectd> fclObject(const Ellipse& e) {
@@ -63,4 +63,4 @@ bool seedReadmeOverlap(const Ellipse& a, const Ellipse& b) {
   return k(s) >= 0.0;
 }
 
-}  // namespace ellipse_collision::bench
+}  // namespace ellipse_collision::core::bench

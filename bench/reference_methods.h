@@ -6,9 +6,9 @@
 
 #include <memory>
 
-#include "ellipse_collision/ellipse.h"
+#include "ellipse_collision/core/ellipse.h"
 
-namespace ellipse_collision::bench {
+namespace ellipse_collision::core::bench {
 
 /// An ellipse as FCL 0.7 sees it: an Ellipsoidd(radius_x, radius_y, radius_z) at the ellipse's
 /// pose. The bodies are symmetric about z = 0, so two overlap iff their sections at z = 0, the
@@ -31,4 +31,4 @@ bool fclCollide(const FclEllipse& a, const FclEllipse& b);
 /// iteration cap (the values of the demo's optimiser); collision iff min K >= 0.
 bool seedReadmeOverlap(const Ellipse& a, const Ellipse& b);
 
-}  // namespace ellipse_collision::bench
+}  // namespace ellipse_collision::core::bench

@@ -1,7 +1,7 @@
 # Fails the configure step when a core source or public core header includes a ROS header.
-# Public core headers are the top level of include/ellipse_collision/ (the ROS layer's are in ros/).
+# Public core headers are in include/ellipse_collision/core/.
 file(GLOB_RECURSE _core_sources ${CMAKE_CURRENT_SOURCE_DIR}/src/core/*)
-file(GLOB _core_headers ${CMAKE_CURRENT_SOURCE_DIR}/include/ellipse_collision/*.h)
+file(GLOB _core_headers ${CMAKE_CURRENT_SOURCE_DIR}/include/ellipse_collision/core/*.h)
 set(_core_files ${_core_sources} ${_core_headers})
 foreach(_file ${_core_files})
   file(STRINGS ${_file} _ros_includes

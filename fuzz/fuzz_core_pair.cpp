@@ -19,9 +19,9 @@
 #include <cstring>
 #include <string>
 
-#include "ellipse_collision/distance.h"
+#include "ellipse_collision/core/distance.h"
 #include "ellipse_collision/ellipse_collision.h"
-#include "ellipse_collision/scene_check.h"
+#include "ellipse_collision/core/scene_check.h"
 #include "fuzz_input.h"
 
 namespace ellipse_collision::fuzz {
@@ -34,12 +34,12 @@ constexpr double kTangencyBand = 1e-9;
 
 bool sameBits(double x, double y) { return std::memcmp(&x, &y, sizeof x) == 0; }
 
-std::string pairText(const Ellipse& a, const Ellipse& b) {
+std::string pairText(const core::Ellipse& a, const core::Ellipse& b) {
   return "a = " + describe(a) + ", b = " + describe(b);
 }
 
-void checkValidation(const Ellipse& e) {
-  const std::string reason = invalidReason(e);
+void checkValidation(const core::Ellipse& e) {
+  const std::string reason = core::invalidReason(e);
   FUZZ_REQUIRE(
       reason.empty() == documentedValid(e),
       "invalidReason disagrees with the documented rule for " + describe(e) + ": '" + reason + "'");
@@ -51,42 +51,42 @@ void checkValidation(const Ellipse& e) {
   }
 }
 
-void checkInvalidPairIsRefused(const Ellipse& a, const Ellipse& b) {
-  const SceneCheckResult result =
-      checkScene({{"a", EllipseRole::Link, a}, {"b", EllipseRole::Obstacle, b}}, SceneRules{});
+void checkInvalidPairIsRefused(const core::Ellipse& a, const core::Ellipse& b) {
+  const core::SceneCheckResult result =
+      core::checkScene({{"a", core::EllipseRole::Link, a}, {"b", core::EllipseRole::Obstacle, b}}, core::SceneRules{});
   FUZZ_REQUIRE(!result.ok() && result.collisions.empty(),
                "checkScene accepted an invalid pair " + pairText(a, b));
-  const std::string& bad_name = invalidReason(a).empty() ? "'b'" : "'a'";
+  const std::string& bad_name = core::invalidReason(a).empty() ? "'b'" : "'a'";
   FUZZ_REQUIRE(result.error.find(bad_name) != std::string::npos,
                "checkScene error does not name the invalid entry: " + result.error);
 }
 
-void checkValidPair(const Ellipse& a, const Ellipse& b, int polygonal_iterations) {
-  const double t = contactScale(a, b);
-  FUZZ_REQUIRE(sameBits(t, contactScale(b, a)), "contactScale not symmetric: " + pairText(a, b));
+void checkValidPair(const core::Ellipse& a, const core::Ellipse& b, int polygonal_iterations) {
+  const double t = core::contactScale(a, b);
+  FUZZ_REQUIRE(sameBits(t, core::contactScale(b, a)), "contactScale not symmetric: " + pairText(a, b));
   FUZZ_REQUIRE(std::isfinite(t) && t >= 0.0,
                "contactScale = " + text(t) + " is not finite and >= 0: " + pairText(a, b));
   const bool clearly_overlapping = t < 1.0 - kTangencyBand;
   const bool clearly_separate = t > 1.0 + kTangencyBand;
 
-  const bool overlapping = overlap(a, b);
-  FUZZ_REQUIRE(overlapping == overlap(b, a), "overlap not symmetric: " + pairText(a, b));
+  const bool overlapping = core::overlap(a, b);
+  FUZZ_REQUIRE(overlapping == core::overlap(b, a), "overlap not symmetric: " + pairText(a, b));
   FUZZ_REQUIRE(!(clearly_overlapping && !overlapping) && !(clearly_separate && overlapping),
                "overlap = " + std::string(overlapping ? "true" : "false") +
                    " but contactScale = " + text(t) + ": " + pairText(a, b));
 
-  const bool eigen = eigenvalueOverlap(a, b);
-  FUZZ_REQUIRE(eigen == eigenvalueOverlap(b, a),
+  const bool eigen = core::eigenvalueOverlap(a, b);
+  FUZZ_REQUIRE(eigen == core::eigenvalueOverlap(b, a),
                "eigenvalueOverlap not symmetric: " + pairText(a, b));
   FUZZ_REQUIRE(!(clearly_overlapping && !eigen) && !(clearly_separate && eigen),
                "eigenvalueOverlap = " + std::string(eigen ? "true" : "false") +
                    " but contactScale = " + text(t) + ": " + pairText(a, b));
 
-  const PolygonalResult polygonal = polygonalTest(a, b, polygonal_iterations);
-  FUZZ_REQUIRE(polygonal == polygonalTest(b, a, polygonal_iterations),
+  const core::PolygonalResult polygonal = core::polygonalTest(a, b, polygonal_iterations);
+  FUZZ_REQUIRE(polygonal == core::polygonalTest(b, a, polygonal_iterations),
                "polygonalTest not symmetric: " + pairText(a, b));
-  FUZZ_REQUIRE(!(clearly_overlapping && polygonal == PolygonalResult::Separate) &&
-                   !(clearly_separate && polygonal == PolygonalResult::Overlap),
+  FUZZ_REQUIRE(!(clearly_overlapping && polygonal == core::PolygonalResult::Separate) &&
+                   !(clearly_separate && polygonal == core::PolygonalResult::Overlap),
                std::string("polygonalTest = ") + toString(polygonal) + " (iterations " +
                    std::to_string(polygonal_iterations) + ") but contactScale = " + text(t) + ": " +
                    pairText(a, b));
@@ -94,18 +94,18 @@ void checkValidPair(const Ellipse& a, const Ellipse& b, int polygonal_iterations
   // t* is homogeneous of degree -1 in the radii; halving is exact in binary. Below t ~ 1e-100
   // the squared offsets inside the eigenvalue test reach the subnormal range and lose relative
   // precision, which no overlap decision can notice, so the check stops there.
-  Ellipse half_a = a, half_b = b;
+  core::Ellipse half_a = a, half_b = b;
   half_a.radius_x /= 2, half_a.radius_y /= 2, half_b.radius_x /= 2, half_b.radius_y /= 2;
   if (documentedValid(half_a) && documentedValid(half_b) && t > 1e-100) {
-    const double t_half = contactScale(half_a, half_b);
+    const double t_half = core::contactScale(half_a, half_b);
     FUZZ_REQUIRE(std::fabs(t_half - 2.0 * t) <= kTangencyBand * 2.0 * t,
                  "contactScale of the halved pair " + text(t_half) + " is not twice " + text(t) +
                      ": " + pairText(a, b));
-    FUZZ_REQUIRE(!overlap(half_a, half_b) || overlapping,
+    FUZZ_REQUIRE(!core::overlap(half_a, half_b) || overlapping,
                  "halved pair overlaps but the original does not: " + pairText(a, b));
   }
 
-  const Clearance clearance = distance(a, b);
+  const core::Clearance clearance = core::distance(a, b);
   FUZZ_REQUIRE(clearance.separated == !overlapping,
                "distance().separated disagrees with overlap(): " + pairText(a, b));
   FUZZ_REQUIRE(std::isfinite(clearance.distance) && clearance.distance >= 0.0 &&
@@ -120,15 +120,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   using namespace ellipse_collision;
   using namespace ellipse_collision::fuzz;
   FuzzInput input(data, size);
-  Ellipse a = input.ellipse();
-  Ellipse b = input.ellipse();
+  core::Ellipse a = input.ellipse();
+  core::Ellipse b = input.ellipse();
   const int shape = input.integer(0, 3);
   // Out-of-range counts are clamped by the test; feed some to check that too.
   const int polygonal_iterations = input.integer(-2, 40);
 
   checkValidation(a);
   checkValidation(b);
-  const bool valid = invalidReason(a).empty() && invalidReason(b).empty();
+  const bool valid = core::invalidReason(a).empty() && core::invalidReason(b).empty();
   if (!valid) {
     checkInvalidPairIsRefused(a, b);
     return 0;
@@ -137,11 +137,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   // Arbitrary pairs are rarely close to touching or concentric; these shapes make them so.
   switch (shape) {
     case 1: {  // move b along the centre line to (near) exact tangency: t* is linear in it
-      const double t = contactScale(a, b);
+      const double t = core::contactScale(a, b);
       if (t > 0.0) {
-        Ellipse touching = b;
+        core::Ellipse touching = b;
         touching.center = a.center + (b.center - a.center) / t;
-        if (invalidReason(touching).empty()) b = touching;
+        if (core::invalidReason(touching).empty()) b = touching;
       }
       break;
     }
@@ -157,7 +157,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   checkValidPair(a, b, polygonal_iterations);
   if (shape == 2) {
     FUZZ_REQUIRE(
-        contactScale(a, b) == 0.0 && overlap(a, b),
+        core::contactScale(a, b) == 0.0 && core::overlap(a, b),
         "concentric pair must overlap with contact scale 0: " + describe(a) + ", " + describe(b));
   }
   return 0;

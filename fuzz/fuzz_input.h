@@ -20,7 +20,7 @@
 #include <limits>
 #include <string>
 
-#include "ellipse_collision/ellipse.h"
+#include "ellipse_collision/core/ellipse.h"
 
 namespace ellipse_collision::fuzz {
 
@@ -56,13 +56,13 @@ inline const std::array<double, 40>& hostileValues() {
                                                 -kInf,
                                                 kQuietNaN,
                                                 -kQuietNaN,
-                                                kMinRadius,
-                                                std::nextafter(kMinRadius, 0.0),
-                                                kMaxRadius,
-                                                std::nextafter(kMaxRadius, kInf),
-                                                kMaxCoordinate,
-                                                -kMaxCoordinate,
-                                                std::nextafter(kMaxCoordinate, kInf),
+                                                core::kMinRadius,
+                                                std::nextafter(core::kMinRadius, 0.0),
+                                                core::kMaxRadius,
+                                                std::nextafter(core::kMaxRadius, kInf),
+                                                core::kMaxCoordinate,
+                                                -core::kMaxCoordinate,
+                                                std::nextafter(core::kMaxCoordinate, kInf),
                                                 1e-12,
                                                 1e12,
                                                 1e-6,
@@ -105,8 +105,8 @@ class FuzzInput {
   }
 
   /// Five numbers: center.x, center.y, radius_x, radius_y, angle.
-  Ellipse ellipse() {
-    Ellipse e;
+  core::Ellipse ellipse() {
+    core::Ellipse e;
     e.center.x() = number();
     e.center.y() = number();
     e.radius_x = number();
@@ -129,16 +129,16 @@ class FuzzInput {
 
 /// The core's validity rule restated from ellipse.h's documentation, independently of
 /// invalidReason(): the targets check that the two agree.
-inline bool documentedValid(const Ellipse& e) {
+inline bool documentedValid(const core::Ellipse& e) {
   const double fields[] = {e.center.x(), e.center.y(), e.radius_x, e.radius_y, e.angle};
   for (double v : fields) {
     if (!std::isfinite(v)) return false;
   }
   for (double r : {e.radius_x, e.radius_y}) {
-    if (!(r >= kMinRadius && r <= kMaxRadius)) return false;
+    if (!(r >= core::kMinRadius && r <= core::kMaxRadius)) return false;
   }
   for (double c : {e.center.x(), e.center.y()}) {
-    if (!(std::fabs(c) <= kMaxCoordinate)) return false;
+    if (!(std::fabs(c) <= core::kMaxCoordinate)) return false;
   }
   return true;
 }
@@ -150,7 +150,7 @@ inline std::string text(double value) {
   return buffer;
 }
 
-inline std::string describe(const Ellipse& e) {
+inline std::string describe(const core::Ellipse& e) {
   char buffer[160];
   std::snprintf(buffer, sizeof buffer, "{%.17g, %.17g, %.17g, %.17g, %.17g}", e.center.x(),
                 e.center.y(), e.radius_x, e.radius_y, e.angle);

@@ -135,7 +135,7 @@ void checkAccepted(const NodeConfig& config) {
                "accepted rate " + std::to_string(config.rate_hz));
   FUZZ_REQUIRE(config.tf_timeout_s <= kMaxTfTimeoutS,
                "accepted tf_timeout " + std::to_string(config.tf_timeout_s));
-  FUZZ_REQUIRE(config.padding_m <= kMaxRadius, "accepted padding " + std::to_string(config.padding_m));
+  FUZZ_REQUIRE(config.padding_m <= core::kMaxRadius, "accepted padding " + std::to_string(config.padding_m));
   std::set<std::string> names;
   for (const auto* list : {&config.links, &config.obstacles}) {
     for (const EllipseSpec& spec : *list) {
@@ -143,10 +143,10 @@ void checkAccepted(const NodeConfig& config) {
       FUZZ_REQUIRE(!invalid, "accepted ellipse '" + spec.name + "' with bad " +
                                  (invalid ? invalid->key : std::string()));
       FUZZ_REQUIRE(names.insert(spec.name).second, "accepted duplicate name '" + spec.name + "'");
-      const Ellipse padded = paddedEllipse(spec, config.padding_m);
+      const core::Ellipse padded = paddedEllipse(spec, config.padding_m);
       FUZZ_REQUIRE(
-          invalidReason(padded).empty(),
-          "accepted ellipse '" + spec.name + "' that the core refuses: " + invalidReason(padded));
+          core::invalidReason(padded).empty(),
+          "accepted ellipse '" + spec.name + "' that the core refuses: " + core::invalidReason(padded));
     }
   }
   for (const auto& [a, b] : config.allowed_pairs) {

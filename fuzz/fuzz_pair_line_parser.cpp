@@ -58,7 +58,7 @@ std::string shown(std::string_view line) {
 
 bool startsWith(const std::string& text, const char* prefix) { return text.rfind(prefix, 0) == 0; }
 
-void checkError(const PairLine& parsed, std::string_view line, std::size_t token_count) {
+void checkError(const core::PairLine& parsed, std::string_view line, std::size_t token_count) {
   const std::string& error = parsed.error;
   FUZZ_REQUIRE(!error.empty() && error.size() <= kMaxErrorLength,
                "error empty or too long (" + std::to_string(error.size()) + ") for " + shown(line));
@@ -74,7 +74,7 @@ void checkError(const PairLine& parsed, std::string_view line, std::size_t token
   }
 }
 
-void checkPair(const PairLine& parsed, const std::vector<std::string_view>& fields,
+void checkPair(const core::PairLine& parsed, const std::vector<std::string_view>& fields,
                std::string_view line) {
   FUZZ_REQUIRE(fields.size() == 10, "pair from " + std::to_string(fields.size()) + " fields");
   FUZZ_REQUIRE(parsed.error.empty(), "pair with an error: " + parsed.error);
@@ -102,8 +102,8 @@ void checkPair(const PairLine& parsed, const std::vector<std::string_view>& fiel
     reprinted.append(number, result.ptr);
     reprinted += i % 2 ? '\t' : ' ';
   }
-  const PairLine again = parsePairLine(reprinted);
-  FUZZ_REQUIRE(again.kind == PairLine::Kind::Pair && again.first.center == parsed.first.center &&
+  const core::PairLine again = core::parsePairLine(reprinted);
+  FUZZ_REQUIRE(again.kind == core::PairLine::Kind::Pair && again.first.center == parsed.first.center &&
                    again.first.radius_x == parsed.first.radius_x &&
                    again.first.radius_y == parsed.first.radius_y &&
                    again.first.angle == parsed.first.angle &&
@@ -113,9 +113,9 @@ void checkPair(const PairLine& parsed, const std::vector<std::string_view>& fiel
                    again.second.angle == parsed.second.angle,
                "printing the pair back does not parse to the same values: " + shown(reprinted));
 
-  const bool overlapping = overlap(parsed.first, parsed.second);
-  const double t = contactScale(parsed.first, parsed.second);
-  FUZZ_REQUIRE(std::isfinite(t) && t >= 0.0 && overlapping == overlap(parsed.second, parsed.first),
+  const bool overlapping = core::overlap(parsed.first, parsed.second);
+  const double t = core::contactScale(parsed.first, parsed.second);
+  FUZZ_REQUIRE(std::isfinite(t) && t >= 0.0 && overlapping == core::overlap(parsed.second, parsed.first),
                "core misbehaves on the parsed pair from " + shown(line));
 }
 
@@ -131,7 +131,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   using namespace ellipse_collision;
   using namespace ellipse_collision::fuzz;
   const std::string_view line(reinterpret_cast<const char*>(data), size);
-  const PairLine parsed = parsePairLine(line);
+  const core::PairLine parsed = core::parsePairLine(line);
 
   std::string_view content = line;
   if (!content.empty() && content.back() == '\r') content.remove_suffix(1);
@@ -139,15 +139,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const bool comment = !fields.empty() && fields.front().front() == '#';
 
   switch (parsed.kind) {
-    case PairLine::Kind::Skip:
+    case core::PairLine::Kind::Skip:
       FUZZ_REQUIRE(fields.empty() || comment,
                    "skipped a line that is not blank or a comment: " + shown(line));
       break;
-    case PairLine::Kind::Error:
+    case core::PairLine::Kind::Error:
       FUZZ_REQUIRE(!fields.empty() && !comment, "error for a blank or comment line " + shown(line));
       checkError(parsed, line, fields.size());
       break;
-    case PairLine::Kind::Pair:
+    case core::PairLine::Kind::Pair:
       FUZZ_REQUIRE(!comment, "pair from a comment line " + shown(line));
       checkPair(parsed, fields, line);
       break;

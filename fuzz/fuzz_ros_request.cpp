@@ -22,10 +22,10 @@
 #include <string>
 #include <vector>
 
-#include "ellipse_collision/frame_projection.h"
+#include "ellipse_collision/core/frame_projection.h"
 #include "ellipse_collision/ros/conversions.h"
 #include "ellipse_collision/ros/ellipse_registry.h"
-#include "ellipse_collision/scene_check.h"
+#include "ellipse_collision/core/scene_check.h"
 #include "fuzz_input.h"
 
 namespace ellipse_collision::fuzz {
@@ -52,14 +52,14 @@ bool sameSpec(const EllipseSpec& a, const EllipseSpec& b) {
          sameBits(a.radius_y, b.radius_y) && sameBits(a.padding, b.padding);
 }
 
-bool sameMsg(const EllipseMsg& a, const EllipseMsg& b) {
+bool sameMsg(const Ellipse& a, const Ellipse& b) {
   return a.name == b.name && a.frame_id == b.frame_id && sameBits(a.x, b.x) && sameBits(a.y, b.y) &&
          sameBits(a.angle, b.angle) && sameBits(a.radius_x, b.radius_x) &&
          sameBits(a.radius_y, b.radius_y) && sameBits(a.padding, b.padding);
 }
 
-EllipseMsg readMsg(FuzzInput& input) {
-  EllipseMsg msg;
+Ellipse readMsg(FuzzInput& input) {
+  Ellipse msg;
   msg.name = pick(input, kNames);
   msg.frame_id = pick(input, kFrames);
   msg.x = input.number();
@@ -75,10 +75,10 @@ EllipseMsg readMsg(FuzzInput& input) {
 /// name, or "". The padded sums are formed in the same order as paddedEllipse().
 std::string expectedInvalidKey(const EllipseSpec& s, double global_padding) {
   const auto coordinate_bad = [](double v) {
-    return !std::isfinite(v) || std::fabs(v) > kMaxCoordinate;
+    return !std::isfinite(v) || std::fabs(v) > core::kMaxCoordinate;
   };
   const auto radius_bad = [](double v) {
-    return !(std::isfinite(v) && v > 0.0) || v < kMinRadius || v > kMaxRadius;
+    return !(std::isfinite(v) && v > 0.0) || v < core::kMinRadius || v > core::kMaxRadius;
   };
   if (s.name.empty()) return "name";
   if (s.frame_id.empty() || s.frame_id.front() == '/') return "frame_id";
@@ -87,16 +87,16 @@ std::string expectedInvalidKey(const EllipseSpec& s, double global_padding) {
   if (!std::isfinite(s.angle)) return "angle";
   if (radius_bad(s.radius_x)) return "radius_x";
   if (radius_bad(s.radius_y)) return "radius_y";
-  if (!(std::isfinite(s.padding) && s.padding >= 0.0) || s.padding > kMaxRadius) return "padding";
+  if (!(std::isfinite(s.padding) && s.padding >= 0.0) || s.padding > core::kMaxRadius) return "padding";
   const double padded_x = s.radius_x + s.padding + global_padding;
   const double padded_y = s.radius_y + s.padding + global_padding;
-  if (!(padded_x >= kMinRadius && padded_x <= kMaxRadius)) return "radius_x";
-  if (!(padded_y >= kMinRadius && padded_y <= kMaxRadius)) return "radius_y";
+  if (!(padded_x >= core::kMinRadius && padded_x <= core::kMaxRadius)) return "radius_x";
+  if (!(padded_y >= core::kMinRadius && padded_y <= core::kMaxRadius)) return "radius_y";
   return "";
 }
 
 /// Converts and validates the entries of one request like the node; "" when all are accepted.
-std::string validate(const std::vector<EllipseMsg>& msgs, const std::vector<EllipseSpec>& specs,
+std::string validate(const std::vector<Ellipse>& msgs, const std::vector<EllipseSpec>& specs,
                      const std::string& field, double global_padding) {
   for (std::size_t i = 0; i < specs.size(); ++i) {
     FUZZ_REQUIRE(sameSpec(specs[i], fromMsg(msgs[i])) && sameMsg(toMsg(specs[i]), msgs[i]),
@@ -117,11 +117,11 @@ std::string validate(const std::vector<EllipseMsg>& msgs, const std::vector<Elli
       return message;
     }
     // Accepted means checkable: the padded ellipse is one the core takes (before any transform).
-    const Ellipse padded = paddedEllipse(specs[i], global_padding);
-    FUZZ_REQUIRE(invalidReason(padded).empty(),
+    const core::Ellipse padded = paddedEllipse(specs[i], global_padding);
+    FUZZ_REQUIRE(core::invalidReason(padded).empty(),
                  field + "[" + std::to_string(i) +
                      "] passed request validation but the core refuses it: " +
-                     invalidReason(padded) + " (spec " + describe(padded) + ")");
+                     core::invalidReason(padded) + " (spec " + describe(padded) + ")");
   }
   return {};
 }
@@ -170,12 +170,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (int operation = 0; operation < 8 && input.remaining() > 0; ++operation) {
     const Snapshot before = snapshot(registry);
     const int kind = input.integer(0, 3);
-    std::vector<EllipseMsg> msgs(static_cast<std::size_t>(input.integer(0, kMaxEntries)));
-    for (EllipseMsg& msg : msgs) msg = readMsg(input);
+    std::vector<Ellipse> msgs(static_cast<std::size_t>(input.integer(0, kMaxEntries)));
+    for (Ellipse& msg : msgs) msg = readMsg(input);
 
     if (kind == 0) {  // ~add_obstacles
       std::vector<EllipseSpec> specs;
-      for (const EllipseMsg& msg : msgs) specs.push_back(fromMsg(msg));
+      for (const Ellipse& msg : msgs) specs.push_back(fromMsg(msg));
       std::string error = validate(msgs, specs, "obstacles", global_padding);
       if (error.empty()) error = registry.addObstacles(specs, "obstacles");
       if (!error.empty()) {
@@ -196,7 +196,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       }
     } else if (kind == 1) {  // ~remove_obstacles
       std::vector<std::string> names;
-      for (const EllipseMsg& msg : msgs) names.push_back(msg.name);
+      for (const Ellipse& msg : msgs) names.push_back(msg.name);
       const std::string error = registry.removeObstacles(names, "names");
       if (!error.empty()) {
         FUZZ_REQUIRE(sameSnapshot(before, snapshot(registry)),
@@ -223,7 +223,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             msgs[i].frame_id.empty() ? array.header.frame_id : msgs[i].frame_id;
         FUZZ_REQUIRE(specs[i].frame_id == frame, "frame_id not inherited as documented");
       }
-      std::vector<EllipseMsg> resolved = msgs;
+      std::vector<Ellipse> resolved = msgs;
       for (std::size_t i = 0; i < specs.size(); ++i) resolved[i].frame_id = specs[i].frame_id;
       std::string error = validate(resolved, specs, "ellipses", global_padding);
       if (error.empty()) error = registry.replaceTopicObstacles(specs, "ellipses");
@@ -236,28 +236,28 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       }
     } else {  // ~check_collisions query: validated, then placed and checked with the stored ones
       std::vector<EllipseSpec> specs;
-      for (const EllipseMsg& msg : msgs) specs.push_back(fromMsg(msg));
+      for (const Ellipse& msg : msgs) specs.push_back(fromMsg(msg));
       if (validate(msgs, specs, "query", global_padding).empty()) {
-        std::vector<NamedEllipse> scene;
+        std::vector<core::NamedEllipse> scene;
         std::set<std::string> names;
         for (const EllipseSpec& spec : specs) {
           if (registry.contains(spec.name) || !names.insert(spec.name).second) continue;
-          const ProjectionResult placed = projectToPlane(paddedEllipse(spec, global_padding),
+          const core::ProjectionResult placed = core::projectToPlane(paddedEllipse(spec, global_padding),
                                                          Eigen::Isometry3d::Identity(), spec.name);
           FUZZ_REQUIRE(placed.ok(), "accepted query refused by projectToPlane: " + placed.error);
-          scene.push_back({spec.name, EllipseRole::Query, placed.ellipse});
+          scene.push_back({spec.name, core::EllipseRole::Query, placed.ellipse});
         }
         for (const auto& [name, stored] : registry.entries()) {
-          const ProjectionResult placed = projectToPlane(paddedEllipse(stored.spec, global_padding),
+          const core::ProjectionResult placed = core::projectToPlane(paddedEllipse(stored.spec, global_padding),
                                                          Eigen::Isometry3d::Identity(), name);
           FUZZ_REQUIRE(placed.ok(),
                        "stored '" + name + "' refused by projectToPlane: " + placed.error);
           scene.push_back({name, stored.role(), placed.ellipse});
         }
-        const SceneCheckResult result = checkScene(scene, SceneRules{});
+        const core::SceneCheckResult result = core::checkScene(scene, core::SceneRules{});
         FUZZ_REQUIRE(result.ok(), "checkScene refused a validated scene: " + result.error);
-        for (const CollidingPair& pair : result.collisions) {
-          const CollidingPair back = fromMsg(toMsg(pair));
+        for (const core::CollidingPair& pair : result.collisions) {
+          const core::CollidingPair back = fromMsg(toMsg(pair));
           FUZZ_REQUIRE(back.name_a == pair.name_a && back.name_b == pair.name_b &&
                            sameBits(back.contact_scale, pair.contact_scale),
                        "CollisionPair round trip changed a field");

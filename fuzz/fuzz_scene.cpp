@@ -25,10 +25,10 @@
 #include <tuple>
 #include <vector>
 
-#include "ellipse_collision/distance.h"
+#include "ellipse_collision/core/distance.h"
 #include "ellipse_collision/ellipse_collision.h"
-#include "ellipse_collision/frame_projection.h"
-#include "ellipse_collision/scene_check.h"
+#include "ellipse_collision/core/frame_projection.h"
+#include "ellipse_collision/core/scene_check.h"
 #include "fuzz_input.h"
 
 namespace ellipse_collision::fuzz {
@@ -41,21 +41,21 @@ constexpr int kNameCount = sizeof(kNames) / sizeof(kNames[0]);
 
 bool sameBits(double x, double y) { return std::memcmp(&x, &y, sizeof x) == 0; }
 
-bool sameNear(const NearPair& p, const NearPair& q) {
+bool sameNear(const core::NearPair& p, const core::NearPair& q) {
   return p.name_a == q.name_a && p.name_b == q.name_b && sameBits(p.distance, q.distance) &&
          sameBits(p.point_a.x(), q.point_a.x()) && sameBits(p.point_a.y(), q.point_a.y()) &&
          sameBits(p.point_b.x(), q.point_b.x()) && sameBits(p.point_b.y(), q.point_b.y());
 }
 
-bool sameResult(const SceneCheckResult& x, const SceneCheckResult& y) {
+bool sameResult(const core::SceneCheckResult& x, const core::SceneCheckResult& y) {
   if (x.warnings.size() != y.warnings.size()) return false;
   for (std::size_t i = 0; i < x.warnings.size(); ++i) {
     if (!sameNear(x.warnings[i], y.warnings[i])) return false;
   }
   if (x.error != y.error || x.collisions.size() != y.collisions.size()) return false;
   for (std::size_t i = 0; i < x.collisions.size(); ++i) {
-    const CollidingPair& p = x.collisions[i];
-    const CollidingPair& q = y.collisions[i];
+    const core::CollidingPair& p = x.collisions[i];
+    const core::CollidingPair& q = y.collisions[i];
     // Same bits: the scene is a set, its order must not change any rounding.
     if (p.name_a != q.name_a || p.name_b != q.name_b ||
         std::memcmp(&p.contact_scale, &q.contact_scale, sizeof(double)) != 0) {
@@ -66,7 +66,7 @@ bool sameResult(const SceneCheckResult& x, const SceneCheckResult& y) {
 }
 
 /// The first bad entry, restating scene_check.h's rules; -1 when the scene is good.
-int firstBadEntry(const std::vector<NamedEllipse>& scene) {
+int firstBadEntry(const std::vector<core::NamedEllipse>& scene) {
   std::set<std::string> seen;
   for (std::size_t i = 0; i < scene.size(); ++i) {
     if (scene[i].name.empty() || !seen.insert(scene[i].name).second ||
@@ -78,10 +78,10 @@ int firstBadEntry(const std::vector<NamedEllipse>& scene) {
 }
 
 void checkScenes(FuzzInput& input) {
-  std::vector<NamedEllipse> scene(static_cast<std::size_t>(input.integer(0, kMaxEllipses)));
-  for (NamedEllipse& entry : scene) {
+  std::vector<core::NamedEllipse> scene(static_cast<std::size_t>(input.integer(0, kMaxEllipses)));
+  for (core::NamedEllipse& entry : scene) {
     entry.name = kNames[input.integer(0, kNameCount - 1)];
-    entry.role = static_cast<EllipseRole>(input.integer(0, 2));
+    entry.role = static_cast<core::EllipseRole>(input.integer(0, 2));
     entry.ellipse = input.ellipse();
     // Mostly valid fields, so that the pair loop runs: arbitrary values are rarely valid.
     if (input.flag()) {
@@ -94,7 +94,7 @@ void checkScenes(FuzzInput& input) {
       if (!std::isfinite(entry.ellipse.radius_y)) entry.ellipse.radius_y = 1.0;
     }
   }
-  SceneRules rules;
+  core::SceneRules rules;
   rules.self_collision = input.flag();
   for (int i = input.integer(0, 4); i > 0; --i) {
     rules.allowed.add(kNames[input.integer(0, kNameCount - 1)],
@@ -116,8 +116,8 @@ void checkScenes(FuzzInput& input) {
   }
   const std::string nearest_name = kNames[input.integer(0, kNameCount - 1)];
 
-  const SceneCheckResult result = checkScene(scene, rules, only_names);
-  const NearestResult nearest = nearestTo(scene, rules, nearest_name);
+  const core::SceneCheckResult result = core::checkScene(scene, rules, only_names);
+  const core::NearestResult nearest = core::nearestTo(scene, rules, nearest_name);
   if (!(std::isfinite(rules.warning_distance) && rules.warning_distance >= 0.0)) {
     FUZZ_REQUIRE(!result.ok() && result.collisions.empty() && result.warnings.empty() &&
                      result.error.rfind("warning_distance = ", 0) == 0 && !nearest.ok(),
@@ -138,23 +138,23 @@ void checkScenes(FuzzInput& input) {
 
   // Each unordered pair once, read lower role first, then lower name, in that order: the loops
   // below meet them in the documented output order.
-  std::vector<const NamedEllipse*> sorted;
-  for (const NamedEllipse& e : scene) sorted.push_back(&e);
-  std::sort(sorted.begin(), sorted.end(), [](const NamedEllipse* x, const NamedEllipse* y) {
+  std::vector<const core::NamedEllipse*> sorted;
+  for (const core::NamedEllipse& e : scene) sorted.push_back(&e);
+  std::sort(sorted.begin(), sorted.end(), [](const core::NamedEllipse* x, const core::NamedEllipse* y) {
     return std::tie(x->role, x->name) < std::tie(y->role, y->name);
   });
-  SceneCheckResult expected;
+  core::SceneCheckResult expected;
   for (std::size_t i = 0; i < sorted.size(); ++i) {
     for (std::size_t j = i + 1; j < sorted.size(); ++j) {
-      const NamedEllipse& first = *sorted[i];
-      const NamedEllipse& second = *sorted[j];
-      if (!pairWanted(first, second, rules, only_names)) continue;
-      if (overlap(first.ellipse, second.ellipse)) {
+      const core::NamedEllipse& first = *sorted[i];
+      const core::NamedEllipse& second = *sorted[j];
+      if (!core::pairWanted(first, second, rules, only_names)) continue;
+      if (core::overlap(first.ellipse, second.ellipse)) {
         expected.collisions.push_back(
-            {first.name, second.name, contactScale(first.ellipse, second.ellipse)});
+            {first.name, second.name, core::contactScale(first.ellipse, second.ellipse)});
         continue;
       }
-      const Clearance c = distance(first.ellipse, second.ellipse);
+      const core::Clearance c = core::distance(first.ellipse, second.ellipse);
       if (c.separated && c.distance < rules.warning_distance) {
         expected.warnings.push_back({first.name, second.name, c.distance, c.point_a, c.point_b});
       }
@@ -169,27 +169,27 @@ void checkScenes(FuzzInput& input) {
 
   // nearestTo(): every partner the rules allow, whatever the name filter.
   const auto target = std::find_if(scene.begin(), scene.end(),
-                                   [&](const NamedEllipse& e) { return e.name == nearest_name; });
+                                   [&](const core::NamedEllipse& e) { return e.name == nearest_name; });
   if (target == scene.end()) {
     FUZZ_REQUIRE(!nearest.ok() && !nearest.found, "nearestTo found an unknown name");
   } else {
     FUZZ_REQUIRE(nearest.ok(), "nearestTo refused a good scene: " + nearest.error);
     bool found = false, colliding = false;
     double best_scale = 0.0;
-    NearPair best;
-    for (const NamedEllipse* other : sorted) {  // in pair order: the first of equals wins
+    core::NearPair best;
+    for (const core::NamedEllipse* other : sorted) {  // in pair order: the first of equals wins
       if (other == &*target) continue;
       const bool target_first =
           std::tie(target->role, target->name) < std::tie(other->role, other->name);
-      const NamedEllipse& first = target_first ? *target : *other;
-      const NamedEllipse& second = target_first ? *other : *target;
-      if (!pairWanted(first, second, rules, {})) continue;
-      const Clearance c = distance(first.ellipse, second.ellipse);
-      NearPair candidate{target->name, other->name, c.distance,
+      const core::NamedEllipse& first = target_first ? *target : *other;
+      const core::NamedEllipse& second = target_first ? *other : *target;
+      if (!core::pairWanted(first, second, rules, {})) continue;
+      const core::Clearance c = core::distance(first.ellipse, second.ellipse);
+      core::NearPair candidate{target->name, other->name, c.distance,
                          target_first ? c.point_a : c.point_b,
                          target_first ? c.point_b : c.point_a};
       if (!c.separated) {
-        const double scale = contactScale(first.ellipse, second.ellipse);
+        const double scale = core::contactScale(first.ellipse, second.ellipse);
         if (!found || !colliding || scale < best_scale) {
           best = candidate, best_scale = scale;
         }
@@ -205,13 +205,13 @@ void checkScenes(FuzzInput& input) {
                      "' at " + text(best.distance));
   }
 
-  std::vector<NamedEllipse> reversed(scene.rbegin(), scene.rend());
-  FUZZ_REQUIRE(sameResult(result, checkScene(reversed, rules, only_names)),
+  std::vector<core::NamedEllipse> reversed(scene.rbegin(), scene.rend());
+  FUZZ_REQUIRE(sameResult(result, core::checkScene(reversed, rules, only_names)),
                "checkScene depends on the order of the ellipses");
 }
 
 void checkProjection(FuzzInput& input) {
-  const Ellipse in_frame = input.ellipse();
+  const core::Ellipse in_frame = input.ellipse();
   const Eigen::Vector3d translation(input.number(), input.number(), input.number());
   const bool about_z_only = input.flag();
   Eigen::Matrix3d rotation;
@@ -228,7 +228,7 @@ void checkProjection(FuzzInput& input) {
   fixed_from_frame.linear() = rotation;
   fixed_from_frame.translation() = translation;
 
-  const ProjectionResult result = projectToPlane(in_frame, fixed_from_frame, "e");
+  const core::ProjectionResult result = core::projectToPlane(in_frame, fixed_from_frame, "e");
   if (!documentedValid(in_frame) || !fixed_from_frame.matrix().allFinite()) {
     FUZZ_REQUIRE(!result.ok() && result.error.find("'e'") != std::string::npos,
                  "projectToPlane accepted an invalid ellipse or transform: " + describe(in_frame));
@@ -245,7 +245,7 @@ void checkProjection(FuzzInput& input) {
   FUZZ_REQUIRE(
       documentedValid(result.ellipse),
       "projectToPlane accepted a projection the core refuses: " + describe(result.ellipse));
-  const Ellipse& e = result.ellipse;
+  const core::Ellipse& e = result.ellipse;
   // radius_x >= radius_y up to rounding: for a near-circle the minor radius |det| / major can
   // come out an ulp above the major one, which changes no collision answer.
   FUZZ_REQUIRE(std::isfinite(e.center.x()) && std::isfinite(e.center.y()) &&
@@ -262,8 +262,8 @@ void checkProjection(FuzzInput& input) {
         "a rotation about z changed the radii: " + describe(e) + " from " + describe(in_frame));
   }
   // The node hands projections straight to checkScene.
-  const SceneCheckResult scene = checkScene(
-      {{"e", EllipseRole::Link, e}, {"f", EllipseRole::Obstacle, in_frame}}, SceneRules{});
+  const core::SceneCheckResult scene = core::checkScene(
+      {{"e", core::EllipseRole::Link, e}, {"f", core::EllipseRole::Obstacle, in_frame}}, core::SceneRules{});
   FUZZ_REQUIRE(scene.ok(), "checkScene refused a projection: " + scene.error);
 }
 

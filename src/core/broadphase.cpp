@@ -1,4 +1,4 @@
-#include "ellipse_collision/broadphase.h"
+#include "ellipse_collision/core/broadphase.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 #include "broadphase_detail.h"
 #include "sin_cos.h"
 
-namespace ellipse_collision {
+namespace ellipse_collision::core {
 namespace {
 
 // Relative widening of every box: far above the rounding of its bounds, far below any size that
@@ -251,4 +251,4 @@ std::vector<IndexPair> overlappingBoxPairs(const std::vector<BoundingBox>& boxes
   return BoxGrid(boxes).overlappingPairs();
 }
 
-}  // namespace ellipse_collision
+}  // namespace ellipse_collision::core

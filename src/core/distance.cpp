@@ -1,12 +1,12 @@
-#include "ellipse_collision/distance.h"
+#include "ellipse_collision/core/distance.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-#include "ellipse_collision/overlap.h"
+#include "ellipse_collision/core/overlap.h"
 
-namespace ellipse_collision {
+namespace ellipse_collision::core {
 namespace {
 
 using Eigen::Vector2d;
@@ -281,4 +281,4 @@ Clearance distance(const Ellipse& a, const Ellipse& b) {
   return result;
 }
 
-}  // namespace ellipse_collision
+}  // namespace ellipse_collision::core

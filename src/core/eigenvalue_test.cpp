@@ -1,13 +1,13 @@
-#include "ellipse_collision/eigenvalue_test.h"
+#include "ellipse_collision/core/eigenvalue_test.h"
 
 #include <algorithm>
 #include <cmath>
 
 #include "eigenvalue_test_detail.h"
-#include "ellipse_collision/prepared_ellipse.h"
+#include "ellipse_collision/core/prepared_ellipse.h"
 #include "relative_shape.h"
 
-namespace ellipse_collision {
+namespace ellipse_collision::core {
 namespace detail {
 namespace {
 
@@ -155,4 +155,4 @@ bool eigenvalueOverlapPrincipal(const PrincipalShape& shape) {
 }
 
 }  // namespace detail
-}  // namespace ellipse_collision
+}  // namespace ellipse_collision::core

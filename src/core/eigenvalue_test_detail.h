@@ -4,7 +4,7 @@
 
 #include "relative_shape.h"
 
-namespace ellipse_collision::detail {
+namespace ellipse_collision::core::detail {
 
 /// Q(s) = sum_i weight[i] * s (1 - s) / (lambda[i] (1 - s) + s): the eigenvalue test's function in
 /// the eigenbasis of the other ellipse's shape matrix, in the frame where the unit ellipse is the
@@ -40,4 +40,4 @@ bool eigenvalueOverlapPrincipal(const PrincipalShape& shape);
 /// t* = sqrt(max Q), fully converged.
 double contactScalePrincipal(const PrincipalShape& shape);
 
-}  // namespace ellipse_collision::detail
+}  // namespace ellipse_collision::core::detail

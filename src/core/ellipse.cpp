@@ -1,9 +1,9 @@
-#include "ellipse_collision/ellipse.h"
+#include "ellipse_collision/core/ellipse.h"
 
 #include <charconv>
 #include <cmath>
 
-namespace ellipse_collision {
+namespace ellipse_collision::core {
 namespace {
 
 // Shortest text that reads back as the same double, so a message shows exactly what was given.
@@ -50,4 +50,4 @@ std::string invalidReason(const Ellipse& ellipse) {
   return {};
 }
 
-}  // namespace ellipse_collision
+}  // namespace ellipse_collision::core

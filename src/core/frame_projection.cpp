@@ -1,4 +1,4 @@
-#include "ellipse_collision/frame_projection.h"
+#include "ellipse_collision/core/frame_projection.h"
 
 #include <algorithm>
 #include <array>
@@ -6,7 +6,7 @@
 #include <cmath>
 #include <utility>
 
-namespace ellipse_collision {
+namespace ellipse_collision::core {
 namespace {
 
 /// a*d - b*c with Kahan's fma trick: accurate to a few ulps even when the products cancel, which
@@ -116,4 +116,4 @@ ProjectionResult projectToPlane(const Ellipse& in_frame, const Eigen::Isometry3d
   return checkedProjection(std::move(result), name);
 }
 
-}  // namespace ellipse_collision
+}  // namespace ellipse_collision::core

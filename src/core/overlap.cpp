@@ -1,15 +1,15 @@
-#include "ellipse_collision/overlap.h"
+#include "ellipse_collision/core/overlap.h"
 
 #include <Eigen/Core>
 
 #include "eigenvalue_test_detail.h"
-#include "ellipse_collision/polygonal_test.h"
-#include "ellipse_collision/prepared_ellipse.h"
+#include "ellipse_collision/core/polygonal_test.h"
+#include "ellipse_collision/core/prepared_ellipse.h"
 #include "overlap_detail.h"
 #include "polygonal_test_detail.h"
 #include "relative_shape.h"
 
-namespace ellipse_collision {
+namespace ellipse_collision::core {
 namespace {
 
 /// Past the bounding circles: the inscribed circles meeting prove overlap, cheaply and free of
@@ -54,4 +54,4 @@ bool overlapWithPolygonalCap(const Ellipse& a, const Ellipse& b, int max_iterati
 }
 
 }  // namespace detail
-}  // namespace ellipse_collision
+}  // namespace ellipse_collision::core

@@ -1,4 +1,4 @@
-#include "ellipse_collision/pair_line_parser.h"
+#include "ellipse_collision/core/pair_line_parser.h"
 
 #include <algorithm>
 #include <array>
@@ -7,7 +7,7 @@
 #include <system_error>
 #include <utility>
 
-namespace ellipse_collision {
+namespace ellipse_collision::core {
 namespace {
 
 constexpr std::size_t kFieldCount = 10;
@@ -118,4 +118,4 @@ PairLine parsePairLine(std::string_view line) {
   return result;
 }
 
-}  // namespace ellipse_collision
+}  // namespace ellipse_collision::core

@@ -1,4 +1,4 @@
-#include "ellipse_collision/polygonal_test.h"
+#include "ellipse_collision/core/polygonal_test.h"
 
 #include <algorithm>
 #include <array>
@@ -6,7 +6,7 @@
 
 #include "polygonal_test_detail.h"
 
-namespace ellipse_collision {
+namespace ellipse_collision::core {
 namespace detail {
 namespace {
 
@@ -129,4 +129,4 @@ PolygonalResult polygonalTest(const Ellipse& a, const Ellipse& b, int max_iterat
   return detail::polygonalTestRelative(detail::canonicalRelativeShape(a, b), max_iterations);
 }
 
-}  // namespace ellipse_collision
+}  // namespace ellipse_collision::core

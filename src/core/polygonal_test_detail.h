@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
-#include "ellipse_collision/polygonal_test.h"
+#include "ellipse_collision/core/polygonal_test.h"
 #include "relative_shape.h"
 
-namespace ellipse_collision::detail {
+namespace ellipse_collision::core::detail {
 
 /// A point or vector of the relative frame, in plain doubles (see RelativeShape).
 struct Point {
@@ -120,4 +120,4 @@ inline PolygonalResult polygonalTestRelative(const RelativeShape& shape, int max
   return polygonalRefinement(shape, margins, max_iterations);
 }
 
-}  // namespace ellipse_collision::detail
+}  // namespace ellipse_collision::core::detail

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <tuple>
 
-namespace ellipse_collision::detail {
+namespace ellipse_collision::core::detail {
 
 PrincipalShape principalShape(const RelativeShape& shape) {
   const double m00 = shape.p_x * shape.p_x + shape.q_x * shape.q_x;
@@ -40,4 +40,4 @@ bool precedesAsUnitOnEqualArea(const Ellipse& a, const Ellipse& b) {
          std::make_tuple(b.radius_x, b.radius_y, b.angle, b.center.x(), b.center.y());
 }
 
-}  // namespace ellipse_collision::detail
+}  // namespace ellipse_collision::core::detail

@@ -1,10 +1,10 @@
 #pragma once
 
-#include "ellipse_collision/ellipse.h"
-#include "ellipse_collision/prepared_ellipse.h"
+#include "ellipse_collision/core/ellipse.h"
+#include "ellipse_collision/core/prepared_ellipse.h"
 #include "sin_cos.h"
 
-namespace ellipse_collision::detail {
+namespace ellipse_collision::core::detail {
 
 /// The per-ellipse factors of the frame change. PreparedEllipse computes them once; the plain API
 /// computes them per pair with this same function, so both APIs see the very same numbers.
@@ -112,4 +112,4 @@ struct PrincipalShape {
 
 PrincipalShape principalShape(const RelativeShape& shape);
 
-}  // namespace ellipse_collision::detail
+}  // namespace ellipse_collision::core::detail

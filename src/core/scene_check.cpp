@@ -1,4 +1,4 @@
-#include "ellipse_collision/scene_check.h"
+#include "ellipse_collision/core/scene_check.h"
 
 #include <algorithm>
 #include <charconv>
@@ -7,13 +7,13 @@
 #include <string_view>
 #include <tuple>
 
-#include "ellipse_collision/broadphase.h"
-#include "ellipse_collision/distance.h"
-#include "ellipse_collision/eigenvalue_test.h"
-#include "ellipse_collision/overlap.h"
-#include "ellipse_collision/prepared_ellipse.h"
+#include "ellipse_collision/core/broadphase.h"
+#include "ellipse_collision/core/distance.h"
+#include "ellipse_collision/core/eigenvalue_test.h"
+#include "ellipse_collision/core/overlap.h"
+#include "ellipse_collision/core/prepared_ellipse.h"
 
-namespace ellipse_collision {
+namespace ellipse_collision::core {
 namespace {
 
 // distance() is accurate to about epsilon times the radii and the centre distance (distance.h),
@@ -278,4 +278,4 @@ NearestResult nearestTo(const std::vector<NamedEllipse>& ellipses, const SceneRu
   return result;
 }
 
-}  // namespace ellipse_collision
+}  // namespace ellipse_collision::core

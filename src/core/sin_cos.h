@@ -8,7 +8,7 @@
 #error "sin_cos.h needs IEEE arithmetic: build the core without -ffast-math"
 #endif
 
-namespace ellipse_collision::detail {
+namespace ellipse_collision::core::detail {
 
 struct SinCos {
   double sin;
@@ -78,4 +78,4 @@ inline SinCosPair sinCosPair(double angle_a, double angle_b) {
 /// sinCosPair() for one angle: the same instructions, hence the same bits, as in a pair.
 inline SinCos sinCos(double angle) { return sinCosPair(angle, angle).first; }
 
-}  // namespace ellipse_collision::detail
+}  // namespace ellipse_collision::core::detail

@@ -59,8 +59,8 @@ geometry_msgs::Point point(const Eigen::Vector2d& xy, double z) {
 
 }  // namespace
 
-const char* CollisionMarkers::nameSpace(EllipseRole role) {
-  return role == EllipseRole::Link ? "links" : "obstacles";
+const char* CollisionMarkers::nameSpace(core::EllipseRole role) {
+  return role == core::EllipseRole::Link ? "links" : "obstacles";
 }
 
 std::int32_t CollisionMarkers::preferredId(const std::string& name) {
@@ -87,17 +87,17 @@ std::int32_t CollisionMarkers::idFor(const std::string& ns, const std::string& k
 }
 
 visualization_msgs::MarkerArray CollisionMarkers::update(
-    const std::vector<NamedEllipse>& placed, const std::vector<CollidingPair>& collisions,
-    const std::vector<NearPair>& warnings, const std::string& fixed_frame, const ros::Time& stamp) {
+    const std::vector<core::NamedEllipse>& placed, const std::vector<core::CollidingPair>& collisions,
+    const std::vector<core::NearPair>& warnings, const std::string& fixed_frame, const ros::Time& stamp) {
   std::set<std::string> colliding;
-  for (const CollidingPair& pair : collisions) colliding.insert({pair.name_a, pair.name_b});
+  for (const core::CollidingPair& pair : collisions) colliding.insert({pair.name_a, pair.name_b});
   std::set<std::string> warned;
-  for (const NearPair& pair : warnings) warned.insert({pair.name_a, pair.name_b});
+  for (const core::NearPair& pair : warnings) warned.insert({pair.name_a, pair.name_b});
 
   visualization_msgs::MarkerArray array;
   std::set<Key> shown_now;
-  for (const NamedEllipse& named : placed) {
-    if (named.role == EllipseRole::Query) continue;
+  for (const core::NamedEllipse& named : placed) {
+    if (named.role == core::EllipseRole::Query) continue;
     const std::string ns = nameSpace(named.role);
     Marker marker =
         emptyMarker(fixed_frame, stamp, ns, idFor(ns, named.name, preferredId(named.name)));
@@ -119,7 +119,7 @@ visualization_msgs::MarkerArray CollisionMarkers::update(
     shown_now.insert({marker.ns, marker.id});
     array.markers.push_back(marker);
   }
-  for (const NearPair& pair : warnings) {
+  for (const core::NearPair& pair : warnings) {
     Marker line = emptyMarker(fixed_frame, stamp, kClearanceNamespace,
                               idFor(kClearanceNamespace, pairKey(pair.name_a, pair.name_b),
                                     preferredId(pair.name_a, pair.name_b)));

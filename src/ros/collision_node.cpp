@@ -23,8 +23,8 @@ std::string join(const std::vector<std::string>& parts, const std::string& separ
   return joined;
 }
 
-SceneRules makeRules(const NodeConfig& config) {
-  SceneRules rules;
+core::SceneRules makeRules(const NodeConfig& config) {
+  core::SceneRules rules;
   rules.self_collision = config.self_collision;
   rules.warning_distance = config.warning_distance_m;
   for (const auto& pair : config.allowed_pairs) rules.allowed.add(pair.first, pair.second);
@@ -87,9 +87,9 @@ CollisionNode::CheckOutcome CollisionNode::check(const ros::Time& time,
   CheckOutcome outcome;
   ScenePlacement placement(tf_buffer_, config_.fixed_frame, config_.padding_m, time, timeout);
 
-  std::vector<NamedEllipse> scene;
+  std::vector<core::NamedEllipse> scene;
   for (std::size_t i = 0; i < query.size(); ++i) {
-    const ScenePlacement::Placement placed = placement.place(query[i], EllipseRole::Query);
+    const ScenePlacement::Placement placed = placement.place(query[i], core::EllipseRole::Query);
     if (placed.status == ScenePlacement::Status::FrameUnavailable) {
       outcome.error = entry("query", i) + ".frame_id = '" + query[i].frame_id +
                       "': expected a frame with a transform to '" + config_.fixed_frame +
@@ -124,7 +124,7 @@ CollisionNode::CheckOutcome CollisionNode::check(const ros::Time& time,
   }
   outcome.unavailable_frames.assign(unavailable.begin(), unavailable.end());
 
-  SceneCheckResult result = checkScene(scene, rules_, only_names);
+  core::SceneCheckResult result = core::checkScene(scene, rules_, only_names);
   if (!result.ok()) {
     // Requests are validated before they get here, so this is a bug worth shouting about.
     ROS_ERROR_STREAM("ellipse_collision: scene refused by the core: " << result.error);
@@ -137,12 +137,12 @@ CollisionNode::CheckOutcome CollisionNode::check(const ros::Time& time,
   if (min_distance_of.empty()) return outcome;
   const std::string where = "min_distance_of = '" + min_distance_of + "': ";
   const bool placed = std::any_of(scene.begin(), scene.end(),
-                                  [&](const NamedEllipse& e) { return e.name == min_distance_of; });
+                                  [&](const core::NamedEllipse& e) { return e.name == min_distance_of; });
   if (!placed) {
     outcome.nearest_problem = where + "not measured, the ellipse could not be placed";
     return outcome;
   }
-  const NearestResult nearest = nearestTo(scene, rules_, min_distance_of);
+  const core::NearestResult nearest = core::nearestTo(scene, rules_, min_distance_of);
   if (!nearest.ok()) {
     ROS_ERROR_STREAM("ellipse_collision: nearest refused by the core: " << nearest.error);
     outcome.error = "internal error: " + nearest.error;
@@ -311,7 +311,7 @@ bool CollisionNode::onCheckCollisions(CheckCollisions::Request& request,
 bool CollisionNode::onAddObstacles(AddObstacles::Request& request,
                                    AddObstacles::Response& response) {
   std::vector<EllipseSpec> specs;
-  for (const EllipseMsg& msg : request.obstacles) specs.push_back(fromMsg(msg));
+  for (const Ellipse& msg : request.obstacles) specs.push_back(fromMsg(msg));
   std::string error = validateAttached(specs, "obstacles");
   if (error.empty()) error = registry_.addObstacles(specs, "obstacles");
   response.success = error.empty();

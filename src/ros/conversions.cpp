@@ -6,7 +6,7 @@ std::optional<FieldError> findInvalidPaddedField(const EllipseSpec& spec, double
                                                  const std::string& frame_key) {
   if (auto invalid = findInvalidField(spec, frame_key)) return invalid;
   // The same sums as paddedEllipse(), so that what passes here passes the core's invalidReason().
-  const Ellipse padded = paddedEllipse(spec, global_padding);
+  const core::Ellipse padded = paddedEllipse(spec, global_padding);
   const struct {
     const char* key;
     double value;
@@ -14,20 +14,20 @@ std::optional<FieldError> findInvalidPaddedField(const EllipseSpec& spec, double
   } radii[] = {{"radius_x", spec.radius_x, padded.radius_x},
                {"radius_y", spec.radius_y, padded.radius_y}};
   for (const auto& radius : radii) {
-    if (!(radius.padded >= kMinRadius && radius.padded <= kMaxRadius)) {
+    if (!(radius.padded >= core::kMinRadius && radius.padded <= core::kMaxRadius)) {
       return FieldError{radius.key,
                         "a number whose padded radius (" + std::string(radius.key) + " + padding " +
                             formatNumber(spec.padding) + " + global padding " +
                             formatNumber(global_padding) + " = " + formatNumber(radius.padded) +
-                            ") lies within [" + formatNumber(kMinRadius) + ", " +
-                            formatNumber(kMaxRadius) + "]",
+                            ") lies within [" + formatNumber(core::kMinRadius) + ", " +
+                            formatNumber(core::kMaxRadius) + "]",
                         formatNumber(radius.value)};
     }
   }
   return std::nullopt;
 }
 
-EllipseSpec fromMsg(const EllipseMsg& msg) {
+EllipseSpec fromMsg(const Ellipse& msg) {
   EllipseSpec spec;
   spec.name = msg.name;
   spec.frame_id = msg.frame_id;
@@ -40,8 +40,8 @@ EllipseSpec fromMsg(const EllipseMsg& msg) {
   return spec;
 }
 
-EllipseMsg toMsg(const EllipseSpec& spec) {
-  EllipseMsg msg;
+Ellipse toMsg(const EllipseSpec& spec) {
+  Ellipse msg;
   msg.name = spec.name;
   msg.frame_id = spec.frame_id;
   msg.x = spec.x;
@@ -56,18 +56,18 @@ EllipseMsg toMsg(const EllipseSpec& spec) {
 std::vector<EllipseSpec> fromMsg(const EllipseArray& msg) {
   std::vector<EllipseSpec> specs;
   specs.reserve(msg.ellipses.size());
-  for (const EllipseMsg& ellipse : msg.ellipses) {
+  for (const Ellipse& ellipse : msg.ellipses) {
     specs.push_back(fromMsg(ellipse));
     if (specs.back().frame_id.empty()) specs.back().frame_id = msg.header.frame_id;
   }
   return specs;
 }
 
-CollidingPair fromMsg(const CollisionPair& msg) {
-  return CollidingPair{msg.name_a, msg.name_b, msg.contact_scale};
+core::CollidingPair fromMsg(const CollisionPair& msg) {
+  return core::CollidingPair{msg.name_a, msg.name_b, msg.contact_scale};
 }
 
-CollisionPair toMsg(const CollidingPair& pair) {
+CollisionPair toMsg(const core::CollidingPair& pair) {
   CollisionPair msg;
   msg.name_a = pair.name_a;
   msg.name_b = pair.name_b;
@@ -75,22 +75,22 @@ CollisionPair toMsg(const CollidingPair& pair) {
   return msg;
 }
 
-std::vector<CollisionPair> toMsg(const std::vector<CollidingPair>& pairs) {
+std::vector<CollisionPair> toMsg(const std::vector<core::CollidingPair>& pairs) {
   std::vector<CollisionPair> msgs;
   msgs.reserve(pairs.size());
-  for (const CollidingPair& pair : pairs) msgs.push_back(toMsg(pair));
+  for (const core::CollidingPair& pair : pairs) msgs.push_back(toMsg(pair));
   return msgs;
 }
 
-NearPair fromMsg(const ClearancePair& msg) {
-  return NearPair{msg.name_a,
+core::NearPair fromMsg(const ClearancePair& msg) {
+  return core::NearPair{msg.name_a,
                   msg.name_b,
                   msg.distance,
                   {msg.point_a.x, msg.point_a.y},
                   {msg.point_b.x, msg.point_b.y}};
 }
 
-ClearancePair toMsg(const NearPair& pair) {
+ClearancePair toMsg(const core::NearPair& pair) {
   ClearancePair msg;
   msg.name_a = pair.name_a;
   msg.name_b = pair.name_b;
@@ -104,10 +104,10 @@ ClearancePair toMsg(const NearPair& pair) {
   return msg;
 }
 
-std::vector<ClearancePair> toMsg(const std::vector<NearPair>& pairs) {
+std::vector<ClearancePair> toMsg(const std::vector<core::NearPair>& pairs) {
   std::vector<ClearancePair> msgs;
   msgs.reserve(pairs.size());
-  for (const NearPair& pair : pairs) msgs.push_back(toMsg(pair));
+  for (const core::NearPair& pair : pairs) msgs.push_back(toMsg(pair));
   return msgs;
 }
 

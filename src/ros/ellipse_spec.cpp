@@ -23,9 +23,9 @@ std::optional<FieldError> findInvalidField(const EllipseSpec& spec, const std::s
   }
   // The ranges are the core's (invalidReason()), checked here to name the field as given.
   const std::string coordinate_range =
-      "[-" + formatNumber(kMaxCoordinate) + ", " + formatNumber(kMaxCoordinate) + "]";
+      "[-" + formatNumber(core::kMaxCoordinate) + ", " + formatNumber(core::kMaxCoordinate) + "]";
   const std::string radius_range =
-      "[" + formatNumber(kMinRadius) + ", " + formatNumber(kMaxRadius) + "]";
+      "[" + formatNumber(core::kMinRadius) + ", " + formatNumber(core::kMaxRadius) + "]";
   const struct {
     const char* key;
     double value;
@@ -34,7 +34,7 @@ std::optional<FieldError> findInvalidField(const EllipseSpec& spec, const std::s
     if (!std::isfinite(field.value)) {
       return FieldError{field.key, "a finite number", formatNumber(field.value)};
     }
-    if (std::abs(field.value) > kMaxCoordinate) {
+    if (std::abs(field.value) > core::kMaxCoordinate) {
       return FieldError{field.key, "a number within " + coordinate_range,
                         formatNumber(field.value)};
     }
@@ -49,15 +49,15 @@ std::optional<FieldError> findInvalidField(const EllipseSpec& spec, const std::s
     if (!std::isfinite(radius.value) || !(radius.value > 0.0)) {
       return FieldError{radius.key, "a finite number > 0", formatNumber(radius.value)};
     }
-    if (radius.value < kMinRadius || radius.value > kMaxRadius) {
+    if (radius.value < core::kMinRadius || radius.value > core::kMaxRadius) {
       return FieldError{radius.key, "a number within " + radius_range, formatNumber(radius.value)};
     }
   }
   if (!std::isfinite(spec.padding) || !(spec.padding >= 0.0)) {
     return FieldError{"padding", "a finite number >= 0", formatNumber(spec.padding)};
   }
-  if (spec.padding > kMaxRadius) {
-    return FieldError{"padding", "a number within [0, " + formatNumber(kMaxRadius) + "]",
+  if (spec.padding > core::kMaxRadius) {
+    return FieldError{"padding", "a number within [0, " + formatNumber(core::kMaxRadius) + "]",
                       formatNumber(spec.padding)};
   }
   return std::nullopt;
@@ -67,8 +67,8 @@ std::string describeRequestError(const std::string& entry, const FieldError& err
   return entry + "." + error.key + " = " + error.actual + ": expected " + error.expected;
 }
 
-Ellipse paddedEllipse(const EllipseSpec& spec, double global_padding) {
-  Ellipse e;
+core::Ellipse paddedEllipse(const EllipseSpec& spec, double global_padding) {
+  core::Ellipse e;
   e.center = Eigen::Vector2d(spec.x, spec.y);
   e.radius_x = spec.radius_x + spec.padding + global_padding;
   e.radius_y = spec.radius_y + spec.padding + global_padding;

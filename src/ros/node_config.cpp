@@ -228,7 +228,7 @@ NodeConfig parseNodeConfig(const XmlRpcValue& params) {
   }
   if (has("padding")) {
     config.padding_m =
-        readInRange(root["padding"], "parameter ~padding", "padding", 0.0, kMaxRadius);
+        readInRange(root["padding"], "parameter ~padding", "padding", 0.0, core::kMaxRadius);
   }
   if (has("self_collision")) {
     config.self_collision =

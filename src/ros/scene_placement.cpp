@@ -2,7 +2,7 @@
 
 #include <utility>
 
-#include "ellipse_collision/frame_projection.h"
+#include "ellipse_collision/core/frame_projection.h"
 #include "ellipse_collision/ros/tf_lookup.h"
 
 namespace ellipse_collision {
@@ -24,7 +24,7 @@ const ScenePlacement::FrameLookup& ScenePlacement::lookup(const std::string& fra
   return frames_.emplace(frame, result).first->second;
 }
 
-ScenePlacement::Placement ScenePlacement::place(const EllipseSpec& spec, EllipseRole role) {
+ScenePlacement::Placement ScenePlacement::place(const EllipseSpec& spec, core::EllipseRole role) {
   Placement placement;
   placement.ellipse.name = spec.name;
   placement.ellipse.role = role;
@@ -34,8 +34,8 @@ ScenePlacement::Placement ScenePlacement::place(const EllipseSpec& spec, Ellipse
     placement.error = frame.error;
     return placement;
   }
-  const ProjectionResult projected =
-      projectToPlane(paddedEllipse(spec, global_padding_m_), frame.fixed_from_frame, spec.name);
+  const core::ProjectionResult projected =
+      core::projectToPlane(paddedEllipse(spec, global_padding_m_), frame.fixed_from_frame, spec.name);
   if (!projected.ok()) {
     placement.status = Status::Degenerate;
     placement.error = projected.error;

@@ -14,7 +14,7 @@
 
 namespace {
 
-using ellipse_collision::PairLine;
+using ellipse_collision::core::PairLine;
 
 constexpr const char* kUsage =
     "usage: check_ellipses [--help] < pairs.txt\n"
@@ -140,7 +140,7 @@ int run() {
                   "line is longer than " + std::to_string(kMaxLineBytes) + " bytes");
       any_bad = true;
     } else {
-      const PairLine parsed = ellipse_collision::parsePairLine(line);
+      const PairLine parsed = ellipse_collision::core::parsePairLine(line);
       switch (parsed.kind) {
         case PairLine::Kind::Skip:
           break;
@@ -150,8 +150,8 @@ int run() {
           break;
         case PairLine::Kind::Pair:
           appendResult(
-              out, ellipse_collision::overlap(parsed.first, parsed.second) ? "collision" : "clear",
-              ellipse_collision::contactScale(parsed.first, parsed.second));
+              out, ellipse_collision::core::overlap(parsed.first, parsed.second) ? "collision" : "clear",
+              ellipse_collision::core::contactScale(parsed.first, parsed.second));
           break;
       }
     }

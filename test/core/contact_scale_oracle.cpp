@@ -7,7 +7,7 @@
 #include <cstdio>
 #include <stdexcept>
 
-namespace ellipse_collision {
+namespace ellipse_collision::core {
 namespace test {
 namespace {
 
@@ -205,4 +205,4 @@ std::string describePair(const Ellipse& a, const Ellipse& b) {
 }
 
 }  // namespace test
-}  // namespace ellipse_collision
+}  // namespace ellipse_collision::core

@@ -4,9 +4,9 @@
 
 #include <string>
 
-#include "ellipse_collision/ellipse.h"
+#include "ellipse_collision/core/ellipse.h"
 
-namespace ellipse_collision {
+namespace ellipse_collision::core {
 namespace test {
 
 /// Contact scale t* computed in quad precision, independently of the eigenvalue test: t* is the
@@ -39,4 +39,4 @@ std::string toString(__float128 value);
 std::string describePair(const Ellipse& a, const Ellipse& b);
 
 }  // namespace test
-}  // namespace ellipse_collision
+}  // namespace ellipse_collision::core

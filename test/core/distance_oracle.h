@@ -20,9 +20,9 @@
 #include <utility>
 #include <vector>
 
-#include "ellipse_collision/ellipse.h"
+#include "ellipse_collision/core/ellipse.h"
 
-namespace ellipse_collision {
+namespace ellipse_collision::core {
 namespace test {
 
 using quad = __float128;
@@ -234,4 +234,4 @@ inline quad distanceToRim(const Ellipse& e, quad x, quad y) {
 }
 
 }  // namespace test
-}  // namespace ellipse_collision
+}  // namespace ellipse_collision::core

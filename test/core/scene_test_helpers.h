@@ -7,9 +7,9 @@
 #include <utility>
 #include <vector>
 
-#include "ellipse_collision/scene_check.h"
+#include "ellipse_collision/core/scene_check.h"
 
-namespace ellipse_collision::scene_test {
+namespace ellipse_collision::core::scene_test {
 
 inline NamedEllipse ellipse(const std::string& name, EllipseRole role, double x, double y,
                             double rx, double ry, double angle = 0.0) {
@@ -58,4 +58,4 @@ inline int roleRank(EllipseRole role) {
   return -1;
 }
 
-}  // namespace ellipse_collision::scene_test
+}  // namespace ellipse_collision::core::scene_test

@@ -11,9 +11,9 @@
 #include <vector>
 
 #include "contact_scale_oracle.h"
-#include "ellipse_collision/broadphase.h"
+#include "ellipse_collision/core/broadphase.h"
 
-namespace ellipse_collision {
+namespace ellipse_collision::core {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
@@ -300,4 +300,4 @@ TEST(Broadphase, OverlappingEllipsesAlwaysHaveOverlappingBoxes) {
 }
 
 }  // namespace
-}  // namespace ellipse_collision
+}  // namespace ellipse_collision::core

@@ -18,10 +18,10 @@
 
 #include "contact_scale_oracle.h"
 #include "distance_oracle.h"
-#include "ellipse_collision/distance.h"
-#include "ellipse_collision/overlap.h"
+#include "ellipse_collision/core/distance.h"
+#include "ellipse_collision/core/overlap.h"
 
-namespace ellipse_collision {
+namespace ellipse_collision::core {
 namespace test {
 namespace {
 
@@ -381,4 +381,4 @@ TEST(Distance, SwappingTheEllipsesSwapsTheWitnessPoints) {
 
 }  // namespace
 }  // namespace test
-}  // namespace ellipse_collision
+}  // namespace ellipse_collision::core

@@ -9,10 +9,10 @@
 #include <utility>
 #include <vector>
 
-#include "ellipse_collision/eigenvalue_test.h"
-#include "ellipse_collision/overlap.h"
+#include "ellipse_collision/core/eigenvalue_test.h"
+#include "ellipse_collision/core/overlap.h"
 
-namespace ellipse_collision {
+namespace ellipse_collision::core {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
@@ -211,4 +211,4 @@ TEST(ContactScale, TinyCentreOffsetDoesNotUnderflowToCoincidentCentres) {
 }
 
 }  // namespace
-}  // namespace ellipse_collision
+}  // namespace ellipse_collision::core

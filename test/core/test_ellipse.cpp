@@ -5,7 +5,7 @@
 
 #include "ellipse_collision/ellipse_collision.h"
 
-namespace ellipse_collision {
+namespace ellipse_collision::core {
 namespace {
 
 Ellipse valid() { return Ellipse{{1.0, 2.0}, 0.5, 0.25, 0.3}; }
@@ -76,4 +76,4 @@ TEST(BoundingRadii, AreTheLargerAndSmallerSemiAxis) {
 }
 
 }  // namespace
-}  // namespace ellipse_collision
+}  // namespace ellipse_collision::core

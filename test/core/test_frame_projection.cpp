@@ -6,9 +6,9 @@
 #include <cmath>
 #include <random>
 
-#include "ellipse_collision/frame_projection.h"
+#include "ellipse_collision/core/frame_projection.h"
 
-namespace ellipse_collision {
+namespace ellipse_collision::core {
 namespace {
 
 Ellipse makeEllipse(double x, double y, double radius_x, double radius_y, double angle) {
@@ -297,4 +297,4 @@ TEST(FrameProjection, RotationAboutZKeepsRadiiExactlyAtTheRangeEdges) {
 }
 
 }  // namespace
-}  // namespace ellipse_collision
+}  // namespace ellipse_collision::core

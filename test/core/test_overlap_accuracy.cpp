@@ -19,7 +19,7 @@
 #include "contact_scale_oracle.h"
 #include "ellipse_collision/ellipse_collision.h"
 
-namespace ellipse_collision {
+namespace ellipse_collision::core {
 namespace test {
 namespace {
 
@@ -195,7 +195,7 @@ FamilyReport checkFamily(const std::string& family, const std::vector<Pair>& pai
           reportFailure(&reported, family,
                         "polygonalTest" + args +
                             " with max_iterations = " + std::to_string(kPolygonalIterations[k]) +
-                            " = " + ellipse_collision::toString(poly),
+                            " = " + ellipse_collision::core::toString(poly),
                         truth, p);
         }
       }
@@ -576,4 +576,4 @@ TEST(OverlapAccuracy, CirclesAreClassifiedLikeTheOracle) {
 
 }  // namespace
 }  // namespace test
-}  // namespace ellipse_collision
+}  // namespace ellipse_collision::core

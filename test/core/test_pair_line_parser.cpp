@@ -4,9 +4,9 @@
 #include <limits>
 #include <string>
 
-#include "ellipse_collision/pair_line_parser.h"
+#include "ellipse_collision/core/pair_line_parser.h"
 
-namespace ellipse_collision {
+namespace ellipse_collision::core {
 namespace {
 
 constexpr std::array<const char*, 10> kFieldNames = {"cx1", "cy1", "rx1", "ry1", "angle1",
@@ -227,4 +227,4 @@ TEST(PairLineParser, EmbeddedNulByteIsAnErrorNotATerminator) {
 }
 
 }  // namespace
-}  // namespace ellipse_collision
+}  // namespace ellipse_collision::core

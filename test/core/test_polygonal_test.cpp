@@ -12,9 +12,9 @@
 #include <vector>
 
 #include "contact_scale_oracle.h"
-#include "ellipse_collision/polygonal_test.h"
+#include "ellipse_collision/core/polygonal_test.h"
 
-namespace ellipse_collision {
+namespace ellipse_collision::core {
 namespace test {
 namespace {
 
@@ -102,13 +102,13 @@ TEST(PolygonalTest, RandomClearPairsAreDecidedWithinTheDefaultIterations) {
     for (const Pair& p : pairs) {
       for (const PolygonalResult got : {polygonalTest(p.a, p.b), polygonalTest(p.b, p.a)}) {
         if (got != expected && ++wrong <= 5) {
-          ADD_FAILURE() << "polygonalTest = " << ellipse_collision::toString(got)
+          ADD_FAILURE() << "polygonalTest = " << ellipse_collision::core::toString(got)
                         << ", oracle t* = " << toString(oracleContactScale(p.a, p.b).quad) << "\n  "
                         << describePair(p.a, p.b);
         }
       }
     }
-    EXPECT_EQ(wrong, 0) << "expected " << ellipse_collision::toString(expected);
+    EXPECT_EQ(wrong, 0) << "expected " << ellipse_collision::core::toString(expected);
   }
 }
 
@@ -178,7 +178,7 @@ TEST(PolygonalTest, ZeroIterationsNeverGivesAWrongAnswer) {
         if (got == PolygonalResult::Unknown) continue;
         ++decided;
         if ((got == PolygonalResult::Overlap) != truth && ++wrong <= 5) {
-          ADD_FAILURE() << "polygonalTest(.., 0) = " << ellipse_collision::toString(got)
+          ADD_FAILURE() << "polygonalTest(.., 0) = " << ellipse_collision::core::toString(got)
                         << ", oracle t* = " << toString(oracleContactScale(p.a, p.b).quad) << "\n  "
                         << describePair(p.a, p.b);
         }
@@ -221,4 +221,4 @@ TEST(PolygonalTest, UnresolvablePicturesAreNeverDecidedWrongly) {
 
 }  // namespace
 }  // namespace test
-}  // namespace ellipse_collision
+}  // namespace ellipse_collision::core

@@ -12,11 +12,11 @@
 #include <vector>
 
 #include "contact_scale_oracle.h"
-#include "ellipse_collision/eigenvalue_test.h"
-#include "ellipse_collision/overlap.h"
-#include "ellipse_collision/prepared_ellipse.h"
+#include "ellipse_collision/core/eigenvalue_test.h"
+#include "ellipse_collision/core/overlap.h"
+#include "ellipse_collision/core/prepared_ellipse.h"
 
-namespace ellipse_collision {
+namespace ellipse_collision::core {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
@@ -195,4 +195,4 @@ TEST(PreparedEllipse, CachesRadiiAndTheBoundingBoxOfTheEllipse) {
 }
 
 }  // namespace
-}  // namespace ellipse_collision
+}  // namespace ellipse_collision::core

@@ -12,12 +12,12 @@
 #include <random>
 #include <tuple>
 
-#include "ellipse_collision/distance.h"
-#include "ellipse_collision/eigenvalue_test.h"
-#include "ellipse_collision/overlap.h"
-#include "ellipse_collision/scene_check.h"
+#include "ellipse_collision/core/distance.h"
+#include "ellipse_collision/core/eigenvalue_test.h"
+#include "ellipse_collision/core/overlap.h"
+#include "ellipse_collision/core/scene_check.h"
 
-namespace ellipse_collision {
+namespace ellipse_collision::core {
 namespace {
 
 /// Every pair in reporting order, exact tests on all of them: no bound, no box, no grid.
@@ -279,4 +279,4 @@ TEST(SceneBroadphase, FiftyLinksAmongTenThousandObstaclesTestFewPairs) {
 }
 
 }  // namespace
-}  // namespace ellipse_collision
+}  // namespace ellipse_collision::core

@@ -8,10 +8,10 @@
 #include <map>
 #include <random>
 
-#include "ellipse_collision/scene_check.h"
+#include "ellipse_collision/core/scene_check.h"
 #include "scene_test_helpers.h"
 
-namespace ellipse_collision {
+namespace ellipse_collision::core {
 namespace {
 
 using namespace scene_test;
@@ -256,4 +256,4 @@ TEST(SceneCheck, EmptySceneHasNoCollisions) {
 }
 
 }  // namespace
-}  // namespace ellipse_collision
+}  // namespace ellipse_collision::core

@@ -9,12 +9,12 @@
 #include <random>
 #include <tuple>
 
-#include "ellipse_collision/distance.h"
-#include "ellipse_collision/eigenvalue_test.h"
-#include "ellipse_collision/scene_check.h"
+#include "ellipse_collision/core/distance.h"
+#include "ellipse_collision/core/eigenvalue_test.h"
+#include "ellipse_collision/core/scene_check.h"
 #include "scene_test_helpers.h"
 
-namespace ellipse_collision {
+namespace ellipse_collision::core {
 namespace {
 
 using namespace scene_test;
@@ -438,4 +438,4 @@ TEST(NearestTo, UnknownNameIsRefused) {
 }
 
 }  // namespace
-}  // namespace ellipse_collision
+}  // namespace ellipse_collision::core

@@ -17,7 +17,7 @@
 #include "ellipse_collision/ros/conversions.h"
 #include "ellipse_collision/ros/node_config.h"
 #include "ellipse_collision/ros/scene_placement.h"
-#include "ellipse_collision/scene_check.h"
+#include "ellipse_collision/core/scene_check.h"
 #include "node_test_utils.h"
 #include "rviz_top_down_view.h"
 #include "screen_image.h"
@@ -69,7 +69,7 @@ Hue hueOf(const Rgb& colour) {
 
 /// ((u / radius_x)^2 + (v / radius_y)^2)^(1/2) for `point` in the ellipse's own axes (u, v) after
 /// growing both radii by `grow_m`: <= 1 inside.
-double normalisedRadius(const Ellipse& e, const Eigen::Vector2d& point, double grow_m) {
+double normalisedRadius(const core::Ellipse& e, const Eigen::Vector2d& point, double grow_m) {
   const Eigen::Vector2d d = point - e.center;
   const double c = std::cos(e.angle);
   const double s = std::sin(e.angle);
@@ -91,10 +91,10 @@ struct HueCount {
 /// The hues of the screen pixels that show `target` and nothing else: inside it by at least the
 /// edge margin, outside every other ellipse by the same margin and away from tf axes.
 HueCount countHues(const ScreenImage& image, const TopDownView& view, const PanelRect& panel,
-                   const NamedEllipse& target, const std::vector<NamedEllipse>& all,
+                   const core::NamedEllipse& target, const std::vector<core::NamedEllipse>& all,
                    const std::vector<Eigen::Vector2d>& frame_origins) {
   const double margin_m = kEdgeMarginPx / view.scale_px_per_m;
-  const double reach_m = boundingRadius(target.ellipse);
+  const double reach_m = core::boundingRadius(target.ellipse);
   const Eigen::Vector2d low =
       toPixel(view, panel, target.ellipse.center + Eigen::Vector2d(-reach_m, reach_m));
   const Eigen::Vector2d high =
@@ -107,7 +107,7 @@ HueCount countHues(const ScreenImage& image, const TopDownView& view, const Pane
       const Eigen::Vector2d point = toPoint(view, panel, Eigen::Vector2d(x + 0.5, y + 0.5));
       if (normalisedRadius(target.ellipse, point, -margin_m) > 1.0) continue;
       bool covered = false;
-      for (const NamedEllipse& other : all) {
+      for (const core::NamedEllipse& other : all) {
         if (other.name != target.name && normalisedRadius(other.ellipse, point, margin_m) <= 1.0) {
           covered = true;
         }
@@ -132,11 +132,11 @@ struct Verdict {
 
 /// Red in collision, else yellow in a warning pair, else green (CollisionMarkers' rule).
 Verdict judge(const ScreenImage& image, const TopDownView& view, const PanelRect& panel,
-              const std::vector<NamedEllipse>& placed, const std::set<std::string>& colliding,
+              const std::vector<core::NamedEllipse>& placed, const std::set<std::string>& colliding,
               const std::set<std::string>& warned,
               const std::vector<Eigen::Vector2d>& frame_origins) {
   Verdict verdict;
-  for (const NamedEllipse& e : placed) {
+  for (const core::NamedEllipse& e : placed) {
     const HueCount count = countHues(image, view, panel, e, placed, frame_origins);
     const Hue expected = colliding.count(e.name) ? Hue::Red
                          : warned.count(e.name)  ? Hue::Yellow
@@ -276,31 +276,31 @@ TEST(DemoInRviz, CollidingEllipsesAreRedNearOnesYellowAndClearOnesGreen) {
   // Where every ellipse is now, from tf, the configuration and the driver's last obstacle message.
   ScenePlacement placement(tf_buffer, config.fixed_frame, config.padding_m, ros::Time(0),
                            ros::Duration(1.0));
-  std::vector<NamedEllipse> placed;
+  std::vector<core::NamedEllipse> placed;
   std::vector<Eigen::Vector2d> frame_origins;
-  auto place = [&](const EllipseSpec& spec, EllipseRole role) {
+  auto place = [&](const EllipseSpec& spec, core::EllipseRole role) {
     const ScenePlacement::Placement p = placement.place(spec, role);
     ASSERT_EQ(p.status, ScenePlacement::Status::Placed) << spec.name << ": " << p.error;
     placed.push_back(p.ellipse);
   };
   for (const EllipseSpec& spec : config.links) {
-    place(spec, EllipseRole::Link);
+    place(spec, core::EllipseRole::Link);
     const geometry_msgs::TransformStamped t =
         tf_buffer.lookupTransform(config.fixed_frame, spec.frame_id, ros::Time(0));
     frame_origins.emplace_back(t.transform.translation.x, t.transform.translation.y);
   }
   frame_origins.emplace_back(0.0, 0.0);  // the fixed frame's own axes
-  for (const EllipseSpec& spec : config.obstacles) place(spec, EllipseRole::Obstacle);
+  for (const EllipseSpec& spec : config.obstacles) place(spec, core::EllipseRole::Obstacle);
   const std::vector<EllipseArray> streamed = topic_obstacles.all();
   ASSERT_FALSE(streamed.empty()) << "no message on " << nodeTopic("obstacles");
-  for (const EllipseSpec& spec : fromMsg(streamed.back())) place(spec, EllipseRole::Obstacle);
+  for (const EllipseSpec& spec : fromMsg(streamed.back())) place(spec, core::EllipseRole::Obstacle);
   if (HasFatalFailure()) return;
   // The frozen state is about this geometry: checking it here finds the same colliding ellipses.
-  SceneRules rules;
+  core::SceneRules rules;
   rules.self_collision = config.self_collision;
   rules.warning_distance = config.warning_distance_m;
   for (const auto& pair : config.allowed_pairs) rules.allowed.add(pair.first, pair.second);
-  const SceneCheckResult check = checkScene(placed, rules);
+  const core::SceneCheckResult check = core::checkScene(placed, rules);
   ASSERT_TRUE(check.ok()) << check.error;
   CollisionState here;
   here.collisions = toMsg(check.collisions);

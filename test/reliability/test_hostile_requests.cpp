@@ -50,18 +50,18 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 /// [1e-9, 1e9] m, centres within 1e9 m), and the key an error must name.
 struct OutOfRange {
   const char* what;
-  void (*spoil)(EllipseMsg&);
+  void (*spoil)(Ellipse&);
   const char* key;
 };
 
 const std::vector<OutOfRange>& outOfRangeCases() {
   static const std::vector<OutOfRange> cases = {
-      {"radius 1e-12 m", [](EllipseMsg& m) { m.radius_x = 1e-12; }, "radius_x"},
-      {"subnormal radius", [](EllipseMsg& m) { m.radius_y = 5e-324; }, "radius_y"},
-      {"radius 1e12 m", [](EllipseMsg& m) { m.radius_y = 1e12; }, "radius_y"},
-      {"centre 1e12 m away", [](EllipseMsg& m) { m.x = 1e12; }, "x"},
-      {"centre 1e300 m away", [](EllipseMsg& m) { m.y = -1e300; }, "y"},
-      {"padding 1e300 m", [](EllipseMsg& m) { m.padding = 1e300; }, "padding"},
+      {"radius 1e-12 m", [](Ellipse& m) { m.radius_x = 1e-12; }, "radius_x"},
+      {"subnormal radius", [](Ellipse& m) { m.radius_y = 5e-324; }, "radius_y"},
+      {"radius 1e12 m", [](Ellipse& m) { m.radius_y = 1e12; }, "radius_y"},
+      {"centre 1e12 m away", [](Ellipse& m) { m.x = 1e12; }, "x"},
+      {"centre 1e300 m away", [](Ellipse& m) { m.y = -1e300; }, "y"},
+      {"padding 1e300 m", [](Ellipse& m) { m.padding = 1e300; }, "padding"},
   };
   return cases;
 }
@@ -94,9 +94,9 @@ class HostileRequests : public ::testing::Test, protected NodeServiceClient {
 };
 
 TEST_F(HostileRequests, ServicesRefuseFiniteValuesTheCoreCannotTakeNamingEntryAndKey) {
-  const EllipseMsg ok = ellipseMsg("far_out", "base_link", 20.0, 0.0, 0.2, 0.2);
+  const Ellipse ok = ellipseMsg("far_out", "base_link", 20.0, 0.0, 0.2, 0.2);
   for (const OutOfRange& c : outOfRangeCases()) {
-    EllipseMsg bad = ok;
+    Ellipse bad = ok;
     c.spoil(bad);
     // Accepting it would be worse than refusing: the node could never check it.
     const AddObstacles::Response added = add({bad});
@@ -116,65 +116,65 @@ TEST_F(HostileRequests, ServicesRefuseFiniteValuesTheCoreCannotTakeNamingEntryAn
 TEST_F(HostileRequests, ObstaclesTopicRefusesEveryBadMessageWholeAndKeepsThePreviousSet) {
   Recorder<CollisionState> collisions(nh_, nodeTopic("collisions"));
   Recorder<diagnostic_msgs::DiagnosticArray> diagnostics(nh_, "/diagnostics");
-  const EllipseMsg good = ellipseMsg("stream_ok", "", 0.0, 0.0, 0.1, 0.1);  // on body
+  const Ellipse good = ellipseMsg("stream_ok", "", 0.0, 0.0, 0.1, 0.1);  // on body
   publishObstacles(obstacles_, "base_link", {good});
   ASSERT_TRUE(collisions.waitForLatest(
       [](const CollisionState& s) { return findPair(s.collisions, "body", "stream_ok"); }, 10.0));
 
-  const EllipseMsg ok = ellipseMsg("stream_bad", "", 0.0, 0.0, 0.1, 0.1);
+  const Ellipse ok = ellipseMsg("stream_bad", "", 0.0, 0.0, 0.1, 0.1);
   struct Case {
     const char* what;
     std::string header_frame;
-    std::vector<EllipseMsg> ellipses;
+    std::vector<Ellipse> ellipses;
     std::string message_part;
   };
-  const auto with = [&ok](void (*spoil)(EllipseMsg&)) {
-    EllipseMsg m = ok;
+  const auto with = [&ok](void (*spoil)(Ellipse&)) {
+    Ellipse m = ok;
     spoil(m);
     return m;
   };
   std::vector<Case> cases = {
       {"nan x",
        "base_link",
-       {good, with([](EllipseMsg& m) { m.x = kNaN; })},
+       {good, with([](Ellipse& m) { m.x = kNaN; })},
        "ellipses[1].x = nan"},
-      {"inf y", "base_link", {with([](EllipseMsg& m) { m.y = kInf; })}, "ellipses[0].y = inf"},
+      {"inf y", "base_link", {with([](Ellipse& m) { m.y = kInf; })}, "ellipses[0].y = inf"},
       {"-inf angle",
        "base_link",
-       {with([](EllipseMsg& m) { m.angle = -kInf; })},
+       {with([](Ellipse& m) { m.angle = -kInf; })},
        "ellipses[0].angle = -inf"},
       {"zero radius",
        "base_link",
-       {with([](EllipseMsg& m) { m.radius_x = 0.0; })},
+       {with([](Ellipse& m) { m.radius_x = 0.0; })},
        "ellipses[0].radius_x = 0"},
       {"negative radius",
        "base_link",
-       {with([](EllipseMsg& m) { m.radius_y = -0.1; })},
+       {with([](Ellipse& m) { m.radius_y = -0.1; })},
        "ellipses[0].radius_y = -0.1"},
       {"nan radius",
        "base_link",
-       {with([](EllipseMsg& m) { m.radius_y = kNaN; })},
+       {with([](Ellipse& m) { m.radius_y = kNaN; })},
        "ellipses[0].radius_y = nan"},
       {"inf padding",
        "base_link",
-       {with([](EllipseMsg& m) { m.padding = kInf; })},
+       {with([](Ellipse& m) { m.padding = kInf; })},
        "ellipses[0].padding = inf"},
       {"negative padding",
        "base_link",
-       {with([](EllipseMsg& m) { m.padding = -1.0; })},
+       {with([](Ellipse& m) { m.padding = -1.0; })},
        "ellipses[0].padding = -1"},
       {"empty name",
        "base_link",
-       {with([](EllipseMsg& m) { m.name = ""; })},
+       {with([](Ellipse& m) { m.name = ""; })},
        "ellipses[0].name = ''"},
       {"duplicate names", "base_link", {ok, ok}, "ellipses[1].name = 'stream_bad'"},
       {"name of a link",
        "base_link",
-       {with([](EllipseMsg& m) { m.name = "body"; })},
+       {with([](Ellipse& m) { m.name = "body"; })},
        "ellipses[0].name = 'body'"},
       {"name of a configured obstacle",
        "base_link",
-       {with([](EllipseMsg& m) { m.name = "spare"; })},
+       {with([](Ellipse& m) { m.name = "spare"; })},
        "ellipses[0].name = 'spare'"},
       {"unknown frame", "nowhere_link", {ok}, "ellipses[0].frame_id = 'nowhere_link'"},
       {"no frame at all", "", {ok}, "ellipses[0].frame_id = ''"},
@@ -211,7 +211,7 @@ TEST_F(HostileRequests, ObstaclesTopicRefusesEveryBadMessageWholeAndKeepsThePrev
 
 TEST_F(HostileRequests, HundredThousandQueryEllipsesGetTheCorrectAnswer) {
   // A grid far from the scene; every 1000th query sits on `spare` (concentric: contact scale 0).
-  std::vector<EllipseMsg> query;
+  std::vector<Ellipse> query;
   query.reserve(kHuge);
   Pairs expected = {{"arm", "pillar"}};
   for (int i = 0; i < kHuge; ++i) {
@@ -256,7 +256,7 @@ TEST_F(HostileRequests, HundredThousandQueryEllipsesGetTheCorrectAnswer) {
 }
 
 TEST_F(HostileRequests, HundredThousandObstaclesAreAddedCheckedAndRemoved) {
-  std::vector<EllipseMsg> obstacles;
+  std::vector<Ellipse> obstacles;
   std::vector<std::string> names;
   for (int i = 0; i < kHuge; ++i) {
     char name[16];

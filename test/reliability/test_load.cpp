@@ -43,8 +43,8 @@ Pairs unite(Pairs a, const Pairs& b) {
 }
 
 /// The two states the stream alternates between: all streamed obstacles on `body`, or all far.
-std::vector<EllipseMsg> streamedState(bool on_body) {
-  std::vector<EllipseMsg> ellipses;
+std::vector<Ellipse> streamedState(bool on_body) {
+  std::vector<Ellipse> ellipses;
   for (int i = 0; i < kStreamed; ++i) {
     const std::string name = "stream_" + std::to_string(i);
     ellipses.push_back(on_body ? ellipseMsg(name, "", -0.2 + 0.1 * i, 0.0, 0.05, 0.05)

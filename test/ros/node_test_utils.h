@@ -23,9 +23,9 @@ namespace test {
 /// The node under test, as named in the .test files.
 inline std::string nodeTopic(const std::string& name) { return "/ellipse_collision/" + name; }
 
-inline EllipseMsg ellipseMsg(const std::string& name, const std::string& frame, double x, double y,
+inline Ellipse ellipseMsg(const std::string& name, const std::string& frame, double x, double y,
                              double radius_x, double radius_y, double angle = 0.0) {
-  EllipseMsg msg;
+  Ellipse msg;
   msg.name = name;
   msg.frame_id = frame;
   msg.x = x;
@@ -81,7 +81,7 @@ class NodeServiceClient {
   }
 
   CheckCollisions::Response check(const std::vector<std::string>& names = {},
-                                  const std::vector<EllipseMsg>& query = {},
+                                  const std::vector<Ellipse>& query = {},
                                   const ros::Time& stamp = ros::Time(0),
                                   const std::string& min_distance_of = "") {
     CheckCollisions srv;
@@ -93,7 +93,7 @@ class NodeServiceClient {
     return srv.response;
   }
 
-  AddObstacles::Response add(const std::vector<EllipseMsg>& obstacles) {
+  AddObstacles::Response add(const std::vector<Ellipse>& obstacles) {
     AddObstacles srv;
     srv.request.obstacles = obstacles;
     EXPECT_TRUE(add_.call(srv)) << "the node stopped serving ~add_obstacles";
@@ -118,7 +118,7 @@ class NodeServiceClient {
 
 /// Publishes `ellipses` in `frame`, stamped now, on the node's ~obstacles topic (`publisher`).
 inline void publishObstacles(const ros::Publisher& publisher, const std::string& frame,
-                             const std::vector<EllipseMsg>& ellipses) {
+                             const std::vector<Ellipse>& ellipses) {
   EllipseArray msg;
   msg.header.frame_id = frame;
   msg.header.stamp = ros::Time::now();

@@ -10,8 +10,8 @@
 namespace ellipse_collision {
 namespace {
 
-NamedEllipse named(const std::string& name, EllipseRole role, double x = 0.0, double y = 0.0) {
-  NamedEllipse e;
+core::NamedEllipse named(const std::string& name, core::EllipseRole role, double x = 0.0, double y = 0.0) {
+  core::NamedEllipse e;
   e.name = name;
   e.role = role;
   e.ellipse.center = Eigen::Vector2d(x, y);
@@ -41,16 +41,16 @@ bool isYellow(const visualization_msgs::Marker& m) {
   return m.color.r > 0.5f && m.color.g > 0.5f && m.color.b < 0.5f;
 }
 
-NearPair nearPair(const std::string& a, const std::string& b, Eigen::Vector2d point_a,
+core::NearPair nearPair(const std::string& a, const std::string& b, Eigen::Vector2d point_a,
                   Eigen::Vector2d point_b) {
-  return NearPair{a, b, (point_b - point_a).norm(), point_a, point_b};
+  return core::NearPair{a, b, (point_b - point_a).norm(), point_a, point_b};
 }
 
 const ros::Time kStamp(100, 5);
 
 TEST(CollisionMarkers, EachEllipseIsAFlatCylinderWithItsPoseAndDiametersAndNoText) {
   CollisionMarkers markers;
-  NamedEllipse arm = named("arm", EllipseRole::Link, 1.0, 2.0);
+  core::NamedEllipse arm = named("arm", core::EllipseRole::Link, 1.0, 2.0);
   arm.ellipse.angle = M_PI / 3;
   const auto array = markers.update({arm}, {}, {}, "odom", kStamp);
   ASSERT_EQ(array.markers.size(), 1u);
@@ -73,9 +73,9 @@ TEST(CollisionMarkers, EachEllipseIsAFlatCylinderWithItsPoseAndDiametersAndNoTex
 TEST(CollisionMarkers, RedInCollisionYellowInAWarningPairGreenOtherwise) {
   CollisionMarkers markers;
   const auto array = markers.update(
-      {named("arm", EllipseRole::Link), named("hand", EllipseRole::Link),
-       named("box", EllipseRole::Obstacle), named("cup", EllipseRole::Obstacle),
-       named("far", EllipseRole::Obstacle)},
+      {named("arm", core::EllipseRole::Link), named("hand", core::EllipseRole::Link),
+       named("box", core::EllipseRole::Obstacle), named("cup", core::EllipseRole::Obstacle),
+       named("far", core::EllipseRole::Obstacle)},
       {{"arm", "box", 0.5}},
       {nearPair("arm", "cup", {0, 0}, {1, 0}), nearPair("hand", "cup", {0, 0}, {0, 1})}, "m",
       kStamp);
@@ -97,8 +97,8 @@ TEST(CollisionMarkers, RedInCollisionYellowInAWarningPairGreenOtherwise) {
 TEST(CollisionMarkers, LinksAndObstaclesHaveTheirOwnNamespacesAndQueriesAreNotDrawn) {
   CollisionMarkers markers;
   const auto array =
-      markers.update({named("arm", EllipseRole::Link), named("probe", EllipseRole::Query),
-                      named("box", EllipseRole::Obstacle)},
+      markers.update({named("arm", core::EllipseRole::Link), named("probe", core::EllipseRole::Query),
+                      named("box", core::EllipseRole::Obstacle)},
                      {}, {}, "m", kStamp);
   ASSERT_EQ(array.markers.size(), 2u);
   EXPECT_EQ(array.markers[0].ns, "links");
@@ -108,14 +108,14 @@ TEST(CollisionMarkers, LinksAndObstaclesHaveTheirOwnNamespacesAndQueriesAreNotDr
 TEST(CollisionMarkers, IdsFollowTheNamesWhateverTheOrderOrHistory) {
   CollisionMarkers markers;
   const auto first = markers.update(
-      {named("a", EllipseRole::Obstacle), named("b", EllipseRole::Obstacle)}, {}, {}, "m", kStamp);
+      {named("a", core::EllipseRole::Obstacle), named("b", core::EllipseRole::Obstacle)}, {}, {}, "m", kStamp);
   const auto second =
-      markers.update({named("c", EllipseRole::Obstacle), named("b", EllipseRole::Obstacle),
-                      named("a", EllipseRole::Obstacle)},
+      markers.update({named("c", core::EllipseRole::Obstacle), named("b", core::EllipseRole::Obstacle),
+                      named("a", core::EllipseRole::Obstacle)},
                      {}, {}, "m", kStamp);
   CollisionMarkers fresh;  // another run that meets the names in another order
   const auto other_run = fresh.update(
-      {named("c", EllipseRole::Obstacle), named("a", EllipseRole::Obstacle)}, {}, {}, "m", kStamp);
+      {named("c", core::EllipseRole::Obstacle), named("a", core::EllipseRole::Obstacle)}, {}, {}, "m", kStamp);
   EXPECT_EQ(first.markers[0].id, second.markers[2].id);      // a
   EXPECT_EQ(first.markers[1].id, second.markers[1].id);      // b
   EXPECT_EQ(other_run.markers[0].id, second.markers[0].id);  // c
@@ -140,13 +140,13 @@ TEST(CollisionMarkers, HashClashGivesTheLaterNameTheNextFreeIdForGood) {
   ASSERT_EQ(CollisionMarkers::preferredId("costarring"), CollisionMarkers::preferredId("liquid"));
   CollisionMarkers markers;
   const auto both = markers.update(
-      {named("costarring", EllipseRole::Obstacle), named("liquid", EllipseRole::Obstacle)}, {}, {},
+      {named("costarring", core::EllipseRole::Obstacle), named("liquid", core::EllipseRole::Obstacle)}, {}, {},
       "m", kStamp);
   const int preferred = CollisionMarkers::preferredId("liquid");
   EXPECT_EQ(both.markers[0].id, preferred);
   EXPECT_EQ(both.markers[1].id, preferred + 1);
   // liquid keeps its id even once costarring is gone.
-  const auto later = markers.update({named("liquid", EllipseRole::Obstacle)}, {}, {}, "m", kStamp);
+  const auto later = markers.update({named("liquid", core::EllipseRole::Obstacle)}, {}, {}, "m", kStamp);
   EXPECT_EQ(ellipseMarker(later, "obstacles", "costarring")->action,
             visualization_msgs::Marker::DELETE);
   EXPECT_EQ(find(later, "obstacles", preferred + 1)->action, visualization_msgs::Marker::ADD);
@@ -154,19 +154,19 @@ TEST(CollisionMarkers, HashClashGivesTheLaterNameTheNextFreeIdForGood) {
 
 TEST(CollisionMarkers, VanishedEllipseIsDeletedOnceAndKeepsItsIdWhenItReturns) {
   CollisionMarkers markers;
-  markers.update({named("a", EllipseRole::Obstacle), named("b", EllipseRole::Obstacle)}, {}, {},
+  markers.update({named("a", core::EllipseRole::Obstacle), named("b", core::EllipseRole::Obstacle)}, {}, {},
                  "m", kStamp);
-  const auto without_a = markers.update({named("b", EllipseRole::Obstacle)}, {}, {}, "m", kStamp);
+  const auto without_a = markers.update({named("b", core::EllipseRole::Obstacle)}, {}, {}, "m", kStamp);
   const auto* deletion = ellipseMarker(without_a, "obstacles", "a");
   ASSERT_TRUE(deletion);
   EXPECT_EQ(deletion->action, visualization_msgs::Marker::DELETE);
   EXPECT_EQ(without_a.markers.size(), 2u);
 
-  const auto again = markers.update({named("b", EllipseRole::Obstacle)}, {}, {}, "m", kStamp);
+  const auto again = markers.update({named("b", core::EllipseRole::Obstacle)}, {}, {}, "m", kStamp);
   EXPECT_EQ(again.markers.size(), 1u);  // no second DELETE
 
   const auto back = markers.update(
-      {named("b", EllipseRole::Obstacle), named("a", EllipseRole::Obstacle)}, {}, {}, "m", kStamp);
+      {named("b", core::EllipseRole::Obstacle), named("a", core::EllipseRole::Obstacle)}, {}, {}, "m", kStamp);
   const auto* a = ellipseMarker(back, "obstacles", "a");
   ASSERT_TRUE(a);
   EXPECT_EQ(a->action, visualization_msgs::Marker::ADD);
@@ -175,7 +175,7 @@ TEST(CollisionMarkers, VanishedEllipseIsDeletedOnceAndKeepsItsIdWhenItReturns) {
 TEST(CollisionMarkers, SameNameInBothNamespacesIsNoClash) {
   CollisionMarkers markers;
   const auto array = markers.update(
-      {named("x", EllipseRole::Obstacle), named("x", EllipseRole::Link)}, {}, {}, "m", kStamp);
+      {named("x", core::EllipseRole::Obstacle), named("x", core::EllipseRole::Link)}, {}, {}, "m", kStamp);
   ASSERT_EQ(array.markers.size(), 2u);
   EXPECT_EQ(array.markers[0].id, CollisionMarkers::preferredId("x"));
   EXPECT_EQ(array.markers[1].id, CollisionMarkers::preferredId("x"));
@@ -184,7 +184,7 @@ TEST(CollisionMarkers, SameNameInBothNamespacesIsNoClash) {
 TEST(CollisionMarkers, WarningPairIsALineBetweenItsWitnessPointsAboveTheEllipses) {
   CollisionMarkers markers;
   const auto array = markers.update(
-      {named("arm", EllipseRole::Link), named("cup", EllipseRole::Obstacle, 3.0, 0.0)}, {},
+      {named("arm", core::EllipseRole::Link), named("cup", core::EllipseRole::Obstacle, 3.0, 0.0)}, {},
       {nearPair("arm", "cup", {0.5, 0.25}, {2.5, -0.25})}, "odom", kStamp);
   const auto* line = find(array, CollisionMarkers::kClearanceNamespace,
                           CollisionMarkers::preferredId("arm", "cup"));
@@ -210,9 +210,9 @@ TEST(CollisionMarkers, WarningPairIsALineBetweenItsWitnessPointsAboveTheEllipses
 
 TEST(CollisionMarkers, ClearanceLineKeepsItsIdAndIsDeletedWhenThePairGoesAway) {
   CollisionMarkers markers;
-  const std::vector<NamedEllipse> placed = {named("arm", EllipseRole::Link),
-                                            named("cup", EllipseRole::Obstacle),
-                                            named("box", EllipseRole::Obstacle)};
+  const std::vector<core::NamedEllipse> placed = {named("arm", core::EllipseRole::Link),
+                                            named("cup", core::EllipseRole::Obstacle),
+                                            named("box", core::EllipseRole::Obstacle)};
   const int arm_cup = CollisionMarkers::preferredId("arm", "cup");
   const int arm_box = CollisionMarkers::preferredId("arm", "box");
   markers.update(placed, {}, {nearPair("arm", "cup", {0, 0}, {1, 0})}, "m", kStamp);

@@ -44,7 +44,7 @@ TEST(Conversions, EllipseSpecSurvivesTheRoundTripThroughTheMessage) {
 }
 
 TEST(Conversions, EveryMessageFieldLandsInTheMatchingSpecField) {
-  EllipseMsg msg;
+  Ellipse msg;
   msg.name = "n";
   msg.frame_id = "f";
   msg.x = 1;
@@ -87,19 +87,19 @@ TEST(Conversions, EllipseArrayEntryWithoutFrameTakesTheHeaderFrame) {
 }
 
 TEST(Conversions, CollidingPairSurvivesTheRoundTripThroughTheMessage) {
-  const CollidingPair pair{"arm", "crate", 0.8333333333333334};
-  const CollidingPair back = fromMsg(toMsg(pair));
+  const core::CollidingPair pair{"arm", "crate", 0.8333333333333334};
+  const core::CollidingPair back = fromMsg(toMsg(pair));
   EXPECT_EQ(back.name_a, "arm");
   EXPECT_EQ(back.name_b, "crate");
   EXPECT_TRUE(sameBits(back.contact_scale, pair.contact_scale));
-  const std::vector<CollisionPair> msgs = toMsg(std::vector<CollidingPair>{pair, {"b", "c", 0.5}});
+  const std::vector<CollisionPair> msgs = toMsg(std::vector<core::CollidingPair>{pair, {"b", "c", 0.5}});
   ASSERT_EQ(msgs.size(), 2u);
   EXPECT_EQ(msgs[1].name_a, "b");
   EXPECT_EQ(msgs[1].contact_scale, 0.5);
 }
 
 TEST(Conversions, NearPairSurvivesTheRoundTripThroughTheClearanceMessage) {
-  const NearPair pair{"arm", "crate", 0.1, {0.3, -1.0 / 3.0}, {0.35, -0.4}};
+  const core::NearPair pair{"arm", "crate", 0.1, {0.3, -1.0 / 3.0}, {0.35, -0.4}};
   const ClearancePair msg = toMsg(pair);
   EXPECT_EQ(msg.name_a, "arm");
   EXPECT_EQ(msg.name_b, "crate");
@@ -110,7 +110,7 @@ TEST(Conversions, NearPairSurvivesTheRoundTripThroughTheClearanceMessage) {
   EXPECT_TRUE(sameBits(msg.point_b.y, -0.4));
   EXPECT_EQ(msg.point_a.z, 0.0);  // points lie in the fixed frame's plane
   EXPECT_EQ(msg.point_b.z, 0.0);
-  const NearPair back = fromMsg(msg);
+  const core::NearPair back = fromMsg(msg);
   EXPECT_EQ(back.name_a, pair.name_a);
   EXPECT_EQ(back.name_b, pair.name_b);
   EXPECT_TRUE(sameBits(back.distance, pair.distance));
@@ -118,14 +118,14 @@ TEST(Conversions, NearPairSurvivesTheRoundTripThroughTheClearanceMessage) {
   EXPECT_EQ(back.point_b, pair.point_b);
 
   const std::vector<ClearancePair> msgs =
-      toMsg(std::vector<NearPair>{pair, {"b", "c", 2.0, {1, 2}, {3, 4}}});
+      toMsg(std::vector<core::NearPair>{pair, {"b", "c", 2.0, {1, 2}, {3, 4}}});
   ASSERT_EQ(msgs.size(), 2u);
   EXPECT_EQ(msgs[1].name_a, "b");
   EXPECT_EQ(msgs[1].point_b.y, 4.0);
 }
 
 TEST(EllipseSpec, PaddingOfEntryAndNodeIsAddedToBothRadii) {
-  const Ellipse e = paddedEllipse(sampleSpec(), 0.02);
+  const core::Ellipse e = paddedEllipse(sampleSpec(), 0.02);
   EXPECT_DOUBLE_EQ(e.radius_x, 0.3 + 0.01 + 0.02);
   EXPECT_DOUBLE_EQ(e.radius_y, 0.07 + 0.01 + 0.02);
   EXPECT_EQ(e.center, Eigen::Vector2d(0.125, -3.5));
@@ -191,7 +191,7 @@ TEST(EllipseSpec, PaddedRadiiMustStayWithinTheCoreRange) {
   // Each field within range, but radius + entry padding + global padding beyond kMaxRadius.
   EllipseSpec spec = sampleSpec();
   EXPECT_FALSE(findInvalidPaddedField(spec, 0.02));
-  spec.radius_x = kMaxRadius;
+  spec.radius_x = core::kMaxRadius;
   EXPECT_FALSE(findInvalidField(spec));  // alone it is fine; the entry padding 0.01 is not
   auto invalid = findInvalidPaddedField(spec, 0.0);
   ASSERT_TRUE(invalid);
@@ -203,7 +203,7 @@ TEST(EllipseSpec, PaddedRadiiMustStayWithinTheCoreRange) {
 
   spec = sampleSpec();
   spec.padding = 0.0;
-  spec.radius_y = kMaxRadius;
+  spec.radius_y = core::kMaxRadius;
   EXPECT_FALSE(findInvalidPaddedField(spec, 0.0));  // exactly at the limit
   invalid = findInvalidPaddedField(spec, 0.02);     // the global padding pushes it over
   ASSERT_TRUE(invalid);
@@ -231,14 +231,14 @@ TEST(EllipseSpec, PaddedCheckReportsPlainFieldErrorsFirst) {
 }
 
 TEST(EllipseSpec, AcceptedPaddedSpecIsValidForTheCore) {
-  for (double radius : {kMinRadius, 1.0, kMaxRadius - 1.0, kMaxRadius}) {
+  for (double radius : {core::kMinRadius, 1.0, core::kMaxRadius - 1.0, core::kMaxRadius}) {
     for (double padding : {0.0, 0.5, 1.0}) {
       for (double global : {0.0, 0.02, 0.5}) {
         EllipseSpec spec = sampleSpec();
         spec.radius_x = radius;
         spec.padding = padding;
         const bool accepted = !findInvalidPaddedField(spec, global);
-        EXPECT_EQ(accepted, invalidReason(paddedEllipse(spec, global)).empty())
+        EXPECT_EQ(accepted, core::invalidReason(paddedEllipse(spec, global)).empty())
             << radius << " + " << padding << " + " << global;
       }
     }

@@ -25,8 +25,8 @@ EllipseRegistry makeRegistry() {
 
 TEST(EllipseRegistry, ConfiguredEllipsesHaveTheirRoles) {
   const EllipseRegistry registry = makeRegistry();
-  EXPECT_EQ(registry.entries().at("arm").role(), EllipseRole::Link);
-  EXPECT_EQ(registry.entries().at("table").role(), EllipseRole::Obstacle);
+  EXPECT_EQ(registry.entries().at("arm").role(), core::EllipseRole::Link);
+  EXPECT_EQ(registry.entries().at("table").role(), core::EllipseRole::Obstacle);
   EXPECT_EQ(registry.count(EllipseSource::ConfiguredLink), 2u);
   EXPECT_EQ(registry.count(EllipseSource::ConfiguredObstacle), 1u);
 }
@@ -59,7 +59,7 @@ TEST(EllipseRegistry, LinkCanNeitherBeReplacedNorRemoved) {
   EXPECT_CONTAINS(refused, "names[0] = 'arm'");
   EXPECT_CONTAINS(refused, "configured link");
   EXPECT_TRUE(registry.contains("arm"));
-  EXPECT_EQ(registry.entries().at("hand").role(), EllipseRole::Link);
+  EXPECT_EQ(registry.entries().at("hand").role(), core::EllipseRole::Link);
 }
 
 TEST(EllipseRegistry, RemovingAnUnknownNameRemovesNothing) {

@@ -296,8 +296,8 @@ TEST(NodeConfig, TfTimeoutIsWithinItsDocumentedRange) {
 TEST(NodeConfig, GlobalPaddingIsWithinTheCoreRadiusRange) {
   XmlRpcValue p;
   p["links"].setSize(0);  // no entries: the padding's own range is checked
-  p["padding"] = kMaxRadius;
-  EXPECT_EQ(parseNodeConfig(p).padding_m, kMaxRadius);
+  p["padding"] = core::kMaxRadius;
+  EXPECT_EQ(parseNodeConfig(p).padding_m, core::kMaxRadius);
   p["padding"] = 1.5e9;
   EXPECT_EQ(errorOf(p),
             "parameter ~padding, key 'padding': expected a number within [0, 1e+09], got 1.5e+09");
@@ -309,7 +309,7 @@ TEST(NodeConfig, GlobalPaddingIsWithinTheCoreRadiusRange) {
 TEST(NodeConfig, PaddedRadiiBeyondTheCoreRangeStopTheNode) {
   // radius + entry padding + global padding must stay within [kMinRadius, kMaxRadius].
   XmlRpcValue p = validParams();  // global padding 0.01
-  p["links"][0]["radius_x"] = kMaxRadius;
+  p["links"][0]["radius_x"] = core::kMaxRadius;
   std::string error = errorOf(p);
   EXPECT_CONTAINS(error,
                   "links[0] (name 'arm'), key 'radius_x': expected a number whose padded "
@@ -329,8 +329,8 @@ TEST(NodeConfig, PaddedRadiiBeyondTheCoreRangeStopTheNode) {
 
   p = validParams();
   p["padding"] = 0.0;
-  p["links"][0]["radius_x"] = kMaxRadius;  // exactly at the limit, unpadded: accepted
-  EXPECT_EQ(parseNodeConfig(p).links[0].radius_x, kMaxRadius);
+  p["links"][0]["radius_x"] = core::kMaxRadius;  // exactly at the limit, unpadded: accepted
+  EXPECT_EQ(parseNodeConfig(p).links[0].radius_x, core::kMaxRadius);
 }
 
 }  // namespace

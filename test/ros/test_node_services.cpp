@@ -30,7 +30,7 @@ class NodeServices : public ::testing::Test, protected NodeServiceClient {
   }
 
   CheckCollisions::Response minDistanceOf(const std::string& name,
-                                          const std::vector<EllipseMsg>& query = {}) {
+                                          const std::vector<Ellipse>& query = {}) {
     return check({}, query, ros::Time(0), name);
   }
 
@@ -79,7 +79,7 @@ TEST_F(NodeServices, NameFilterKeepsOnlyPairsInvolvingListedNames) {
 
 TEST_F(NodeServices, QueryIsCheckedAgainstStoredEllipsesButNotStored) {
   // Centred on crate, given in crate's own frame: coincident centres give contact scale 0.
-  const std::vector<EllipseMsg> query = {ellipseMsg("probe", "odom", 2.0, 0.0, 0.1, 0.1)};
+  const std::vector<Ellipse> query = {ellipseMsg("probe", "odom", 2.0, 0.0, 0.1, 0.1)};
   const CheckCollisions::Response r = check({"probe"}, query);
   ASSERT_TRUE(r.success) << r.message;
   ASSERT_EQ(r.collisions.size(), 1u);
@@ -109,7 +109,7 @@ TEST_F(NodeServices, StampOutsideTheTfCacheMakesOnlyTheMovingFrameUnavailable) {
 
 // probe: a 0.05 m circle at (0, 10.52), 0.17 m above post (0.1 m at (0, 10.35)): 0.02 m apart,
 // closest at (0, 10.47) and (0, 10.45); 0.27 m from plate and 0.12 m from post_near.
-EllipseMsg probeNearPost() { return ellipseMsg("probe", "base_link", 0.0, 10.52, 0.05, 0.05); }
+Ellipse probeNearPost() { return ellipseMsg("probe", "base_link", 0.0, 10.52, 0.05, 0.05); }
 
 void expectPair(const ClearancePair& pair, const std::string& a, const std::string& b,
                 double distance, double ax, double ay, double bx, double by) {
@@ -241,50 +241,50 @@ TEST_F(NodeServices, EdgeOnFrameIsReportedForThatEllipseOnly) {
 
 struct BadObstacles {
   const char* what;
-  std::vector<EllipseMsg> obstacles;
+  std::vector<Ellipse> obstacles;
   const char* message_part;
 };
 
-EllipseMsg with(EllipseMsg msg, void (*change)(EllipseMsg&)) {
+Ellipse with(Ellipse msg, void (*change)(Ellipse&)) {
   change(msg);
   return msg;
 }
 
 TEST_F(NodeServices, EveryBadObstacleIsRefusedNamingFieldAndValue) {
-  const EllipseMsg ok = ellipseMsg("rejected", "base_link", 0.0, 0.0, 0.2, 0.2);
+  const Ellipse ok = ellipseMsg("rejected", "base_link", 0.0, 0.0, 0.2, 0.2);
   const std::vector<BadObstacles> cases = {
-      {"nan x", {with(ok, [](EllipseMsg& m) { m.x = kNaN; })}, "obstacles[0].x = nan"},
-      {"inf y", {with(ok, [](EllipseMsg& m) { m.y = kInf; })}, "obstacles[0].y = inf"},
-      {"nan angle", {with(ok, [](EllipseMsg& m) { m.angle = kNaN; })}, "obstacles[0].angle = nan"},
+      {"nan x", {with(ok, [](Ellipse& m) { m.x = kNaN; })}, "obstacles[0].x = nan"},
+      {"inf y", {with(ok, [](Ellipse& m) { m.y = kInf; })}, "obstacles[0].y = inf"},
+      {"nan angle", {with(ok, [](Ellipse& m) { m.angle = kNaN; })}, "obstacles[0].angle = nan"},
       {"zero radius",
-       {with(ok, [](EllipseMsg& m) { m.radius_x = 0; })},
+       {with(ok, [](Ellipse& m) { m.radius_x = 0; })},
        "obstacles[0].radius_x = 0"},
       {"negative radius",
-       {with(ok, [](EllipseMsg& m) { m.radius_y = -1; })},
+       {with(ok, [](Ellipse& m) { m.radius_y = -1; })},
        "obstacles[0].radius_y = -1"},
       {"inf radius",
-       {with(ok, [](EllipseMsg& m) { m.radius_x = kInf; })},
+       {with(ok, [](Ellipse& m) { m.radius_x = kInf; })},
        "obstacles[0].radius_x = inf"},
       {"negative padding",
-       {with(ok, [](EllipseMsg& m) { m.padding = -0.1; })},
+       {with(ok, [](Ellipse& m) { m.padding = -0.1; })},
        "obstacles[0].padding = -0.1"},
-      {"empty name", {with(ok, [](EllipseMsg& m) { m.name = ""; })}, "obstacles[0].name = ''"},
+      {"empty name", {with(ok, [](Ellipse& m) { m.name = ""; })}, "obstacles[0].name = ''"},
       {"empty frame",
-       {with(ok, [](EllipseMsg& m) { m.frame_id = ""; })},
+       {with(ok, [](Ellipse& m) { m.frame_id = ""; })},
        "obstacles[0].frame_id = ''"},
       {"unknown frame",
-       {with(ok, [](EllipseMsg& m) { m.frame_id = "nowhere_link"; })},
+       {with(ok, [](Ellipse& m) { m.frame_id = "nowhere_link"; })},
        "obstacles[0].frame_id = 'nowhere_link'"},
       {"leading slash",
-       {with(ok, [](EllipseMsg& m) { m.frame_id = "/base_link"; })},
+       {with(ok, [](Ellipse& m) { m.frame_id = "/base_link"; })},
        "obstacles[0].frame_id = '/base_link'"},
       {"duplicate name", {ok, ok}, "obstacles[1].name = 'rejected'"},
       {"name of a link",
-       {with(ok, [](EllipseMsg& m) { m.name = "arm"; })},
+       {with(ok, [](Ellipse& m) { m.name = "arm"; })},
        "obstacles[0].name = 'arm'"},
       {"second entry bad",
        {ok, with(ok,
-                 [](EllipseMsg& m) {
+                 [](Ellipse& m) {
                    m.name = "second";
                    m.x = kNaN;
                  })},
@@ -303,47 +303,47 @@ TEST_F(NodeServices, EveryBadObstacleIsRefusedNamingFieldAndValue) {
 struct BadCheck {
   const char* what;
   std::vector<std::string> names;
-  std::vector<EllipseMsg> query;
+  std::vector<Ellipse> query;
   const char* message_part;
   std::string min_distance_of{};  // empty: not asked
 };
 
 TEST_F(NodeServices, EveryBadCheckRequestIsAnAnswerNamingFieldAndValue) {
-  const EllipseMsg ok = ellipseMsg("p", "base_link", 0.0, 0.0, 0.2, 0.2);
+  const Ellipse ok = ellipseMsg("p", "base_link", 0.0, 0.0, 0.2, 0.2);
   const std::vector<BadCheck> cases = {
       {"unknown name", {"ghost"}, {}, "names[0] = 'ghost'"},
       {"empty name", {""}, {}, "names[0] = ''"},
       {"duplicate name", {"arm", "arm"}, {}, "names[1] = 'arm'"},
-      {"nan query", {}, {with(ok, [](EllipseMsg& m) { m.x = kNaN; })}, "query[0].x = nan"},
+      {"nan query", {}, {with(ok, [](Ellipse& m) { m.x = kNaN; })}, "query[0].x = nan"},
       {"inf query",
        {},
-       {with(ok, [](EllipseMsg& m) { m.radius_y = kInf; })},
+       {with(ok, [](Ellipse& m) { m.radius_y = kInf; })},
        "query[0].radius_y = inf"},
       {"zero radius",
        {},
-       {with(ok, [](EllipseMsg& m) { m.radius_x = 0; })},
+       {with(ok, [](Ellipse& m) { m.radius_x = 0; })},
        "query[0].radius_x = 0"},
       {"negative radius",
        {},
-       {with(ok, [](EllipseMsg& m) { m.radius_y = -2; })},
+       {with(ok, [](Ellipse& m) { m.radius_y = -2; })},
        "query[0].radius_y = -2"},
       {"empty query name",
        {},
-       {with(ok, [](EllipseMsg& m) { m.name = ""; })},
+       {with(ok, [](Ellipse& m) { m.name = ""; })},
        "query[0].name = ''"},
       {"query named like a stored ellipse",
        {},
-       {with(ok, [](EllipseMsg& m) { m.name = "crate"; })},
+       {with(ok, [](Ellipse& m) { m.name = "crate"; })},
        "query[0].name = 'crate'"},
       {"duplicate query", {}, {ok, ok}, "query[1].name = 'p'"},
       {"unknown query frame",
        {},
-       {with(ok, [](EllipseMsg& m) { m.frame_id = "nowhere_link"; })},
+       {with(ok, [](Ellipse& m) { m.frame_id = "nowhere_link"; })},
        "query[0].frame_id = 'nowhere_link'"},
       {"unknown min_distance_of", {}, {}, "min_distance_of = 'ghost'", "ghost"},
       {"min_distance_of a refused query",
        {},
-       {with(ok, [](EllipseMsg& m) { m.x = kNaN; })},
+       {with(ok, [](Ellipse& m) { m.x = kNaN; })},
        "query[0].x = nan",
        "p"},
       {"min_distance_of with a bad name filter", {"ghost"}, {}, "names[0] = 'ghost'", "post"},

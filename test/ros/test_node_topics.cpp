@@ -339,7 +339,7 @@ TEST_F(NodeTopics, ObstacleStreamReplacesThePreviousTopicObstacles) {
 
   // A bad message is refused as a whole; the previous topic obstacles stay.
   Recorder<diagnostic_msgs::DiagnosticArray> diagnostics(nh_, "/diagnostics");
-  EllipseMsg bad = ellipseMsg("rock4", "", 0.0, 0.0, 0.1, 0.1);
+  Ellipse bad = ellipseMsg("rock4", "", 0.0, 0.0, 0.1, 0.1);
   bad.x = std::numeric_limits<double>::quiet_NaN();
   publishObstacles(obstacles_, "base_link", {bad});
   EXPECT_TRUE(diagnostics.waitForAny(

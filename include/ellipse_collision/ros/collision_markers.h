@@ -10,7 +10,7 @@
 #include <utility>
 #include <vector>
 
-#include "ellipse_collision/scene_check.h"
+#include "ellipse_collision/core/scene_check.h"
 
 namespace ellipse_collision {
 
@@ -30,12 +30,12 @@ class CollisionMarkers {
   /// The next MarkerArray to publish. `placed` holds links and obstacles (queries are skipped) in
   /// `fixed_frame`; `collisions` and `warnings` the check's pairs among them. Remembers what it
   /// returned, so call it only for arrays that are actually published.
-  visualization_msgs::MarkerArray update(const std::vector<NamedEllipse>& placed,
-                                         const std::vector<CollidingPair>& collisions,
-                                         const std::vector<NearPair>& warnings,
+  visualization_msgs::MarkerArray update(const std::vector<core::NamedEllipse>& placed,
+                                         const std::vector<core::CollidingPair>& collisions,
+                                         const std::vector<core::NearPair>& warnings,
                                          const std::string& fixed_frame, const ros::Time& stamp);
 
-  static const char* nameSpace(EllipseRole role);
+  static const char* nameSpace(core::EllipseRole role);
 
   /// The id of the ellipse named `name` in its namespace: a 31-bit FNV-1a hash of the name, the
   /// same in every run. Only if another name of the namespace took it first (a hash clash) does

@@ -14,7 +14,7 @@
 #include "ellipse_collision/ros/ellipse_registry.h"
 #include "ellipse_collision/ros/messages.h"
 #include "ellipse_collision/ros/node_config.h"
-#include "ellipse_collision/scene_check.h"
+#include "ellipse_collision/core/scene_check.h"
 
 namespace ellipse_collision {
 
@@ -30,12 +30,12 @@ class CollisionNode {
  private:
   /// One check of the stored ellipses (and query ellipses) in the fixed frame.
   struct CheckOutcome {
-    std::vector<NamedEllipse> placed;             ///< stored ellipses that could be placed
+    std::vector<core::NamedEllipse> placed;             ///< stored ellipses that could be placed
     std::vector<std::string> unavailable_frames;  ///< sorted; their ellipses were skipped
     std::vector<std::string> skipped;             ///< why each skipped ellipse was skipped
-    std::vector<CollidingPair> collisions;
-    std::vector<NearPair> warnings;
-    std::optional<NearPair> nearest;  ///< of min_distance_of, when asked and measured
+    std::vector<core::CollidingPair> collisions;
+    std::vector<core::NearPair> warnings;
+    std::optional<core::NearPair> nearest;  ///< of min_distance_of, when asked and measured
     std::string nearest_problem;      ///< why it was asked but not measured
     std::string error;                ///< a bad request: nothing was checked
   };
@@ -73,7 +73,7 @@ class CollisionNode {
   ros::NodeHandle nh_;
   ros::NodeHandle private_nh_;
   NodeConfig config_;
-  SceneRules rules_;
+  core::SceneRules rules_;
   EllipseRegistry registry_;
 
   tf2_ros::Buffer tf_buffer_;

@@ -6,7 +6,7 @@
 
 #include "ellipse_collision/ros/ellipse_spec.h"
 #include "ellipse_collision/ros/messages.h"
-#include "ellipse_collision/scene_check.h"
+#include "ellipse_collision/core/scene_check.h"
 
 namespace ellipse_collision {
 
@@ -18,19 +18,19 @@ std::optional<FieldError> findInvalidPaddedField(const EllipseSpec& spec, double
                                                  const std::string& frame_key = "frame_id");
 
 /// Field by field; no validation (see findInvalidPaddedField()).
-EllipseSpec fromMsg(const EllipseMsg& msg);
-EllipseMsg toMsg(const EllipseSpec& spec);
+EllipseSpec fromMsg(const Ellipse& msg);
+Ellipse toMsg(const EllipseSpec& spec);
 
 /// Specs of an EllipseArray; an ellipse with an empty frame_id takes header.frame_id.
 std::vector<EllipseSpec> fromMsg(const EllipseArray& msg);
 
-CollidingPair fromMsg(const CollisionPair& msg);
-CollisionPair toMsg(const CollidingPair& pair);
-std::vector<CollisionPair> toMsg(const std::vector<CollidingPair>& pairs);
+core::CollidingPair fromMsg(const CollisionPair& msg);
+CollisionPair toMsg(const core::CollidingPair& pair);
+std::vector<CollisionPair> toMsg(const std::vector<core::CollidingPair>& pairs);
 
 /// Points in the fixed frame's plane; z is 0 in messages and ignored when read.
-NearPair fromMsg(const ClearancePair& msg);
-ClearancePair toMsg(const NearPair& pair);
-std::vector<ClearancePair> toMsg(const std::vector<NearPair>& pairs);
+core::NearPair fromMsg(const ClearancePair& msg);
+ClearancePair toMsg(const core::NearPair& pair);
+std::vector<ClearancePair> toMsg(const std::vector<core::NearPair>& pairs);
 
 }  // namespace ellipse_collision

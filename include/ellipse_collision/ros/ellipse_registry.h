@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "ellipse_collision/ros/ellipse_spec.h"
-#include "ellipse_collision/scene_check.h"
+#include "ellipse_collision/core/scene_check.h"
 
 namespace ellipse_collision {
 
@@ -16,8 +16,8 @@ enum class EllipseSource { ConfiguredLink, ConfiguredObstacle, ServiceObstacle, 
 struct StoredEllipse {
   EllipseSpec spec;
   EllipseSource source{EllipseSource::ConfiguredLink};
-  EllipseRole role() const {
-    return source == EllipseSource::ConfiguredLink ? EllipseRole::Link : EllipseRole::Obstacle;
+  core::EllipseRole role() const {
+    return source == EllipseSource::ConfiguredLink ? core::EllipseRole::Link : core::EllipseRole::Obstacle;
   }
 };
 

@@ -3,7 +3,7 @@
 #include <optional>
 #include <string>
 
-#include "ellipse_collision/ellipse.h"
+#include "ellipse_collision/core/ellipse.h"
 
 namespace ellipse_collision {
 
@@ -37,7 +37,7 @@ std::optional<FieldError> findInvalidField(const EllipseSpec& spec,
 std::string describeRequestError(const std::string& entry, const FieldError& error);
 
 /// The ellipse in its own frame with both radii grown by spec.padding + global_padding [m].
-Ellipse paddedEllipse(const EllipseSpec& spec, double global_padding);
+core::Ellipse paddedEllipse(const EllipseSpec& spec, double global_padding);
 
 /// A number as it would be read back: shortest round-trip form, "nan", "inf", "-inf".
 std::string formatNumber(double value);

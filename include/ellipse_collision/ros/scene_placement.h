@@ -9,7 +9,7 @@
 #include <string>
 
 #include "ellipse_collision/ros/ellipse_spec.h"
-#include "ellipse_collision/scene_check.h"
+#include "ellipse_collision/core/scene_check.h"
 
 namespace ellipse_collision {
 
@@ -21,7 +21,7 @@ class ScenePlacement {
 
   struct Placement {
     Status status{Status::Placed};
-    NamedEllipse ellipse;  ///< in the fixed frame, when Placed
+    core::NamedEllipse ellipse;  ///< in the fixed frame, when Placed
     std::string error;     ///< the tf error or the projection error otherwise
   };
 
@@ -29,7 +29,7 @@ class ScenePlacement {
   ScenePlacement(const tf2_ros::Buffer& buffer, std::string fixed_frame, double global_padding_m,
                  ros::Time time, ros::Duration timeout);
 
-  Placement place(const EllipseSpec& spec, EllipseRole role);
+  Placement place(const EllipseSpec& spec, core::EllipseRole role);
 
  private:
   struct FrameLookup {

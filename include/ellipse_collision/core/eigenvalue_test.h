@@ -1,8 +1,8 @@
 #pragma once
 
-#include "ellipse_collision/ellipse.h"
+#include "ellipse_collision/core/ellipse.h"
 
-namespace ellipse_collision {
+namespace ellipse_collision::core {
 
 /// Eigenvalue test (Gilitschenski & Hanebeck 2012; Perram & Wertheim 1985) deciding overlap only.
 /// It maximises the concave Q(s) and stops as soon as a lower bound exceeds 1 (separate) or an
@@ -14,4 +14,4 @@ bool eigenvalueOverlap(const Ellipse& a, const Ellipse& b);
 /// The ellipses overlap iff t* <= 1; coincident centres give 0. Computed as sqrt(max_s Q(s)).
 double contactScale(const Ellipse& a, const Ellipse& b);
 
-}  // namespace ellipse_collision
+}  // namespace ellipse_collision::core

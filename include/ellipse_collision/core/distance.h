@@ -2,9 +2,9 @@
 
 #include <Eigen/Core>
 
-#include "ellipse_collision/ellipse.h"
+#include "ellipse_collision/core/ellipse.h"
 
-namespace ellipse_collision {
+namespace ellipse_collision::core {
 
 /// How far apart two ellipses are, and where.
 struct Clearance {
@@ -34,4 +34,4 @@ struct Clearance {
 /// ratios up to 1e3 and sizes 1e-4..1e4 m. Both ellipses must be valid (see invalidReason()).
 Clearance distance(const Ellipse& a, const Ellipse& b);
 
-}  // namespace ellipse_collision
+}  // namespace ellipse_collision::core

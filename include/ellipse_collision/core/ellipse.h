@@ -3,7 +3,7 @@
 #include <Eigen/Core>
 #include <string>
 
-namespace ellipse_collision {
+namespace ellipse_collision::core {
 
 /// A closed 2D ellipse: {center + R(angle) * diag(radius_x, radius_y) * u : |u| <= 1}.
 struct Ellipse {
@@ -30,4 +30,4 @@ inline double boundingRadius(const Ellipse& e) { return e.radius_x > e.radius_y 
 /// Radius of the largest circle about the centre that the ellipse contains [m].
 inline double inscribedRadius(const Ellipse& e) { return e.radius_x < e.radius_y ? e.radius_x : e.radius_y; }
 
-}  // namespace ellipse_collision
+}  // namespace ellipse_collision::core

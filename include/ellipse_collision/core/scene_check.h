@@ -6,9 +6,9 @@
 #include <utility>
 #include <vector>
 
-#include "ellipse_collision/ellipse.h"
+#include "ellipse_collision/core/ellipse.h"
 
-namespace ellipse_collision {
+namespace ellipse_collision::core {
 
 /// What an ellipse stands for decides which pairs are checked: link-obstacle always, link-link
 /// iff self collision is on, obstacle-obstacle never, query against every link and obstacle,
@@ -115,4 +115,4 @@ struct NearestResult {
 NearestResult nearestTo(const std::vector<NamedEllipse>& ellipses, const SceneRules& rules,
                         const std::string& name);
 
-}  // namespace ellipse_collision
+}  // namespace ellipse_collision::core

@@ -1,8 +1,8 @@
 #pragma once
 
-#include "ellipse_collision/ellipse.h"
+#include "ellipse_collision/core/ellipse.h"
 
-namespace ellipse_collision {
+namespace ellipse_collision::core {
 namespace detail {
 
 /// The circle tests compare squared lengths computed in double; this relative margin keeps their
@@ -29,4 +29,4 @@ inline bool overlap(const Ellipse& a, const Ellipse& b) {
          detail::overlapOfNearPair(a, b);
 }
 
-}  // namespace ellipse_collision
+}  // namespace ellipse_collision::core

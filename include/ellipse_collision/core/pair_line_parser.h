@@ -3,9 +3,9 @@
 #include <string>
 #include <string_view>
 
-#include "ellipse_collision/ellipse.h"
+#include "ellipse_collision/core/ellipse.h"
 
-namespace ellipse_collision {
+namespace ellipse_collision::core {
 
 /// One line of check_ellipses input: `cx1 cy1 rx1 ry1 angle1 cx2 cy2 rx2 ry2 angle2`
 /// (centres and radii in m, angles in rad; fields 1-5 are ellipse 1, fields 6-10 ellipse 2).
@@ -26,4 +26,4 @@ struct PairLine {
 /// first problem found is reported.
 PairLine parsePairLine(std::string_view line);
 
-}  // namespace ellipse_collision
+}  // namespace ellipse_collision::core

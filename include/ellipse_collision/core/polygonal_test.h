@@ -1,8 +1,8 @@
 #pragma once
 
-#include "ellipse_collision/ellipse.h"
+#include "ellipse_collision/core/ellipse.h"
 
-namespace ellipse_collision {
+namespace ellipse_collision::core {
 
 /// What the polygonal test could prove. `Unknown` means it ran out of iterations: it is never
 /// a "no collision".
@@ -28,4 +28,4 @@ constexpr int kOverlapPolygonalIterations = 0;
 PolygonalResult polygonalTest(const Ellipse& a, const Ellipse& b,
                               int max_iterations = kDefaultPolygonalIterations);
 
-}  // namespace ellipse_collision
+}  // namespace ellipse_collision::core

@@ -3,9 +3,9 @@
 #include <cstddef>
 #include <vector>
 
-#include "ellipse_collision/ellipse.h"
+#include "ellipse_collision/core/ellipse.h"
 
-namespace ellipse_collision {
+namespace ellipse_collision::core {
 
 /// A closed axis-aligned box [min_x, max_x] x [min_y, max_y] [m], min <= max. A box with a NaN
 /// bound overlaps nothing.
@@ -97,4 +97,4 @@ std::vector<IndexPair> overlappingBoxPairs(const std::vector<BoundingBox>& a,
 /// BoxGrid(boxes).overlappingPairs().
 std::vector<IndexPair> overlappingBoxPairs(const std::vector<BoundingBox>& boxes);
 
-}  // namespace ellipse_collision
+}  // namespace ellipse_collision::core

@@ -1,10 +1,10 @@
 #pragma once
 
-#include "ellipse_collision/broadphase.h"
-#include "ellipse_collision/ellipse.h"
-#include "ellipse_collision/overlap.h"
+#include "ellipse_collision/core/broadphase.h"
+#include "ellipse_collision/core/ellipse.h"
+#include "ellipse_collision/core/overlap.h"
 
-namespace ellipse_collision {
+namespace ellipse_collision::core {
 
 /// An ellipse with everything its pair tests need from it alone, computed once (one sincos, two
 /// divisions, two square roots): build one per ellipse and check cycle, then every pair test
@@ -51,4 +51,4 @@ inline bool overlap(const PreparedEllipse& a, const PreparedEllipse& b) {
 /// contactScale(a.ellipse(), b.ellipse()), without the per-ellipse work.
 double contactScale(const PreparedEllipse& a, const PreparedEllipse& b);
 
-}  // namespace ellipse_collision
+}  // namespace ellipse_collision::core

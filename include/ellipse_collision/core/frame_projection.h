@@ -3,9 +3,9 @@
 #include <Eigen/Geometry>
 #include <string>
 
-#include "ellipse_collision/ellipse.h"
+#include "ellipse_collision/core/ellipse.h"
 
-namespace ellipse_collision {
+namespace ellipse_collision::core {
 
 /// A projection is refused as edge-on when the projected ellipse's smaller semi-axis is below this
 /// fraction of the smaller radius it had in its own frame (for a circle: the frame's z axis is
@@ -36,4 +36,4 @@ struct ProjectionResult {
 ProjectionResult projectToPlane(const Ellipse& in_frame, const Eigen::Isometry3d& fixed_from_frame,
                                 const std::string& name);
 
-}  // namespace ellipse_collision
+}  // namespace ellipse_collision::core
