@@ -39,3 +39,13 @@ ellipse_collision_add_rostest(test_node_cli test/ros/node_cli.test
   test/ros/test_node_cli.cpp)
 ellipse_collision_add_rostest(test_bad_config test/ros/bad_config.test
   test/ros/test_bad_config.cpp)
+
+# ---- every message and service type a user meets loads in Debian's Python (rosservice,
+# rostopic, rospy): catches a missing python3-*-msgs package in scripts/setup.sh.
+catkin_run_tests_target("python" "message_types" "python-message_types.xml"
+  COMMAND "${PYTHON_EXECUTABLE} ${PROJECT_SOURCE_DIR}/test/python/check_message_types.py ${PROJECT_SOURCE_DIR} --junit ${CATKIN_TEST_RESULTS_DIR}/${PROJECT_NAME}/python-message_types.xml"
+  DEPENDENCIES ${PROJECT_NAME}_generate_messages)
+
+# ---- the rospy example client against the example configuration (a Python rostest).
+add_rostest(test/ros/python_client.test
+  DEPENDENCIES ellipse_collision_node ${PROJECT_NAME}_generate_messages)

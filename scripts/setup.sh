@@ -26,6 +26,20 @@ DEBIAN_PACKAGES=(
   libtf2-ros-dev
   libtf2-eigen-dev
   libtf2-geometry-msgs-dev
+  # The Python side of every message package the package's messages, services and topics use
+  # (rosservice, rostopic and rospy clients load them); test/python/check_message_types.py fails
+  # when one is missing, so this list cannot drift from msg/, srv/ and the node's topics.
+  python3-std-msgs
+  python3-geometry-msgs
+  python3-visualization-msgs
+  python3-diagnostic-msgs
+  python3-sensor-msgs
+  python3-std-srvs
+  python3-tf2-msgs
+  python3-rosgraph-msgs
+  python3-roslib
+  python3-rospy
+  python3-rosmsg
   # ROS command-line tools (rosrun, roslaunch, rostest and the introspection tools tests use)
   rosbash
   python3-roslaunch
@@ -33,6 +47,7 @@ DEBIAN_PACKAGES=(
   python3-rosservice
   python3-rostopic
   python3-rosnode
+  python3-rosparam
   librostest-dev
   # demo: robot model, tf from joint states, rviz headless and its screenshot
   libstd-srvs-dev

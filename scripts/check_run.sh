@@ -1,0 +1,93 @@
+#!/usr/bin/env bash
+# Checks the README's run command as a user would: starts `scripts/run.sh --headless` (the demo,
+# with rviz under Xvfb) on a ROS master of its own, waits until the demo's screenshot file appears,
+# reads one state from `rostopic echo -n 1 /ellipse_collision/collisions` (Debian's Python CLI),
+# lets the demo run for the rest of the given time, then stops it with Ctrl-C (SIGINT) and checks
+# that it ended. scripts/fresh_machine.sh runs it inside the fresh root.
+#
+# usage: scripts/check_run.sh [SECONDS]   (default 60: how long the demo runs in all)
+# Exit status 0 iff every check passed; each check prints one line.
+set -euo pipefail
+
+repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+duration="${1:-60}"
+export PATH="/usr/bin:${PATH}"
+
+out="$(mktemp -d "${TMPDIR:-/tmp}/ellipse_collision_check_run.XXXXXX")"
+screenshot="${out}/demo.png"
+port="$(/usr/bin/python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')"
+export ROS_MASTER_URI="http://localhost:${port}" ROS_LOG_DIR="${out}/ros_log"
+
+failures=0
+check() {  # check NAME STATUS DETAIL
+  if [[ "$2" == 0 ]]; then
+    echo "check_run: ok     $1"
+  else
+    echo "check_run: FAILED $1: $3"
+    failures=$((failures + 1))
+  fi
+}
+
+run_pid=""
+stop_run() {
+  if [[ -n "${run_pid}" ]] && kill -0 "${run_pid}" 2>/dev/null; then
+    kill -INT "${run_pid}" 2>/dev/null || true
+    for _ in $(seq 200); do kill -0 "${run_pid}" 2>/dev/null || break; sleep 0.2; done
+    kill -KILL "${run_pid}" 2>/dev/null || true
+  fi
+}
+trap stop_run EXIT
+
+start=${SECONDS}
+# run.sh execs demo.sh, which stops everything it started on SIGINT, as after a user's Ctrl-C.
+bash "${repo}/scripts/run.sh" --headless --screenshot "${screenshot}" --period 5 \
+  > "${out}/run.log" 2>&1 &
+run_pid=$!
+
+# 1. The screenshot file appears (setup and build are quick after scripts/test.sh ran).
+deadline=$((SECONDS + 240 + duration))
+while [[ ! -s "${screenshot}" ]] && ((SECONDS < deadline)) && kill -0 "${run_pid}" 2>/dev/null; do
+  sleep 1
+done
+if [[ -s "${screenshot}" ]]; then
+  check "screenshot ${screenshot} appeared after $((SECONDS - start)) s" 0 ""
+else
+  check "screenshot appears" 1 "no file at ${screenshot}; run.sh log:
+$(tail -n 30 "${out}/run.log")"
+fi
+
+# 2. A user reads the state with Debian's rostopic (Python messages must be installed).
+set +u
+# shellcheck source=/dev/null
+source "${repo}/build/ws/devel/setup.bash"
+set -u
+echo_status=0
+timeout 30 rostopic echo -n 1 /ellipse_collision/collisions > "${out}/echo.txt" 2>&1 \
+  || echo_status=$?
+if ((echo_status == 0)) && grep -q '^in_collision: ' "${out}/echo.txt"; then
+  check "rostopic echo -n 1 /ellipse_collision/collisions printed a state ($(grep -c . "${out}/echo.txt") lines)" 0 ""
+else
+  check "rostopic echo -n 1 /ellipse_collision/collisions prints a state" 1 \
+    "exit ${echo_status}: $(head -c 2000 "${out}/echo.txt")"
+fi
+
+# 3. The demo keeps running for the rest of the time, then Ctrl-C ends it.
+while ((SECONDS - start < duration)) && kill -0 "${run_pid}" 2>/dev/null; do sleep 1; done
+if kill -0 "${run_pid}" 2>/dev/null; then
+  check "demo still running after ${duration} s" 0 ""
+else
+  check "demo keeps running for ${duration} s" 1 "run.sh ended early; log:
+$(tail -n 30 "${out}/run.log")"
+fi
+kill -INT "${run_pid}" 2>/dev/null || true
+stopped=1
+for _ in $(seq 200); do
+  if ! kill -0 "${run_pid}" 2>/dev/null; then stopped=0; break; fi
+  sleep 0.2
+done
+check "Ctrl-C stops the demo" "${stopped}" "run.sh still alive 40 s after SIGINT"
+run_pid=""
+
+grep -i 'error' "${out}/run.log" | grep -v 'media_export' | head -n 5 | sed 's/^/check_run: demo log: /' || true
+rm -rf "${out}"
+((failures == 0))
