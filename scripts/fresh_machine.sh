@@ -85,7 +85,7 @@ print_times() {
 # ---- base: the minbase root, from the archive the host's apt uses -------------------------------
 begin_phase base
 mkdir -p "${cache}/archives/partial"
-if [[ ! -s "${base_tarball}" ]]; then
+if [[ ! -f "${base_tarball}" ]]; then
   if ! command -v mmdebstrap >/dev/null; then
     apt-get update -q
     DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends mmdebstrap
@@ -101,7 +101,8 @@ if [[ ! -s "${base_tarball}" ]]; then
     echo "fresh_machine.sh: the host has no apt sources to make the root from" >&2
     exit 1
   fi
-  mmdebstrap --variant=minbase --quiet "${suite}" "${base_tarball}.partial" "${sources[@]}"
+  mmdebstrap --variant=minbase --format=tar --quiet "${suite}" "${base_tarball}.partial" \
+    "${sources[@]}"
   mv "${base_tarball}.partial" "${base_tarball}"
 else
   echo "cached: ${base_tarball}"
