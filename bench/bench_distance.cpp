@@ -1,5 +1,5 @@
 // ns per pair of distance() beside FCL's distance query on the same stored pairs, with the accuracy
-// of each against the quad-precision oracle of test/core/distance_oracle.h as counters:
+// of each against the quad-precision oracle of test/support/distance_oracle.h as counters:
 //   max_rel_err, median_rel_err   |distance - oracle| / oracle over the whole set;
 //   nonpositive                    fraction of these separated pairs given a distance <= 0.
 // A 2D ellipse is an FCL ellipsoid centred in the z = 0 plane: both shapes are symmetric about that

@@ -194,7 +194,7 @@ const std::pair<const char*, Method> kMethods[] = {
 }  // namespace ellipse_collision::core::bench
 
 int main(int argc, char** argv) {
-  using namespace ellipse_collision;
+  using namespace ellipse_collision::core;
   using namespace ellipse_collision::core::bench;
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;

@@ -21,7 +21,7 @@
 #include <set>
 #include <string>
 
-#include "ellipse_collision/ros/ellipse_registry.h"
+#include "ellipse_collision/app/ellipse_registry.h"
 #include "ellipse_collision/ros/node_config.h"
 #include "fuzz_input.h"
 
@@ -138,12 +138,12 @@ void checkAccepted(const NodeConfig& config) {
   FUZZ_REQUIRE(config.padding_m <= core::kMaxRadius, "accepted padding " + std::to_string(config.padding_m));
   std::set<std::string> names;
   for (const auto* list : {&config.links, &config.obstacles}) {
-    for (const EllipseSpec& spec : *list) {
-      const auto invalid = findInvalidField(spec, "frame");
+    for (const app::EllipseSpec& spec : *list) {
+      const auto invalid = app::findInvalidField(spec, "frame");
       FUZZ_REQUIRE(!invalid, "accepted ellipse '" + spec.name + "' with bad " +
                                  (invalid ? invalid->key : std::string()));
       FUZZ_REQUIRE(names.insert(spec.name).second, "accepted duplicate name '" + spec.name + "'");
-      const core::Ellipse padded = paddedEllipse(spec, config.padding_m);
+      const core::Ellipse padded = app::paddedEllipse(spec, config.padding_m);
       FUZZ_REQUIRE(
           core::invalidReason(padded).empty(),
           "accepted ellipse '" + spec.name + "' that the core refuses: " + core::invalidReason(padded));
@@ -153,7 +153,7 @@ void checkAccepted(const NodeConfig& config) {
     FUZZ_REQUIRE(a != b && names.count(a) && names.count(b),
                  "accepted allowed pair [" + a + ", " + b + "]");
   }
-  EllipseRegistry registry(config.links, config.obstacles);  // throws on a duplicate or empty name
+  app::EllipseRegistry registry(config.links, config.obstacles);  // throws on a duplicate or empty name
   // The node builds ros::Duration(1 / rate) and ros::Duration(tf_timeout), which throw
   // std::runtime_error outside +-2^31 s: an accepted configuration must not make them throw.
   // A positive rate must also give a positive period: a zero-period timer would spin.

@@ -1,7 +1,8 @@
-// Fuzz target: the ROS layer's message-to-core conversion and request validation, without a
-// master: a sequence of ~add_obstacles, ~remove_obstacles, ~obstacles and ~check_collisions
-// queries built from the input is put through fromMsg(), findInvalidPaddedField() and the
-// EllipseRegistry as the node does (collision_node.cpp), with every frame at the identity.
+// Fuzz target: the ROS layer's message conversion and the application layer's request handling,
+// without a master: a sequence of ~add_obstacles, ~remove_obstacles, ~obstacles and
+// ~check_collisions requests built from the input goes through the same functions the node calls
+// (fromMsg(), app::validateAttached(), app::EllipseRegistry, app::validateCheckRequest(),
+// app::runCheck(), toMsg()), with every frame at the identity except "arm_link", which has none.
 //
 // Invariants:
 //  - fromMsg()/toMsg() keep every field bit for bit; an EllipseArray entry without a frame takes
@@ -14,6 +15,7 @@
 //  - every registry change is all-or-nothing, links are never replaced or removed, names stay
 //    unique, and what a successful call says it did is what the registry holds afterwards.
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -22,10 +24,9 @@
 #include <string>
 #include <vector>
 
-#include "ellipse_collision/core/frame_projection.h"
+#include "ellipse_collision/app/collision_check.h"
 #include "ellipse_collision/ros/conversions.h"
-#include "ellipse_collision/ros/ellipse_registry.h"
-#include "ellipse_collision/core/scene_check.h"
+#include "ellipse_collision/app/ellipse_registry.h"
 #include "fuzz_input.h"
 
 namespace ellipse_collision::fuzz {
@@ -46,7 +47,7 @@ std::string pick(FuzzInput& input, const char* const (&table)[N]) {
 
 bool sameBits(double x, double y) { return std::memcmp(&x, &y, sizeof x) == 0; }
 
-bool sameSpec(const EllipseSpec& a, const EllipseSpec& b) {
+bool sameSpec(const app::EllipseSpec& a, const app::EllipseSpec& b) {
   return a.name == b.name && a.frame_id == b.frame_id && sameBits(a.x, b.x) && sameBits(a.y, b.y) &&
          sameBits(a.angle, b.angle) && sameBits(a.radius_x, b.radius_x) &&
          sameBits(a.radius_y, b.radius_y) && sameBits(a.padding, b.padding);
@@ -73,7 +74,7 @@ Ellipse readMsg(FuzzInput& input) {
 
 /// The rule of ellipse_spec.h and conversions.h restated: which key findInvalidPaddedField() must
 /// name, or "". The padded sums are formed in the same order as paddedEllipse().
-std::string expectedInvalidKey(const EllipseSpec& s, double global_padding) {
+std::string expectedInvalidKey(const app::EllipseSpec& s, double global_padding) {
   const auto coordinate_bad = [](double v) {
     return !std::isfinite(v) || std::fabs(v) > core::kMaxCoordinate;
   };
@@ -95,14 +96,16 @@ std::string expectedInvalidKey(const EllipseSpec& s, double global_padding) {
   return "";
 }
 
-/// Converts and validates the entries of one request like the node; "" when all are accepted.
-std::string validate(const std::vector<Ellipse>& msgs, const std::vector<EllipseSpec>& specs,
+/// Checks the field rules of every entry against the documented rule; returns the first entry's
+/// rendered error, "" when all are accepted (the real decision is the application layer's, which
+/// must agree).
+std::string validate(const std::vector<Ellipse>& msgs, const std::vector<app::EllipseSpec>& specs,
                      const std::string& field, double global_padding) {
   for (std::size_t i = 0; i < specs.size(); ++i) {
     FUZZ_REQUIRE(sameSpec(specs[i], fromMsg(msgs[i])) && sameMsg(toMsg(specs[i]), msgs[i]),
                  "msg -> spec -> msg changed a field of " + field + "[" + std::to_string(i) + "]");
 
-    const auto invalid = findInvalidPaddedField(specs[i], global_padding);
+    const auto invalid = app::findInvalidPaddedField(specs[i], global_padding);
     const std::string expected_key = expectedInvalidKey(specs[i], global_padding);
     FUZZ_REQUIRE((invalid ? invalid->key : "") == expected_key,
                  "findInvalidPaddedField named '" + (invalid ? invalid->key : std::string()) +
@@ -110,14 +113,14 @@ std::string validate(const std::vector<Ellipse>& msgs, const std::vector<Ellipse
                      std::to_string(i) + "]");
     if (invalid) {
       const std::string where = field + "[" + std::to_string(i) + "]";
-      const std::string message = describeRequestError(where, *invalid);
+      const std::string message = app::describeFieldError(where, *invalid);
       FUZZ_REQUIRE(message.rfind(where + "." + invalid->key + " = ", 0) == 0 &&
                        message.find(": expected ") != std::string::npos && !invalid->actual.empty(),
                    "request error does not name entry, key, value and expectation: " + message);
       return message;
     }
     // Accepted means checkable: the padded ellipse is one the core takes (before any transform).
-    const core::Ellipse padded = paddedEllipse(specs[i], global_padding);
+    const core::Ellipse padded = app::paddedEllipse(specs[i], global_padding);
     FUZZ_REQUIRE(core::invalidReason(padded).empty(),
                  field + "[" + std::to_string(i) +
                      "] passed request validation but the core refuses it: " +
@@ -126,9 +129,9 @@ std::string validate(const std::vector<Ellipse>& msgs, const std::vector<Ellipse
   return {};
 }
 
-using Snapshot = std::map<std::string, std::pair<EllipseSource, EllipseSpec>>;
+using Snapshot = std::map<std::string, std::pair<app::EllipseSource, app::EllipseSpec>>;
 
-Snapshot snapshot(const EllipseRegistry& registry) {
+Snapshot snapshot(const app::EllipseRegistry& registry) {
   Snapshot copy;
   for (const auto& [name, stored] : registry.entries()) copy[name] = {stored.source, stored.spec};
   return copy;
@@ -145,8 +148,16 @@ bool sameSnapshot(const Snapshot& a, const Snapshot& b) {
   return true;
 }
 
-EllipseSpec configured(const char* name, const char* frame, double x) {
-  EllipseSpec spec;
+/// Every frame is the fixed frame's twin, except arm_link, which tf has never heard of.
+app::FrameTransform identityLookup(const std::string& frame) {
+  app::FrameTransform transform;
+  transform.ok = frame != "arm_link";
+  if (!transform.ok) transform.error = "frame 'arm_link' does not exist";
+  return transform;
+}
+
+app::EllipseSpec configured(const char* name, const char* frame, double x) {
+  app::EllipseSpec spec;
   spec.name = name;
   spec.frame_id = frame;
   spec.x = x;
@@ -162,10 +173,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   using namespace ellipse_collision;
   using namespace ellipse_collision::fuzz;
   FuzzInput input(data, size);
-  EllipseRegistry registry(
+  app::EllipseRegistry registry(
       {configured("body", "base_link", 0.0), configured("arm", "arm_link", 1.0)},
       {configured("crate", "odom", 2.0)});
-  const double global_padding = input.flag() ? 0.0 : 0.02;
+  app::CheckSettings settings;
+  settings.global_padding_m = input.flag() ? 0.0 : 0.02;
+  const double global_padding = settings.global_padding_m;
+  const app::TransformLookup lookup = identityLookup;
 
   for (int operation = 0; operation < 8 && input.remaining() > 0; ++operation) {
     const Snapshot before = snapshot(registry);
@@ -174,23 +188,28 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     for (Ellipse& msg : msgs) msg = readMsg(input);
 
     if (kind == 0) {  // ~add_obstacles
-      std::vector<EllipseSpec> specs;
+      std::vector<app::EllipseSpec> specs;
       for (const Ellipse& msg : msgs) specs.push_back(fromMsg(msg));
-      std::string error = validate(msgs, specs, "obstacles", global_padding);
+      const std::string field_error = validate(msgs, specs, "obstacles", global_padding);
+      std::string error = app::validateAttached(specs, "obstacles", settings, lookup);
+      FUZZ_REQUIRE(field_error.empty() ? error.empty() || error.find(".frame_id = 'arm_link'") !=
+                                                              std::string::npos
+                                       : error == field_error,
+                   "validateAttached answered '" + error + "', the field rules '" + field_error + "'");
       if (error.empty()) error = registry.addObstacles(specs, "obstacles");
       if (!error.empty()) {
         FUZZ_REQUIRE(sameSnapshot(before, snapshot(registry)), "refused add changed the registry");
         FUZZ_REQUIRE(error.rfind("obstacles[", 0) == 0, "add error names no entry: " + error);
       } else {
-        for (const EllipseSpec& spec : specs) {
+        for (const app::EllipseSpec& spec : specs) {
           const auto found = registry.entries().find(spec.name);
           FUZZ_REQUIRE(found != registry.entries().end() &&
-                           found->second.source == EllipseSource::ServiceObstacle &&
+                           found->second.source == app::EllipseSource::ServiceObstacle &&
                            sameSpec(found->second.spec, spec),
                        "added obstacle '" + spec.name + "' is not stored as given");
           FUZZ_REQUIRE(!before.count(spec.name) ||
-                           before.at(spec.name).first == EllipseSource::ConfiguredObstacle ||
-                           before.at(spec.name).first == EllipseSource::ServiceObstacle,
+                           before.at(spec.name).first == app::EllipseSource::ConfiguredObstacle ||
+                           before.at(spec.name).first == app::EllipseSource::ServiceObstacle,
                        "add replaced a link or topic obstacle '" + spec.name + "'");
         }
       }
@@ -205,7 +224,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       } else {
         for (const std::string& name : names) {
           FUZZ_REQUIRE(before.count(name) &&
-                           before.at(name).first != EllipseSource::ConfiguredLink &&
+                           before.at(name).first != app::EllipseSource::ConfiguredLink &&
                            !registry.contains(name),
                        "remove of '" + name + "' succeeded wrongly");
         }
@@ -216,7 +235,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       EllipseArray array;
       array.header.frame_id = pick(input, kFrames);
       array.ellipses = msgs;
-      const std::vector<EllipseSpec> specs = fromMsg(array);
+      const std::vector<app::EllipseSpec> specs = fromMsg(array);
       FUZZ_REQUIRE(specs.size() == msgs.size(), "fromMsg(EllipseArray) lost entries");
       for (std::size_t i = 0; i < specs.size(); ++i) {
         const std::string& frame =
@@ -225,46 +244,56 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       }
       std::vector<Ellipse> resolved = msgs;
       for (std::size_t i = 0; i < specs.size(); ++i) resolved[i].frame_id = specs[i].frame_id;
-      std::string error = validate(resolved, specs, "ellipses", global_padding);
+      const std::string field_error = validate(resolved, specs, "ellipses", global_padding);
+      std::string error = app::validateAttached(specs, "ellipses", settings, lookup);
+      FUZZ_REQUIRE(field_error.empty() || error == field_error,
+                   "validateAttached answered '" + error + "', the field rules '" + field_error + "'");
       if (error.empty()) error = registry.replaceTopicObstacles(specs, "ellipses");
       if (!error.empty()) {
         FUZZ_REQUIRE(sameSnapshot(before, snapshot(registry)),
                      "refused topic message changed the registry");
       } else {
-        FUZZ_REQUIRE(registry.count(EllipseSource::TopicObstacle) == specs.size(),
+        FUZZ_REQUIRE(registry.count(app::EllipseSource::TopicObstacle) == specs.size(),
                      "topic obstacles are not exactly the last message's");
       }
-    } else {  // ~check_collisions query: validated, then placed and checked with the stored ones
-      std::vector<EllipseSpec> specs;
-      for (const Ellipse& msg : msgs) specs.push_back(fromMsg(msg));
-      if (validate(msgs, specs, "query", global_padding).empty()) {
-        std::vector<core::NamedEllipse> scene;
-        std::set<std::string> names;
-        for (const EllipseSpec& spec : specs) {
-          if (registry.contains(spec.name) || !names.insert(spec.name).second) continue;
-          const core::ProjectionResult placed = core::projectToPlane(paddedEllipse(spec, global_padding),
-                                                         Eigen::Isometry3d::Identity(), spec.name);
-          FUZZ_REQUIRE(placed.ok(), "accepted query refused by projectToPlane: " + placed.error);
-          scene.push_back({spec.name, core::EllipseRole::Query, placed.ellipse});
-        }
-        for (const auto& [name, stored] : registry.entries()) {
-          const core::ProjectionResult placed = core::projectToPlane(paddedEllipse(stored.spec, global_padding),
-                                                         Eigen::Isometry3d::Identity(), name);
-          FUZZ_REQUIRE(placed.ok(),
-                       "stored '" + name + "' refused by projectToPlane: " + placed.error);
-          scene.push_back({name, stored.role(), placed.ellipse});
-        }
-        const core::SceneCheckResult result = core::checkScene(scene, core::SceneRules{});
-        FUZZ_REQUIRE(result.ok(), "checkScene refused a validated scene: " + result.error);
-        for (const core::CollidingPair& pair : result.collisions) {
+    } else {  // ~check_collisions: names, query and min_distance_of, validated then checked
+      CheckCollisions::Request request;
+      request.query = msgs;
+      for (int n = input.integer(0, 3); n > 0; --n) request.names.push_back(pick(input, kNames));
+      if (input.flag()) request.min_distance_of = pick(input, kNames);
+      const app::CheckRequest check = fromMsg(request);
+      FUZZ_REQUIRE(check.query.size() == msgs.size() && check.names == request.names &&
+                       check.min_distance_of == request.min_distance_of,
+                   "fromMsg(CheckCollisions::Request) lost a field");
+      const std::string field_error = validate(msgs, check.query, "query", global_padding);
+      const std::string error = app::validateCheckRequest(check, registry, global_padding);
+      // Name rules are checked entry by entry with the fields, so an earlier entry's name may be
+      // reported first; a field error must refuse the request all the same.
+      FUZZ_REQUIRE(field_error.empty() || !error.empty(),
+                   "validateCheckRequest accepted a request with '" + field_error + "'");
+      if (error.empty()) {
+        const app::CheckOutcome outcome = app::runCheck(check, registry, settings, lookup);
+        const bool query_in_arm_link =
+            std::any_of(check.query.begin(), check.query.end(),
+                        [](const app::EllipseSpec& q) { return q.frame_id == "arm_link"; });
+        FUZZ_REQUIRE(outcome.error.empty() != query_in_arm_link,
+                     "runCheck of a validated request: '" + outcome.error + "'");
+        FUZZ_REQUIRE(outcome.error.rfind("internal error", 0) != 0,
+                     "the core refused a validated scene: " + outcome.error);
+        CheckCollisions::Response response;
+        if (outcome.error.empty()) toMsg(outcome, response);
+        for (const core::CollidingPair& pair : outcome.collisions) {
           const core::CollidingPair back = fromMsg(toMsg(pair));
           FUZZ_REQUIRE(back.name_a == pair.name_a && back.name_b == pair.name_b &&
                            sameBits(back.contact_scale, pair.contact_scale),
                        "CollisionPair round trip changed a field");
         }
+        FUZZ_REQUIRE(response.collisions.size() == outcome.collisions.size() &&
+                         response.in_collision == !outcome.collisions.empty(),
+                     "the response lost collisions");
       }
     }
-    FUZZ_REQUIRE(registry.count(EllipseSource::ConfiguredLink) == 2 && registry.contains("body") &&
+    FUZZ_REQUIRE(registry.count(app::EllipseSource::ConfiguredLink) == 2 && registry.contains("body") &&
                      registry.contains("arm"),
                  "a configured link was removed or replaced");
   }

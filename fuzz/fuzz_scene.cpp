@@ -29,6 +29,7 @@
 #include "ellipse_collision/ellipse_collision.h"
 #include "ellipse_collision/core/frame_projection.h"
 #include "ellipse_collision/core/scene_check.h"
+#include "brute_force_scene.h"
 #include "fuzz_input.h"
 
 namespace ellipse_collision::fuzz {
@@ -136,30 +137,7 @@ void checkScenes(FuzzInput& input) {
   }
   FUZZ_REQUIRE(result.ok(), "checkScene refused a good scene: " + result.error);
 
-  // Each unordered pair once, read lower role first, then lower name, in that order: the loops
-  // below meet them in the documented output order.
-  std::vector<const core::NamedEllipse*> sorted;
-  for (const core::NamedEllipse& e : scene) sorted.push_back(&e);
-  std::sort(sorted.begin(), sorted.end(), [](const core::NamedEllipse* x, const core::NamedEllipse* y) {
-    return std::tie(x->role, x->name) < std::tie(y->role, y->name);
-  });
-  core::SceneCheckResult expected;
-  for (std::size_t i = 0; i < sorted.size(); ++i) {
-    for (std::size_t j = i + 1; j < sorted.size(); ++j) {
-      const core::NamedEllipse& first = *sorted[i];
-      const core::NamedEllipse& second = *sorted[j];
-      if (!core::pairWanted(first, second, rules, only_names)) continue;
-      if (core::overlap(first.ellipse, second.ellipse)) {
-        expected.collisions.push_back(
-            {first.name, second.name, core::contactScale(first.ellipse, second.ellipse)});
-        continue;
-      }
-      const core::Clearance c = core::distance(first.ellipse, second.ellipse);
-      if (c.separated && c.distance < rules.warning_distance) {
-        expected.warnings.push_back({first.name, second.name, c.distance, c.point_a, c.point_b});
-      }
-    }
-  }
+  const core::SceneCheckResult expected = core::test::bruteForceScene(scene, rules, only_names);
   FUZZ_REQUIRE(sameResult(result, expected),
                "checkScene differs from the brute force over all pairs (" +
                    std::to_string(result.collisions.size()) + " vs " +
@@ -174,31 +152,9 @@ void checkScenes(FuzzInput& input) {
     FUZZ_REQUIRE(!nearest.ok() && !nearest.found, "nearestTo found an unknown name");
   } else {
     FUZZ_REQUIRE(nearest.ok(), "nearestTo refused a good scene: " + nearest.error);
-    bool found = false, colliding = false;
-    double best_scale = 0.0;
-    core::NearPair best;
-    for (const core::NamedEllipse* other : sorted) {  // in pair order: the first of equals wins
-      if (other == &*target) continue;
-      const bool target_first =
-          std::tie(target->role, target->name) < std::tie(other->role, other->name);
-      const core::NamedEllipse& first = target_first ? *target : *other;
-      const core::NamedEllipse& second = target_first ? *other : *target;
-      if (!core::pairWanted(first, second, rules, {})) continue;
-      const core::Clearance c = core::distance(first.ellipse, second.ellipse);
-      core::NearPair candidate{target->name, other->name, c.distance,
-                         target_first ? c.point_a : c.point_b,
-                         target_first ? c.point_b : c.point_a};
-      if (!c.separated) {
-        const double scale = core::contactScale(first.ellipse, second.ellipse);
-        if (!found || !colliding || scale < best_scale) {
-          best = candidate, best_scale = scale;
-        }
-        found = colliding = true;
-      } else if (!found || (!colliding && c.distance < best.distance)) {
-        best = candidate;
-        found = true;
-      }
-    }
+    const core::NearestResult reference = core::test::bruteForceNearest(scene, rules, *target);
+    const bool found = reference.found;
+    const core::NearPair& best = reference.nearest;
     FUZZ_REQUIRE(nearest.found == found && (!found || sameNear(nearest.nearest, best)),
                  "nearestTo('" + nearest_name + "') answered '" + nearest.nearest.name_b + "' at " +
                      text(nearest.nearest.distance) + ", the brute force '" + best.name_b +

@@ -31,7 +31,7 @@ out="${repo}/build/benchmark"
 mkdir -p "${out}"
 echo "Building the benchmarks (log: build/benchmark/build.txt)"
 if ! bash "${repo}/scripts/build.sh" -DELLIPSE_COLLISION_BENCHMARKS=ON bench_pair_tests \
-    bench_scene_check bench_service_roundtrip ellipse_collision_node > "${out}/build.txt" 2>&1; then
+    bench_scene_check bench_distance bench_service_roundtrip ellipse_collision_node > "${out}/build.txt" 2>&1; then
   cat "${out}/build.txt" >&2
   exit 1
 fi
@@ -39,12 +39,14 @@ bin="${repo}/build/ws/devel/lib/ellipse_collision"
 if "${smoke}"; then
   pair_args=(--pairs_per_mix=64 --benchmark_min_time=0.01)
   scene_args=(--benchmark_min_time=0.01)
+  distance_args=(--benchmark_min_time=0.01)
   roundtrip_calls=200
 else
   repeat=(--benchmark_repetitions=5 --benchmark_enable_random_interleaving=true
           --benchmark_report_aggregates_only=true)
   pair_args=(--pairs_per_mix=2000 --benchmark_min_time=0.3 "${repeat[@]}")
   scene_args=(--benchmark_min_time=0.3 "${repeat[@]}")
+  distance_args=(--benchmark_min_time=0.3 "${repeat[@]}")
   roundtrip_calls=10000
 fi
 
@@ -67,6 +69,12 @@ echo
 
 /usr/bin/python3 "${repo}/bench/benchmark_table.py" "${out}/bench_pair_tests.json" \
   "${out}/bench_scene_check.json"
+
+# ---- distance() beside FCL's distance query, with accuracy against the quad rim oracle -----------
+echo
+echo "Running bench_distance (ns per pair; max/median relative error against the oracle)"
+run bench_distance "${distance_args[@]}"
+grep -E '^(Benchmark|BM_)' "${out}/bench_distance.txt" | grep -vE '_(mean|stddev|cv)( |$)' || true
 
 # ---- service round trip (issue 7) ---------------------------------------------------------------
 # Started here, stopped by the EXIT trap whatever ends the script: the node first, then roscore

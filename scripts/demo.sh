@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Starts the demo (launch/demo.launch): the demo robot, its driver, ellipse_collision_node and rviz.
+# Starts the demo (demo/launch/demo.launch): the demo robot, its driver, ellipse_collision_node and rviz.
 #
 # With a display, rviz opens on it. Without one (no $DISPLAY, or --headless) rviz runs in a
 # virtual X server (Xvfb) and the screen is saved every few seconds to a PNG whose path is printed,
@@ -150,7 +150,7 @@ if $headless; then
 fi
 
 # By path: `roslaunch PACKAGE FILE` would search the whole package directory for FILE.
-roslaunch "$(rospack find ellipse_collision)/launch/demo.launch" "${launch_args[@]}" &
+roslaunch "$(rospack find ellipse_collision)/demo/launch/demo.launch" "${launch_args[@]}" &
 launch_pid=$!
 
 if $headless; then

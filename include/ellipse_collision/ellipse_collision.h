@@ -1,11 +1,17 @@
 #pragma once
 
-// Umbrella header of the ROS-free core: ellipses and the collision tests between them.
-#include "ellipse_collision/core/ellipse.h"
+// Umbrella header of the ROS-free core (namespace ellipse_collision::core): ellipses, the
+// collision tests and distance between two of them, scenes of many, frames, and the helpers every
+// layer shares. The README's "The core library" table lists every function.
 #include "ellipse_collision/core/broadphase.h"
 #include "ellipse_collision/core/distance.h"
 #include "ellipse_collision/core/eigenvalue_test.h"
+#include "ellipse_collision/core/ellipse.h"
+#include "ellipse_collision/core/frame_projection.h"
+#include "ellipse_collision/core/number_format.h"
 #include "ellipse_collision/core/overlap.h"
 #include "ellipse_collision/core/pair_line_parser.h"
 #include "ellipse_collision/core/polygonal_test.h"
 #include "ellipse_collision/core/prepared_ellipse.h"
+#include "ellipse_collision/core/scene_check.h"
+#include "ellipse_collision/core/unique_names.h"

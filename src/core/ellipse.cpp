@@ -1,51 +1,76 @@
 #include "ellipse_collision/core/ellipse.h"
 
-#include <charconv>
 #include <cmath>
+
+#include "ellipse_collision/core/number_format.h"
 
 namespace ellipse_collision::core {
 namespace {
 
-// Shortest text that reads back as the same double, so a message shows exactly what was given.
-std::string formatValue(double value) {
-  char buffer[64];
-  const auto result = std::to_chars(buffer, buffer + sizeof(buffer), value);
-  return std::string(buffer, result.ptr);
+std::optional<ValueViolation> finiteViolation(double value, bool must_be_positive) {
+  if (std::isfinite(value)) return std::nullopt;
+  ValueViolation violation;
+  violation.rule = ValueViolation::Rule::Finite;
+  violation.value = value;
+  violation.must_be_positive = must_be_positive;
+  return violation;
+}
+
+std::optional<ValueViolation> rangeViolation(double value, double min, double max,
+                                             bool must_be_positive) {
+  if (value >= min && value <= max) return std::nullopt;
+  return ValueViolation{ValueViolation::Rule::Range, value, min, max, must_be_positive};
+}
+
+/// invalidReason()'s words for a violation of field `key`.
+std::string render(const char* key, const ValueViolation& violation) {
+  const std::string head = std::string(key) + " = " + formatNumber(violation.value);
+  switch (violation.rule) {
+    case ValueViolation::Rule::Finite:
+      return head + " is not finite";
+    case ValueViolation::Rule::Positive:
+      return head + " must be > 0";
+    case ValueViolation::Rule::Range:
+      break;
+  }
+  return head + " is outside [" + formatNumber(violation.min) + ", " +
+         formatNumber(violation.max) + "] m";
 }
 
 }  // namespace
 
+std::optional<ValueViolation> coordinateViolation(double value) {
+  if (auto violation = finiteViolation(value, false)) return violation;
+  return rangeViolation(value, -kMaxCoordinate, kMaxCoordinate, false);
+}
+
+std::optional<ValueViolation> radiusViolation(double value) {
+  if (auto violation = finiteViolation(value, true)) return violation;
+  if (!(value > 0.0)) {
+    return ValueViolation{ValueViolation::Rule::Positive, value, 0.0, 0.0, true};
+  }
+  return rangeViolation(value, kMinRadius, kMaxRadius, true);
+}
+
+std::optional<ValueViolation> angleViolation(double value) { return finiteViolation(value, false); }
+
 std::string invalidReason(const Ellipse& ellipse) {
-  const std::pair<const char*, double> finite_fields[] = {
-      {"center.x", ellipse.center.x()}, {"center.y", ellipse.center.y()},
-      {"radius_x", ellipse.radius_x},   {"radius_y", ellipse.radius_y},
-      {"angle", ellipse.angle}};
-  for (const auto& [name, value] : finite_fields) {
-    if (!std::isfinite(value)) {
-      return std::string(name) + " = " + formatValue(value) + " is not finite";
+  const std::pair<const char*, std::optional<ValueViolation>> fields[] = {
+      {"center.x", coordinateViolation(ellipse.center.x())},
+      {"center.y", coordinateViolation(ellipse.center.y())},
+      {"radius_x", radiusViolation(ellipse.radius_x)},
+      {"radius_y", radiusViolation(ellipse.radius_y)},
+      {"angle", angleViolation(ellipse.angle)}};
+  // The gravest problem first, whichever field has it: not finite, then not > 0, then out of
+  // range (radii before the centre).
+  for (const auto rule : {ValueViolation::Rule::Finite, ValueViolation::Rule::Positive}) {
+    for (const auto& [key, violation] : fields) {
+      if (violation && violation->rule == rule) return render(key, *violation);
     }
   }
-  if (!(ellipse.radius_x > 0.0)) {
-    return "radius_x = " + formatValue(ellipse.radius_x) + " must be > 0";
-  }
-  if (!(ellipse.radius_y > 0.0)) {
-    return "radius_y = " + formatValue(ellipse.radius_y) + " must be > 0";
-  }
-  const std::pair<const char*, double> radii[] = {{"radius_x", ellipse.radius_x},
-                                                  {"radius_y", ellipse.radius_y}};
-  for (const auto& [name, value] : radii) {
-    if (value < kMinRadius || value > kMaxRadius) {
-      return std::string(name) + " = " + formatValue(value) + " is outside [" +
-             formatValue(kMinRadius) + ", " + formatValue(kMaxRadius) + "] m";
-    }
-  }
-  const std::pair<const char*, double> coordinates[] = {{"center.x", ellipse.center.x()},
-                                                        {"center.y", ellipse.center.y()}};
-  for (const auto& [name, value] : coordinates) {
-    if (std::abs(value) > kMaxCoordinate) {
-      return std::string(name) + " = " + formatValue(value) + " is outside [-" +
-             formatValue(kMaxCoordinate) + ", " + formatValue(kMaxCoordinate) + "] m";
-    }
+  for (const int index : {2, 3, 0, 1}) {
+    const auto& [key, violation] = fields[index];
+    if (violation) return render(key, *violation);
   }
   return {};
 }

@@ -1,10 +1,10 @@
 #include "ellipse_collision/core/frame_projection.h"
 
 #include <algorithm>
-#include <array>
-#include <charconv>
 #include <cmath>
 #include <utility>
+
+#include "ellipse_collision/core/number_format.h"
 
 namespace ellipse_collision::core {
 namespace {
@@ -15,13 +15,6 @@ double determinant2(double a, double b, double c, double d) {
   const double w = b * c;
   const double rounding_error_of_w = std::fma(-b, c, w);
   return std::fma(a, d, -w) + rounding_error_of_w;
-}
-
-/// Shortest text that reads back to the same double.
-std::string describe(double value) {
-  std::array<char, 64> buffer;
-  const auto end = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value).ptr;
-  return std::string(buffer.data(), end);
 }
 
 }  // namespace
@@ -99,8 +92,8 @@ ProjectionResult projectToPlane(const Ellipse& in_frame, const Eigen::Isometry3d
     result.error = "ellipse '" + name +
                    "': its frame is seen edge-on from the fixed frame's xy-plane (projected minor "
                    "radius " +
-                   describe(minor) + " m is below " + describe(kMinProjectedThinning) +
-                   " times its smaller radius " + describe(smaller_radius) + " m)";
+                   formatNumber(minor) + " m is below " + formatNumber(kMinProjectedThinning) +
+                   " times its smaller radius " + formatNumber(smaller_radius) + " m)";
     return result;
   }
 

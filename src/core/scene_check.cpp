@@ -1,7 +1,6 @@
 #include "ellipse_collision/core/scene_check.h"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <optional>
 #include <string_view>
@@ -10,8 +9,10 @@
 #include "ellipse_collision/core/broadphase.h"
 #include "ellipse_collision/core/distance.h"
 #include "ellipse_collision/core/eigenvalue_test.h"
+#include "ellipse_collision/core/number_format.h"
 #include "ellipse_collision/core/overlap.h"
 #include "ellipse_collision/core/prepared_ellipse.h"
+#include "ellipse_collision/core/unique_names.h"
 
 namespace ellipse_collision::core {
 namespace {
@@ -34,49 +35,25 @@ double distanceLowerBound(const Ellipse& a, const Ellipse& b) {
 // obstacle's own size is covered by the margin of its boundingCircleBox().
 constexpr double kPadMargin = 1e-6;
 
-/// The names seen so far, as views into the scene: open addressing in one array, because a
-/// std::set of copies, or even a std::unordered_set of views with a node per name, costs more than
-/// all the pair tests of a large scene.
-class NameSet {
- public:
-  explicit NameSet(std::size_t capacity) {
-    std::size_t slots = 16;
-    while (slots < 2 * capacity) slots *= 2;
-    slots_.assign(slots, {});
-  }
-
-  /// False iff `name` was inserted before.
-  bool insert(std::string_view name) {
-    const std::size_t mask = slots_.size() - 1;
-    const std::size_t hash = std::hash<std::string_view>{}(name);
-    for (std::size_t k = hash & mask;; k = (k + 1) & mask) {
-      if (slots_[k].data() == nullptr) {
-        slots_[k] = name;
-        return true;
-      }
-      if (slots_[k] == name) return false;
-    }
-  }
-
- private:
-  std::vector<std::string_view> slots_;  ///< a null data() marks a free slot; names are non-empty
-};
-
 std::string validate(const std::vector<NamedEllipse>& ellipses, const SceneRules& rules) {
   if (!std::isfinite(rules.warning_distance) || rules.warning_distance < 0.0) {
-    char text[64];
-    const auto end = std::to_chars(text, text + sizeof(text), rules.warning_distance).ptr;
-    return "warning_distance = " + std::string(text, end) + " must be finite and >= 0";
+    return "warning_distance = " + formatNumber(rules.warning_distance) +
+           " must be finite and >= 0";
   }
-  NameSet names(ellipses.size());
-  for (std::size_t i = 0; i < ellipses.size(); ++i) {
-    const NamedEllipse& entry = ellipses[i];
-    // Built only for an error: per entry it would cost more than the whole check.
-    const auto where = [i] { return "ellipses[" + std::to_string(i) + "]"; };
-    if (entry.name.empty()) return where() + ".name is empty";
-    if (!names.insert(entry.name)) return where() + ".name = '" + entry.name + "' is a duplicate";
-    const std::string invalid = invalidReason(entry.ellipse);
-    if (!invalid.empty()) return where() + " ('" + entry.name + "'): " + invalid;
+  const auto name_problem = findNameProblem(
+      ellipses.size(), [&](std::size_t i) -> std::string_view { return ellipses[i].name; });
+  const auto where = [](std::size_t i) { return "ellipses[" + std::to_string(i) + "]"; };
+  // Entry by entry, as a reader checks them: the first entry with any problem is reported.
+  const std::size_t named = name_problem ? name_problem->index : ellipses.size();
+  for (std::size_t i = 0; i < named; ++i) {
+    const std::string invalid = invalidReason(ellipses[i].ellipse);
+    if (!invalid.empty()) return where(i) + " ('" + ellipses[i].name + "'): " + invalid;
+  }
+  if (name_problem) {
+    const std::string& name = ellipses[name_problem->index].name;
+    return name_problem->kind == NameProblem::Kind::Empty
+               ? where(name_problem->index) + ".name is empty"
+               : where(name_problem->index) + ".name = '" + name + "' is a duplicate";
   }
   return {};
 }

@@ -2,33 +2,8 @@
 
 namespace ellipse_collision {
 
-std::optional<FieldError> findInvalidPaddedField(const EllipseSpec& spec, double global_padding,
-                                                 const std::string& frame_key) {
-  if (auto invalid = findInvalidField(spec, frame_key)) return invalid;
-  // The same sums as paddedEllipse(), so that what passes here passes the core's invalidReason().
-  const core::Ellipse padded = paddedEllipse(spec, global_padding);
-  const struct {
-    const char* key;
-    double value;
-    double padded;
-  } radii[] = {{"radius_x", spec.radius_x, padded.radius_x},
-               {"radius_y", spec.radius_y, padded.radius_y}};
-  for (const auto& radius : radii) {
-    if (!(radius.padded >= core::kMinRadius && radius.padded <= core::kMaxRadius)) {
-      return FieldError{radius.key,
-                        "a number whose padded radius (" + std::string(radius.key) + " + padding " +
-                            formatNumber(spec.padding) + " + global padding " +
-                            formatNumber(global_padding) + " = " + formatNumber(radius.padded) +
-                            ") lies within [" + formatNumber(core::kMinRadius) + ", " +
-                            formatNumber(core::kMaxRadius) + "]",
-                        formatNumber(radius.value)};
-    }
-  }
-  return std::nullopt;
-}
-
-EllipseSpec fromMsg(const Ellipse& msg) {
-  EllipseSpec spec;
+app::EllipseSpec fromMsg(const Ellipse& msg) {
+  app::EllipseSpec spec;
   spec.name = msg.name;
   spec.frame_id = msg.frame_id;
   spec.x = msg.x;
@@ -40,7 +15,7 @@ EllipseSpec fromMsg(const Ellipse& msg) {
   return spec;
 }
 
-Ellipse toMsg(const EllipseSpec& spec) {
+Ellipse toMsg(const app::EllipseSpec& spec) {
   Ellipse msg;
   msg.name = spec.name;
   msg.frame_id = spec.frame_id;
@@ -53,8 +28,8 @@ Ellipse toMsg(const EllipseSpec& spec) {
   return msg;
 }
 
-std::vector<EllipseSpec> fromMsg(const EllipseArray& msg) {
-  std::vector<EllipseSpec> specs;
+std::vector<app::EllipseSpec> fromMsg(const EllipseArray& msg) {
+  std::vector<app::EllipseSpec> specs;
   specs.reserve(msg.ellipses.size());
   for (const Ellipse& ellipse : msg.ellipses) {
     specs.push_back(fromMsg(ellipse));
@@ -109,6 +84,28 @@ std::vector<ClearancePair> toMsg(const std::vector<core::NearPair>& pairs) {
   msgs.reserve(pairs.size());
   for (const core::NearPair& pair : pairs) msgs.push_back(toMsg(pair));
   return msgs;
+}
+
+app::CheckRequest fromMsg(const CheckCollisions::Request& request) {
+  app::CheckRequest check;
+  check.names = request.names;
+  for (const Ellipse& ellipse : request.query) check.query.push_back(fromMsg(ellipse));
+  check.min_distance_of = request.min_distance_of;
+  return check;
+}
+
+void toMsg(const app::CheckOutcome& outcome, CheckCollisions::Response& response) {
+  response.success = true;
+  std::vector<std::string> notes;
+  if (!outcome.skipped.empty()) notes.push_back("skipped " + app::joinText(outcome.skipped, "; "));
+  if (!outcome.nearest_problem.empty()) notes.push_back(outcome.nearest_problem);
+  response.message = app::joinText(notes, "; ");
+  response.collisions = toMsg(outcome.collisions);
+  response.in_collision = !response.collisions.empty();
+  response.unavailable_frames = outcome.unavailable_frames;
+  response.warnings = toMsg(outcome.warnings);
+  response.has_min_distance = outcome.nearest.has_value();
+  if (outcome.nearest) response.nearest = toMsg(*outcome.nearest);
 }
 
 }  // namespace ellipse_collision

@@ -6,6 +6,8 @@
 #include <map>
 #include <set>
 
+#include "ellipse_collision/core/number_format.h"
+#include "ellipse_collision/core/unique_names.h"
 #include "ellipse_collision/ros/conversions.h"
 
 namespace ellipse_collision {
@@ -23,7 +25,7 @@ std::string describeValue(const XmlRpcValue& value) {
     case XmlRpcValue::TypeInt:
       return std::to_string(static_cast<int&>(copy)) + " (an int)";
     case XmlRpcValue::TypeDouble:
-      return formatNumber(static_cast<double&>(copy)) + " (a double)";
+      return core::formatNumber(static_cast<double&>(copy)) + " (a double)";
     case XmlRpcValue::TypeString:
       return "'" + static_cast<std::string&>(copy) + "' (a string)";
     case XmlRpcValue::TypeArray:
@@ -70,7 +72,7 @@ bool readBool(const XmlRpcValue& value, const std::string& where, const std::str
 double readNonNegative(const XmlRpcValue& value, const std::string& where, const std::string& key) {
   const double number = readNumber(value, where, key);
   if (!std::isfinite(number) || number < 0.0) {
-    fail(where, key, "a finite number >= 0", formatNumber(number));
+    fail(where, key, "a finite number >= 0", core::formatNumber(number));
   }
   return number;
 }
@@ -83,9 +85,9 @@ double readInRange(const XmlRpcValue& value, const std::string& where, const std
   if (zero_allowed && number == 0.0) return number;
   if (!(number >= min && number <= max)) {
     fail(where, key,
-         std::string(zero_allowed ? "0 or " : "") + "a number within [" + formatNumber(min) + ", " +
-             formatNumber(max) + "]",
-         formatNumber(number));
+         std::string(zero_allowed ? "0 or " : "") + "a number within [" + core::formatNumber(min) + ", " +
+             core::formatNumber(max) + "]",
+         core::formatNumber(number));
   }
   return number;
 }
@@ -99,7 +101,7 @@ std::string readFrame(const XmlRpcValue& value, const std::string& where, const 
   return frame;
 }
 
-EllipseSpec readEllipse(const XmlRpcValue& entry, const std::string& where, double global_padding) {
+app::EllipseSpec readEllipse(const XmlRpcValue& entry, const std::string& where, double global_padding) {
   if (entry.getType() != XmlRpcValue::TypeStruct) {
     throw ConfigError(where + ": expected a dict with keys " + std::string(kEllipseKeys) +
                       ", got " + describeValue(entry));
@@ -124,7 +126,7 @@ EllipseSpec readEllipse(const XmlRpcValue& entry, const std::string& where, doub
     }
   }
 
-  EllipseSpec spec;
+  app::EllipseSpec spec;
   spec.name = readString(entry["name"], label, "name");
   spec.frame_id = readString(entry["frame"], label, "frame");
   spec.x = readNumber(entry["x"], label, "x");
@@ -133,20 +135,20 @@ EllipseSpec readEllipse(const XmlRpcValue& entry, const std::string& where, doub
   spec.radius_x = readNumber(entry["radius_x"], label, "radius_x");
   spec.radius_y = readNumber(entry["radius_y"], label, "radius_y");
   if (entry.hasMember("padding")) spec.padding = readNumber(entry["padding"], label, "padding");
-  if (const auto invalid = findInvalidPaddedField(spec, global_padding, "frame")) {
+  if (const auto invalid = app::findInvalidPaddedField(spec, global_padding, "frame")) {
     fail(label, invalid->key, invalid->expected, invalid->actual);
   }
   return spec;
 }
 
-std::vector<EllipseSpec> readEllipseList(const XmlRpcValue& list, const std::string& key,
+std::vector<app::EllipseSpec> readEllipseList(const XmlRpcValue& list, const std::string& key,
                                          double global_padding) {
   if (list.getType() != XmlRpcValue::TypeArray) {
     fail("parameter ~" + key, key, "a list of ellipses", describeValue(list));
   }
-  std::vector<EllipseSpec> specs;
+  std::vector<app::EllipseSpec> specs;
   for (int i = 0; i < list.size(); ++i) {
-    specs.push_back(readEllipse(list[i], key + "[" + std::to_string(i) + "]", global_padding));
+    specs.push_back(readEllipse(list[i], app::entryName(key, i), global_padding));
   }
   return specs;
 }
@@ -159,7 +161,7 @@ std::vector<std::pair<std::string, std::string>> readAllowedPairs(
   }
   std::vector<std::pair<std::string, std::string>> pairs;
   for (int i = 0; i < list.size(); ++i) {
-    const std::string where = key + "[" + std::to_string(i) + "]";
+    const std::string where = app::entryName(key, i);
     const XmlRpcValue& pair = list[i];
     if (pair.getType() != XmlRpcValue::TypeArray || pair.size() != 2) {
       throw ConfigError(where + ": expected a list of two names [name_a, name_b], got " +
@@ -167,7 +169,7 @@ std::vector<std::pair<std::string, std::string>> readAllowedPairs(
     }
     std::string names[2];
     for (int k = 0; k < 2; ++k) {
-      const std::string element = where + "[" + std::to_string(k) + "]";
+      const std::string element = app::entryName(where, k);
       XmlRpcValue copy = pair[k];
       if (copy.getType() != XmlRpcValue::TypeString) {
         throw ConfigError(element + ": expected a link or obstacle name, got " +
@@ -248,19 +250,22 @@ NodeConfig parseNodeConfig(const XmlRpcValue& params) {
     config.obstacles = readEllipseList(root["obstacles"], "obstacles", config.padding_m);
   }
 
-  std::map<std::string, std::string> defined;  // name -> entry that defines it
-  for (const char* list : {"links", "obstacles"}) {
-    const std::vector<EllipseSpec>& specs =
-        std::string(list) == "links" ? config.links : config.obstacles;
-    for (std::size_t i = 0; i < specs.size(); ++i) {
-      const std::string where = std::string(list) + "[" + std::to_string(i) + "]";
-      const auto inserted = defined.emplace(specs[i].name, where);
-      if (!inserted.second) {
-        fail(where + " (name '" + specs[i].name + "')", "name", "a name used by no other entry",
-             "a duplicate of " + inserted.first->second);
-      }
-    }
+  // Links and obstacles share one name space; each entry's own name is non-empty already.
+  std::vector<std::pair<std::string, const app::EllipseSpec*>> entries;  // (where, spec)
+  for (std::size_t i = 0; i < config.links.size(); ++i) {
+    entries.emplace_back(app::entryName("links", i), &config.links[i]);
   }
+  for (std::size_t i = 0; i < config.obstacles.size(); ++i) {
+    entries.emplace_back(app::entryName("obstacles", i), &config.obstacles[i]);
+  }
+  if (const auto problem = core::findNameProblem(
+          entries.size(), [&](std::size_t i) -> std::string_view { return entries[i].second->name; })) {
+    const auto& [where, spec] = entries[problem->index];
+    fail(where + " (name '" + spec->name + "')", "name", "a name used by no other entry",
+         "a duplicate of " + entries[problem->first_index].first);
+  }
+  std::map<std::string, std::string> defined;  // name -> entry that defines it
+  for (const auto& [where, spec] : entries) defined.emplace(spec->name, where);
   if (has("allowed_pairs")) config.allowed_pairs = readAllowedPairs(root["allowed_pairs"], defined);
   return config;
 }

@@ -26,4 +26,14 @@ bool lookupTransformSafe(const tf2_ros::Buffer& buffer, const std::string& targe
   }
 }
 
+app::TransformLookup tfLookup(const tf2_ros::Buffer& buffer, const std::string& fixed_frame,
+                              const ros::Time& time, const ros::Duration& timeout) {
+  return [&buffer, fixed_frame, time, timeout](const std::string& frame) {
+    app::FrameTransform transform;
+    transform.ok = lookupTransformSafe(buffer, fixed_frame, frame, time, timeout,
+                                       transform.fixed_from_frame, &transform.error);
+    return transform;
+  };
+}
+
 }  // namespace ellipse_collision

@@ -16,36 +16,14 @@
 #include "ellipse_collision/core/eigenvalue_test.h"
 #include "ellipse_collision/core/overlap.h"
 #include "ellipse_collision/core/scene_check.h"
+#include "brute_force_scene.h"
 
 namespace ellipse_collision::core {
 namespace {
 
-/// Every pair in reporting order, exact tests on all of them: no bound, no box, no grid.
 SceneCheckResult bruteForce(const std::vector<NamedEllipse>& scene, const SceneRules& rules,
                             const std::set<std::string>& only_names) {
-  std::vector<const NamedEllipse*> sorted;
-  for (const NamedEllipse& e : scene) sorted.push_back(&e);
-  std::sort(sorted.begin(), sorted.end(), [](const NamedEllipse* x, const NamedEllipse* y) {
-    return std::tie(x->role, x->name) < std::tie(y->role, y->name);
-  });
-  SceneCheckResult expected;
-  for (std::size_t i = 0; i < sorted.size(); ++i) {
-    for (std::size_t j = i + 1; j < sorted.size(); ++j) {
-      const NamedEllipse& a = *sorted[i];
-      const NamedEllipse& b = *sorted[j];
-      if (!pairWanted(a, b, rules, only_names)) continue;
-      if (overlap(a.ellipse, b.ellipse)) {
-        expected.collisions.push_back({a.name, b.name, contactScale(a.ellipse, b.ellipse)});
-        continue;
-      }
-      if (rules.warning_distance <= 0.0) continue;
-      const Clearance c = distance(a.ellipse, b.ellipse);
-      if (c.separated && c.distance < rules.warning_distance) {
-        expected.warnings.push_back({a.name, b.name, c.distance, c.point_a, c.point_b});
-      }
-    }
-  }
-  return expected;
+  return test::bruteForceScene(scene, rules, only_names);
 }
 
 bool sameBits(double x, double y) { return std::memcmp(&x, &y, sizeof(double)) == 0; }

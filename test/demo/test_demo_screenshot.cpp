@@ -1,8 +1,8 @@
-// rostest client for launch/demo.launch in a virtual X server (see demo_screenshot.test): waits
+// rostest client for demo/launch/demo.launch in a virtual X server (see demo_screenshot.test): waits
 // until the demo has been both in collision and clear, freezes it (demo_driver/pause) at a moment
 // with a collision (and, if the demo offers one soon, a warning pair), grabs the screen and checks
 // that rviz draws every colliding ellipse red, every other one in a warning pair yellow and every
-// clear one green, at the pixels the view in rviz/demo.rviz maps it to.
+// clear one green, at the pixels the view in demo/rviz/demo.rviz maps it to.
 #include <std_srvs/SetBool.h>
 #include <tf2_ros/transform_listener.h>
 
@@ -14,10 +14,11 @@
 #include <sstream>
 #include <thread>
 
+#include "ellipse_collision/app/scene_placement.h"
+#include "ellipse_collision/core/scene_check.h"
 #include "ellipse_collision/ros/conversions.h"
 #include "ellipse_collision/ros/node_config.h"
-#include "ellipse_collision/ros/scene_placement.h"
-#include "ellipse_collision/core/scene_check.h"
+#include "ellipse_collision/ros/tf_lookup.h"
 #include "node_test_utils.h"
 #include "rviz_top_down_view.h"
 #include "screen_image.h"
@@ -186,8 +187,8 @@ bool complete(const CollisionState& s) { return s.unavailable_frames.empty(); }
 /// Which kinds of state the node has reported (only states with every frame known count).
 struct SeenKinds {
   explicit SeenKinds(const NodeConfig& config) {
-    for (const EllipseSpec& spec : config.links) links.insert(spec.name);
-    for (const EllipseSpec& spec : config.obstacles) fixed_obstacles.insert(spec.name);
+    for (const app::EllipseSpec& spec : config.links) links.insert(spec.name);
+    for (const app::EllipseSpec& spec : config.obstacles) fixed_obstacles.insert(spec.name);
   }
   void onState(const CollisionState::ConstPtr& state) {
     if (!complete(*state)) return;
@@ -274,26 +275,26 @@ TEST(DemoInRviz, CollidingEllipsesAreRedNearOnesYellowAndClearOnesGreen) {
   const std::set<std::string> warned = namesIn(frozen, true);
 
   // Where every ellipse is now, from tf, the configuration and the driver's last obstacle message.
-  ScenePlacement placement(tf_buffer, config.fixed_frame, config.padding_m, ros::Time(0),
-                           ros::Duration(1.0));
+  app::ScenePlacement placement(
+      tfLookup(tf_buffer, config.fixed_frame, ros::Time(0), ros::Duration(1.0)), config.padding_m);
   std::vector<core::NamedEllipse> placed;
   std::vector<Eigen::Vector2d> frame_origins;
-  auto place = [&](const EllipseSpec& spec, core::EllipseRole role) {
-    const ScenePlacement::Placement p = placement.place(spec, role);
-    ASSERT_EQ(p.status, ScenePlacement::Status::Placed) << spec.name << ": " << p.error;
+  auto place = [&](const app::EllipseSpec& spec, core::EllipseRole role) {
+    const app::ScenePlacement::Placement p = placement.place(spec, role);
+    ASSERT_EQ(p.status, app::ScenePlacement::Status::Placed) << spec.name << ": " << p.error;
     placed.push_back(p.ellipse);
   };
-  for (const EllipseSpec& spec : config.links) {
+  for (const app::EllipseSpec& spec : config.links) {
     place(spec, core::EllipseRole::Link);
     const geometry_msgs::TransformStamped t =
         tf_buffer.lookupTransform(config.fixed_frame, spec.frame_id, ros::Time(0));
     frame_origins.emplace_back(t.transform.translation.x, t.transform.translation.y);
   }
   frame_origins.emplace_back(0.0, 0.0);  // the fixed frame's own axes
-  for (const EllipseSpec& spec : config.obstacles) place(spec, core::EllipseRole::Obstacle);
+  for (const app::EllipseSpec& spec : config.obstacles) place(spec, core::EllipseRole::Obstacle);
   const std::vector<EllipseArray> streamed = topic_obstacles.all();
   ASSERT_FALSE(streamed.empty()) << "no message on " << nodeTopic("obstacles");
-  for (const EllipseSpec& spec : fromMsg(streamed.back())) place(spec, core::EllipseRole::Obstacle);
+  for (const app::EllipseSpec& spec : fromMsg(streamed.back())) place(spec, core::EllipseRole::Obstacle);
   if (HasFatalFailure()) return;
   // The frozen state is about this geometry: checking it here finds the same colliding ellipses.
   core::SceneRules rules;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <optional>
 #include <string>
 
 namespace ellipse_collision::core {
@@ -18,6 +19,29 @@ struct Ellipse {
 constexpr double kMinRadius = 1e-9;
 constexpr double kMaxRadius = 1e9;
 constexpr double kMaxCoordinate = 1e9;
+
+/// A value that breaks the rule of its field: the rule, the value, and for Range the accepted
+/// closed interval. The rules live here once; each edge only renders a violation in its own words
+/// (invalidReason() below, the application layer's field errors for requests and configuration).
+struct ValueViolation {
+  enum class Rule {
+    Finite,    ///< NaN or infinite
+    Positive,  ///< finite but not > 0
+    Range,     ///< finite (and > 0 where required) but outside [min, max]
+  };
+  Rule rule{Rule::Finite};
+  double value{0.0};
+  double min{0.0};
+  double max{0.0};
+  bool must_be_positive{false};  ///< the field's rule also asks for > 0 (radii)
+};
+
+/// A centre coordinate [m]: finite, within [-kMaxCoordinate, kMaxCoordinate].
+std::optional<ValueViolation> coordinateViolation(double value);
+/// A radius [m]: finite, > 0, within [kMinRadius, kMaxRadius].
+std::optional<ValueViolation> radiusViolation(double value);
+/// An angle [rad]: finite.
+std::optional<ValueViolation> angleViolation(double value);
 
 /// Why `ellipse` cannot be checked, naming the field and its value ("radius_x = -1 must be > 0"),
 /// or an empty string when it is valid: all fields finite, both radii > 0 and within

@@ -5,13 +5,12 @@
 #include <tf2_ros/transform_listener.h>
 
 #include <cstdint>
-#include <optional>
-#include <set>
 #include <string>
 #include <vector>
 
 #include "ellipse_collision/ros/collision_markers.h"
-#include "ellipse_collision/ros/ellipse_registry.h"
+#include "ellipse_collision/app/collision_check.h"
+#include "ellipse_collision/app/ellipse_registry.h"
 #include "ellipse_collision/ros/messages.h"
 #include "ellipse_collision/ros/node_config.h"
 #include "ellipse_collision/core/scene_check.h"
@@ -28,39 +27,21 @@ class CollisionNode {
   CollisionNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh);
 
  private:
-  /// One check of the stored ellipses (and query ellipses) in the fixed frame.
-  struct CheckOutcome {
-    std::vector<core::NamedEllipse> placed;             ///< stored ellipses that could be placed
-    std::vector<std::string> unavailable_frames;  ///< sorted; their ellipses were skipped
-    std::vector<std::string> skipped;             ///< why each skipped ellipse was skipped
-    std::vector<core::CollidingPair> collisions;
-    std::vector<core::NearPair> warnings;
-    std::optional<core::NearPair> nearest;  ///< of min_distance_of, when asked and measured
-    std::string nearest_problem;      ///< why it was asked but not measured
-    std::string error;                ///< a bad request: nothing was checked
-  };
-
   /// The last full check (all stored ellipses, latest transforms), which the topics show.
   struct PublishedState {
     bool valid{false};
     ros::Time stamp;
-    CheckOutcome outcome;
+    app::CheckOutcome outcome;
     double duration_s{0.0};
     std::string failure;  ///< why the latest full check failed (the state above is older)
   };
 
-  /// `min_distance_of` non-empty: also the nearest partner of that (known) name.
-  CheckOutcome check(const ros::Time& time, const ros::Duration& timeout,
-                     const std::set<std::string>& only_names, const std::vector<EllipseSpec>& query,
-                     const std::string& min_distance_of);
   /// Checks every stored ellipse at the latest transforms, records the result as the published
   /// state and publishes it (a failed check is only logged and reported in diagnostics).
-  CheckOutcome runFullCheck(const ros::Duration& timeout, const std::string& min_distance_of = "");
+  app::CheckOutcome runFullCheck(const ros::Duration& timeout,
+                                 const std::string& min_distance_of = "");
   void publishState();
   void publishMarkers();
-
-  /// Field checks and a tf lookup of each frame; the first problem as "field[i].key = value: ...".
-  std::string validateAttached(const std::vector<EllipseSpec>& specs, const std::string& field);
 
   void onTimer(const ros::TimerEvent& event);
   void onDiagnosticsTimer(const ros::TimerEvent& event);
@@ -73,8 +54,8 @@ class CollisionNode {
   ros::NodeHandle nh_;
   ros::NodeHandle private_nh_;
   NodeConfig config_;
-  core::SceneRules rules_;
-  EllipseRegistry registry_;
+  app::CheckSettings settings_;
+  app::EllipseRegistry registry_;
 
   tf2_ros::Buffer tf_buffer_;
   tf2_ros::TransformListener tf_listener_;

@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include "ellipse_collision/ros/ellipse_spec.h"
+#include "ellipse_collision/app/ellipse_spec.h"
 
 namespace ellipse_collision {
 
@@ -33,8 +33,8 @@ struct NodeConfig {
   double padding_m{0.0};      ///< added to both radii of every ellipse [m], [0, kMaxRadius]
   bool self_collision{true};  ///< also check link against link
   double warning_distance_m{0.0};  ///< separated pairs closer than this are warnings [m]; 0 = off
-  std::vector<EllipseSpec> links;
-  std::vector<EllipseSpec> obstacles;
+  std::vector<app::EllipseSpec> links;
+  std::vector<app::EllipseSpec> obstacles;
   std::vector<std::pair<std::string, std::string>> allowed_pairs;
 };
 

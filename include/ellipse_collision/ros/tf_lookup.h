@@ -7,6 +7,8 @@
 #include <Eigen/Geometry>
 #include <string>
 
+#include "ellipse_collision/app/transform_lookup.h"
+
 namespace ellipse_collision {
 
 /// The node's one way to ask tf for a pose. Fills `target_from_source` and returns true, or returns
@@ -17,5 +19,10 @@ bool lookupTransformSafe(const tf2_ros::Buffer& buffer, const std::string& targe
                          const std::string& source_frame, const ros::Time& time,
                          const ros::Duration& timeout, Eigen::Isometry3d& target_from_source,
                          std::string* error = nullptr);
+
+/// The application layer's view of tf: every frame's pose in `fixed_frame` at `time` (zero =
+/// latest), through lookupTransformSafe(). The buffer must outlive the returned function.
+app::TransformLookup tfLookup(const tf2_ros::Buffer& buffer, const std::string& fixed_frame,
+                              const ros::Time& time, const ros::Duration& timeout);
 
 }  // namespace ellipse_collision

@@ -3,9 +3,10 @@
 #include <optional>
 #include <string>
 
+#include "ellipse_collision/app/field_error.h"
 #include "ellipse_collision/core/ellipse.h"
 
-namespace ellipse_collision {
+namespace ellipse_collision::app {
 
 /// A named ellipse attached to a tf frame, as configured or requested (the fields of msg Ellipse).
 struct EllipseSpec {
@@ -19,27 +20,21 @@ struct EllipseSpec {
   double padding{0.0};   ///< added to both radii [m], >= 0
 };
 
-/// The first field of a spec that cannot be used: its key, what was expected and what was found.
-struct FieldError {
-  std::string key;
-  std::string expected;
-  std::string actual;
-};
-
 /// Checks every field of `spec` except whether its frame exists (that needs tf): name and frame
-/// non-empty, frame without a leading '/', all numbers finite, radii > 0, padding >= 0, and the
-/// core's ranges (|x|, |y| <= kMaxCoordinate; radii within [kMinRadius, kMaxRadius]).
+/// non-empty, frame without a leading '/', the core's value rules for the centre, angle and radii
+/// (core::coordinateViolation() and friends), padding finite, >= 0 and <= kMaxRadius.
 /// `frame_key` is how the caller spells the frame field ("frame_id" in messages, "frame" in YAML).
 std::optional<FieldError> findInvalidField(const EllipseSpec& spec,
                                            const std::string& frame_key = "frame_id");
 
-/// "obstacles[2].radius_x = -1: expected a finite number > 0" for requests.
-std::string describeRequestError(const std::string& entry, const FieldError& error);
+/// findInvalidField(), then the radii the core is given: radius_x and radius_y grown by
+/// spec.padding + global_padding (as paddedEllipse() does) must lie within [kMinRadius,
+/// kMaxRadius]. A violation names the radius key, with its own value as `actual`. Every
+/// configured entry and every request or topic ellipse passes this before it is used.
+std::optional<FieldError> findInvalidPaddedField(const EllipseSpec& spec, double global_padding,
+                                                 const std::string& frame_key = "frame_id");
 
 /// The ellipse in its own frame with both radii grown by spec.padding + global_padding [m].
 core::Ellipse paddedEllipse(const EllipseSpec& spec, double global_padding);
 
-/// A number as it would be read back: shortest round-trip form, "nan", "inf", "-inf".
-std::string formatNumber(double value);
-
-}  // namespace ellipse_collision
+}  // namespace ellipse_collision::app

@@ -1,14 +1,11 @@
-#include "ellipse_collision/ros/ellipse_registry.h"
+#include "ellipse_collision/app/ellipse_registry.h"
 
-#include <set>
 #include <stdexcept>
 
-namespace ellipse_collision {
-namespace {
+#include "ellipse_collision/core/unique_names.h"
 
-std::string entry(const std::string& field, std::size_t index) {
-  return field + "[" + std::to_string(index) + "]";
-}
+namespace ellipse_collision::app {
+namespace {
 
 const char* describe(EllipseSource source) {
   switch (source) {
@@ -28,15 +25,13 @@ const char* describe(EllipseSource source) {
 /// as field[i] + suffix ("obstacles[2].name").
 std::string checkRequestNames(const std::vector<std::string>& names, const std::string& field,
                               const std::string& suffix) {
-  std::set<std::string> seen;
-  for (std::size_t i = 0; i < names.size(); ++i) {
-    const std::string where = entry(field, i) + suffix;
-    if (names[i].empty()) return where + " = '': expected a non-empty name";
-    if (!seen.insert(names[i]).second) {
-      return where + " = '" + names[i] + "': expected each name once, got a duplicate";
-    }
+  const auto problem = core::findNameProblem(names);
+  if (!problem) return {};
+  const std::string where = entryName(field, problem->index) + suffix;
+  if (problem->kind == core::NameProblem::Kind::Empty) {
+    return where + " = '': expected a non-empty name";
   }
-  return {};
+  return where + " = '" + names[problem->index] + "': expected each name once, got a duplicate";
 }
 
 std::vector<std::string> namesOf(const std::vector<EllipseSpec>& specs) {
@@ -74,7 +69,7 @@ std::string EllipseRegistry::addObstacles(const std::vector<EllipseSpec>& obstac
     if (found == entries_.end()) continue;
     const EllipseSource source = found->second.source;
     if (source == EllipseSource::ConfiguredLink || source == EllipseSource::TopicObstacle) {
-      return entry(field, i) + ".name = '" + obstacles[i].name +
+      return entryName(field, i) + ".name = '" + obstacles[i].name +
              "': expected a new or replaceable obstacle name, got " + describe(source);
     }
   }
@@ -91,11 +86,11 @@ std::string EllipseRegistry::removeObstacles(const std::vector<std::string>& nam
   for (std::size_t i = 0; i < names.size(); ++i) {
     const auto found = entries_.find(names[i]);
     if (found == entries_.end()) {
-      return entry(field, i) + " = '" + names[i] +
+      return entryName(field, i) + " = '" + names[i] +
              "': expected an obstacle name, got an unknown name";
     }
     if (found->second.source == EllipseSource::ConfiguredLink) {
-      return entry(field, i) + " = '" + names[i] +
+      return entryName(field, i) + " = '" + names[i] +
              "': expected an obstacle name, got a configured link (links cannot be removed)";
     }
   }
@@ -110,7 +105,7 @@ std::string EllipseRegistry::replaceTopicObstacles(const std::vector<EllipseSpec
   for (std::size_t i = 0; i < obstacles.size(); ++i) {
     const auto found = entries_.find(obstacles[i].name);
     if (found != entries_.end() && found->second.source != EllipseSource::TopicObstacle) {
-      return entry(field, i) + ".name = '" + obstacles[i].name +
+      return entryName(field, i) + ".name = '" + obstacles[i].name +
              "': expected a name not used outside the topic, got " + describe(found->second.source);
     }
   }
@@ -123,4 +118,4 @@ std::string EllipseRegistry::replaceTopicObstacles(const std::vector<EllipseSpec
   return {};
 }
 
-}  // namespace ellipse_collision
+}  // namespace ellipse_collision::app

@@ -1,5 +1,5 @@
-// demo_driver: moves the demo robot (urdf/demo_robot.urdf) and a moving obstacle; see
-// src/ros/demo_driver.h and launch/demo.launch.
+// demo_driver: moves the demo robot (demo/urdf/demo_robot.urdf) and a moving obstacle; see
+// demo/src/demo_driver.h and demo/launch/demo.launch.
 #include "demo_driver.h"
 
 int main(int argc, char** argv) {

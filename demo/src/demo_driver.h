@@ -8,7 +8,7 @@
 #include <string>
 
 #include "demo_trajectory.h"
-#include "ellipse_collision/ros/ellipse_spec.h"
+#include "ellipse_collision/app/ellipse_spec.h"
 
 namespace ellipse_collision {
 
@@ -25,7 +25,7 @@ class DemoConfigError : public std::runtime_error {
 /// published, with fresh stamps, at the same pose, so tf stays current and the scene stays still.
 class DemoDriver {
  public:
-  /// Reads the private parameters (config/demo.yaml, `demo_driver:`); throws DemoConfigError.
+  /// Reads the private parameters (demo/config/demo.yaml, `demo_driver:`); throws DemoConfigError.
   DemoDriver(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh);
 
  private:
@@ -39,7 +39,7 @@ class DemoDriver {
   std::string odom_frame_;
   std::string base_frame_;
   DemoTrajectory trajectory_;
-  EllipseSpec obstacle_;  ///< the moving obstacle's shape; x, y follow trajectory_.obstacle
+  app::EllipseSpec obstacle_;  ///< the moving obstacle's shape; x, y follow trajectory_.obstacle
 
   tf2_ros::TransformBroadcaster tf_broadcaster_;
   ros::Publisher joint_states_pub_;

@@ -5,10 +5,10 @@
 #include <string>
 #include <vector>
 
-#include "ellipse_collision/ros/ellipse_spec.h"
+#include "ellipse_collision/app/ellipse_spec.h"
 #include "ellipse_collision/core/scene_check.h"
 
-namespace ellipse_collision {
+namespace ellipse_collision::app {
 
 /// Where a stored ellipse came from; it decides who may replace or remove it.
 enum class EllipseSource { ConfiguredLink, ConfiguredObstacle, ServiceObstacle, TopicObstacle };
@@ -23,7 +23,8 @@ struct StoredEllipse {
 
 /// The named ellipses the node keeps, by name. Every change is all-or-nothing: a refused request
 /// leaves the registry as it was and returns a message naming the field and value; an accepted one
-/// returns an empty string. Field values are validated by the caller (findInvalidField(), tf);
+/// returns an empty string. Field values are validated by the caller (findInvalidPaddedField(),
+/// the frame lookup);
 /// the registry owns the rules about names.
 ///
 /// Names are unique across links and obstacles. Links come only from the configuration and are
@@ -48,4 +49,4 @@ class EllipseRegistry {
   std::map<std::string, StoredEllipse> entries_;
 };
 
-}  // namespace ellipse_collision
+}  // namespace ellipse_collision::app

@@ -1,9 +1,9 @@
 // Name rules of the stored ellipses (links, configured, service and topic obstacles); no master.
 #include <gtest/gtest.h>
 
-#include "ellipse_collision/ros/ellipse_registry.h"
+#include "ellipse_collision/app/ellipse_registry.h"
 
-namespace ellipse_collision {
+namespace ellipse_collision::app {
 namespace {
 
 EllipseSpec spec(const std::string& name, double x = 0.0) {
@@ -119,4 +119,4 @@ TEST(EllipseRegistry, DuplicateConfiguredNameIsRejected) {
 }
 
 }  // namespace
-}  // namespace ellipse_collision
+}  // namespace ellipse_collision::app

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <set>
 
+#include "ellipse_collision/core/number_format.h"
 #include "ellipse_collision/ros/conversions.h"
 #include "ellipse_collision/ros/messages.h"
 
@@ -47,7 +48,7 @@ double number(const ros::NodeHandle& nh, const std::string& key) {
   }
   if (!std::isfinite(value)) {
     throw DemoConfigError("parameter " + fullName(nh, key) + ": expected a finite number, got " +
-                          formatNumber(value));
+                          core::formatNumber(value));
   }
   return value;
 }
@@ -56,7 +57,7 @@ double positive(const ros::NodeHandle& nh, const std::string& key) {
   const double value = number(nh, key);
   if (!(value > 0.0)) {
     throw DemoConfigError("parameter " + fullName(nh, key) + ": expected a number > 0, got " +
-                          formatNumber(value));
+                          core::formatNumber(value));
   }
   return value;
 }
@@ -139,7 +140,7 @@ bool DemoDriver::onPause(std_srvs::SetBool::Request& request,
   paused_ = request.data;
   response.success = true;
   response.message = std::string(paused_ ? "paused" : "running") + " at demo time " +
-                     formatNumber(clock_at_start_s_) + " s";
+                     core::formatNumber(clock_at_start_s_) + " s";
   ROS_INFO_STREAM("demo_driver: " << response.message);
   return true;
 }
@@ -167,7 +168,7 @@ void DemoDriver::onTimer(const ros::TimerEvent&) {
   }
   joint_states_pub_.publish(joints);
 
-  EllipseSpec obstacle = obstacle_;
+  app::EllipseSpec obstacle = obstacle_;
   const Eigen::Vector2d position = trajectory_.obstacle.at(t);
   obstacle.x = position.x();
   obstacle.y = position.y();

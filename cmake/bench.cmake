@@ -1,0 +1,44 @@
+# Benchmarks (bench/), off in the normal build (-DELLIPSE_COLLISION_BENCHMARKS=ON).
+# scripts/benchmark.sh builds and runs every one of them and prints the tables; CI runs
+# `scripts/benchmark.sh --smoke` so that none rots. Peers come from Debian: Google Benchmark and
+# FCL 0.7 (libfcl-dev, imported target `fcl`).
+find_package(benchmark REQUIRED)
+find_package(fcl REQUIRED)
+
+# The scenes and pair mixes the programs draw from, and the oracles that judge the answers.
+add_library(ellipse_collision_bench_scenes STATIC
+  bench/bench_scenes.cpp
+  test/support/contact_scale_oracle.cpp)
+target_include_directories(ellipse_collision_bench_scenes PUBLIC
+  ${PROJECT_SOURCE_DIR}/bench ${PROJECT_SOURCE_DIR}/test/support)
+target_link_libraries(ellipse_collision_bench_scenes PUBLIC ellipse_collision_core quadmath)
+target_compile_options(ellipse_collision_bench_scenes PRIVATE ${ELLIPSE_COLLISION_WARNINGS})
+
+# function ellipse_collision_add_benchmark(NAME source... [LIBRARIES lib...])
+function(ellipse_collision_add_benchmark name)
+  cmake_parse_arguments(ARG "" "" "LIBRARIES" ${ARGN})
+  add_executable(${name} ${ARG_UNPARSED_ARGUMENTS})
+  target_link_libraries(${name} ellipse_collision_bench_scenes ${ARG_LIBRARIES}
+    benchmark::benchmark)
+  target_compile_options(${name} PRIVATE ${ELLIPSE_COLLISION_WARNINGS})
+endfunction()
+
+# Pair tests beside FCL and the seed README's method, misclassifications against the oracle.
+ellipse_collision_add_benchmark(bench_pair_tests bench/bench_pair_tests.cpp
+  bench/reference_methods.cpp LIBRARIES fcl)
+# src/core for overlap_detail.h: the polygonal cap study times overlap() with other caps.
+target_include_directories(bench_pair_tests PRIVATE ${PROJECT_SOURCE_DIR}/src/core)
+
+# Scene checks of 50 links against 100 to 100,000 obstacles.
+ellipse_collision_add_benchmark(bench_scene_check bench/bench_scene_check.cpp)
+
+# distance() beside FCL's distance query, accuracy against the quad rim oracle.
+ellipse_collision_add_benchmark(bench_distance bench/bench_distance.cpp LIBRARIES fcl)
+
+# Service round trip: a ROS client of the running node, a plain main (not Google Benchmark);
+# scripts/benchmark.sh starts a roscore and the node for it.
+add_executable(bench_service_roundtrip bench/bench_service_roundtrip.cpp)
+target_include_directories(bench_service_roundtrip PRIVATE include ${catkin_INCLUDE_DIRS})
+target_link_libraries(bench_service_roundtrip ${catkin_LIBRARIES})
+target_compile_options(bench_service_roundtrip PRIVATE ${ELLIPSE_COLLISION_WARNINGS})
+add_dependencies(bench_service_roundtrip ${PROJECT_NAME}_generate_messages_cpp)

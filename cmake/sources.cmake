@@ -1,0 +1,24 @@
+# The one list of the ROS-free sources, relative to the package root. The catkin build
+# (cmake/core.cmake, cmake/app.cmake) and the standalone fuzz build (fuzz/CMakeLists.txt via
+# cmake/fuzz.cmake) both compile exactly these.
+set(ELLIPSE_COLLISION_CORE_SOURCES
+  src/core/broadphase.cpp
+  src/core/distance.cpp
+  src/core/eigenvalue_test.cpp
+  src/core/ellipse.cpp
+  src/core/frame_projection.cpp
+  src/core/number_format.cpp
+  src/core/overlap.cpp
+  src/core/pair_line_parser.cpp
+  src/core/polygonal_test.cpp
+  src/core/prepared_ellipse.cpp
+  src/core/relative_shape.cpp
+  src/core/scene_check.cpp
+  src/core/unique_names.cpp)
+
+set(ELLIPSE_COLLISION_APP_SOURCES
+  src/app/collision_check.cpp
+  src/app/ellipse_registry.cpp
+  src/app/ellipse_spec.cpp
+  src/app/field_error.cpp
+  src/app/scene_placement.cpp)

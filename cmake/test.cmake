@@ -1,0 +1,144 @@
+# Every test (test/). Included from CMakeLists.txt inside if(CATKIN_ENABLE_TESTING).
+# test/support/ holds what several tests share: the quad-precision oracles, ellipse builders and
+# random generators, the brute-force scene reference.
+find_package(rostest REQUIRED)
+find_package(std_srvs REQUIRED)
+find_package(X11 REQUIRED)
+set(_support ${PROJECT_SOURCE_DIR}/test/support)
+
+# ellipse_collision_add_gtest(NAME LIBRARIES libs... SOURCES sources...): a gtest that needs no
+# ROS master, with gtest_main and the test support headers.
+function(ellipse_collision_add_gtest name)
+  cmake_parse_arguments(ARG "" "" "LIBRARIES;SOURCES" ${ARGN})
+  catkin_add_gtest(${name} ${ARG_SOURCES})
+  target_include_directories(${name} PRIVATE ${_support})
+  target_link_libraries(${name} ${ARG_LIBRARIES} gtest_main)
+  target_compile_options(${name} PRIVATE ${ELLIPSE_COLLISION_WARNINGS})
+endfunction()
+
+# ---- core (test/core): link the core alone, so a stray ROS dependency fails the build ----------
+ellipse_collision_add_gtest(test_core LIBRARIES ellipse_collision_core quadmath SOURCES
+  test/core/test_ellipse.cpp
+  test/core/test_eigenvalue_test.cpp
+  test/core/test_polygonal_test.cpp
+  test/core/test_overlap_accuracy.cpp
+  test/core/test_pair_line_parser.cpp
+  test/core/test_unique_names.cpp
+  test/support/contact_scale_oracle.cpp)
+ellipse_collision_add_gtest(test_scene_core LIBRARIES ellipse_collision_core SOURCES
+  test/core/test_frame_projection.cpp
+  test/core/test_scene_check.cpp
+  test/core/test_scene_broadphase.cpp
+  test/core/test_scene_clearance.cpp)
+ellipse_collision_add_gtest(test_distance LIBRARIES ellipse_collision_core quadmath SOURCES
+  test/core/test_distance.cpp
+  test/support/contact_scale_oracle.cpp)
+ellipse_collision_add_gtest(test_performance_core LIBRARIES ellipse_collision_core quadmath SOURCES
+  test/core/test_prepared_ellipse.cpp
+  test/core/test_broadphase.cpp
+  test/support/contact_scale_oracle.cpp)
+
+catkin_add_gtest(test_check_ellipses test/core/test_check_ellipses.cpp)
+target_compile_definitions(test_check_ellipses PRIVATE
+  CHECK_ELLIPSES_BIN="$<TARGET_FILE:check_ellipses>")
+add_dependencies(test_check_ellipses check_ellipses)
+target_compile_options(test_check_ellipses PRIVATE ${ELLIPSE_COLLISION_WARNINGS})
+
+# ---- application layer (test/app): no ROS library, transforms from a table --------------------
+ellipse_collision_add_gtest(test_app LIBRARIES ellipse_collision_app SOURCES
+  test/app/test_ellipse_registry.cpp
+  test/app/test_field_validation.cpp
+  test/app/test_collision_check.cpp)
+
+# ---- ROS layer units (test/ros): conversions, parameters, markers; no master -------------------
+ellipse_collision_add_gtest(test_ros_units LIBRARIES ellipse_collision_ros SOURCES
+  test/ros/test_conversions.cpp
+  test/ros/test_node_config.cpp
+  test/ros/test_collision_markers.cpp)
+
+# ---- rostests: roscore, the real node, a tf helper and a gtest client --------------------------
+# Helper node broadcasting the test frames; built with the tests only.
+add_executable(tf_test_broadcaster EXCLUDE_FROM_ALL test/ros/tf_test_broadcaster.cpp)
+target_include_directories(tf_test_broadcaster PRIVATE ${catkin_INCLUDE_DIRS})
+target_link_libraries(tf_test_broadcaster ${catkin_LIBRARIES})
+target_compile_options(tf_test_broadcaster PRIVATE ${ELLIPSE_COLLISION_WARNINGS})
+if(TARGET tests)
+  add_dependencies(tests tf_test_broadcaster)
+endif()
+
+# Each client also needs the node, the helper and the Python messages (rosservice, rostopic).
+function(ellipse_collision_add_rostest target launch_file)
+  add_rostest_gtest(${target} ${launch_file} ${ARGN})
+  target_link_libraries(${target} ellipse_collision_ros)
+  target_compile_options(${target} PRIVATE ${ELLIPSE_COLLISION_WARNINGS})
+  target_compile_definitions(${target} PRIVATE
+    ELLIPSE_COLLISION_NODE_BIN="$<TARGET_FILE:ellipse_collision_node>")
+  add_dependencies(${target} ellipse_collision_node tf_test_broadcaster
+    ${PROJECT_NAME}_generate_messages)
+endfunction()
+
+ellipse_collision_add_rostest(test_node_services test/ros/node_services.test
+  test/ros/test_node_services.cpp)
+ellipse_collision_add_rostest(test_node_topics test/ros/node_topics.test
+  test/ros/test_node_topics.cpp)
+ellipse_collision_add_rostest(test_node_cli test/ros/node_cli.test
+  test/ros/test_node_cli.cpp)
+ellipse_collision_add_rostest(test_bad_config test/ros/bad_config.test
+  test/ros/test_bad_config.cpp)
+
+# The rospy example client against the example configuration (a Python rostest).
+add_rostest(test/ros/python_client.test
+  DEPENDENCIES ellipse_collision_node ${PROJECT_NAME}_generate_messages)
+
+# Every message and service type a user meets loads in Debian's Python (rosservice, rostopic,
+# rospy): catches a missing python3-*-msgs package in scripts/setup.sh.
+catkin_run_tests_target("python" "message_types" "python-message_types.xml"
+  COMMAND "${PYTHON_EXECUTABLE} ${PROJECT_SOURCE_DIR}/test/python/check_message_types.py ${PROJECT_SOURCE_DIR} --junit ${CATKIN_TEST_RESULTS_DIR}/${PROJECT_NAME}/python-message_types.xml"
+  DEPENDENCIES ${PROJECT_NAME}_generate_messages)
+
+# ---- reliability (test/reliability): hostile requests to every service and the ~obstacles topic,
+# bad configuration files started through the launch file, the load test ----------------------
+ellipse_collision_add_rostest(test_hostile_requests test/reliability/hostile_requests.test
+  test/reliability/test_hostile_requests.cpp)
+ellipse_collision_add_rostest(test_bad_startup test/reliability/bad_startup.test
+  test/reliability/test_bad_startup.cpp)
+target_compile_definitions(test_bad_startup PRIVATE
+  ELLIPSE_COLLISION_SOURCE_DIR="${CMAKE_CURRENT_SOURCE_DIR}")
+# 60 s of load by default; a quick run: rostest $PWD/test/reliability/load.test duration:=10
+ellipse_collision_add_rostest(test_load test/reliability/load.test
+  test/reliability/test_load.cpp)
+
+# ---- demo (test/demo): the whole demo with rviz in a virtual X server, judged from a screenshot
+catkin_add_executable_with_gtest(test_demo_screenshot EXCLUDE_FROM_ALL
+  test/demo/test_demo_screenshot.cpp
+  test/demo/rviz_top_down_view.cpp
+  test/demo/screen_image.cpp)
+target_include_directories(test_demo_screenshot PRIVATE
+  test/ros ${std_srvs_INCLUDE_DIRS} ${X11_INCLUDE_DIR})
+target_link_libraries(test_demo_screenshot ellipse_collision_ros ${X11_LIBRARIES})
+target_compile_options(test_demo_screenshot PRIVATE ${ELLIPSE_COLLISION_WARNINGS})
+add_dependencies(test_demo_screenshot ${PROJECT_NAME}_generate_messages_cpp)
+if(TARGET tests)
+  add_dependencies(tests test_demo_screenshot)
+endif()
+
+# add_rostest() with the command wrapped in xvfb-run: rviz needs an X display, and a private one
+# of known size keeps the picture the same on every machine (and off the user's desktop).
+# -a picks a free display number.
+set(_demo_test test/demo/demo_screenshot.test)
+set(_demo_results "${CATKIN_TEST_RESULTS_DIR}/${PROJECT_NAME}")
+catkin_run_tests_target("rostest" "test_demo_demo_screenshot.test"
+  "rostest-test_demo_demo_screenshot.xml"
+  COMMAND "xvfb-run -a -s \"-screen 0 1280x800x24\" ${PYTHON_EXECUTABLE} /usr/bin/rostest --pkgdir=${PROJECT_SOURCE_DIR} --package=${PROJECT_NAME} --results-filename test_demo_demo_screenshot.xml --results-base-dir \"${CATKIN_TEST_RESULTS_DIR}\" ${PROJECT_SOURCE_DIR}/${_demo_test} screenshot:=${_demo_results}/demo_screenshot.ppm"
+  DEPENDENCIES test_demo_screenshot demo_driver ellipse_collision_node)
+
+# Units of the demo and of the screenshot test; no ROS master, no display.
+ellipse_collision_add_gtest(test_demo_units LIBRARIES ellipse_collision_core ${X11_LIBRARIES}
+  SOURCES
+  test/demo/test_demo_units.cpp
+  test/demo/rviz_top_down_view.cpp
+  test/demo/screen_image.cpp
+  demo/src/demo_trajectory.cpp)
+target_include_directories(test_demo_units PRIVATE demo/src ${X11_INCLUDE_DIR})
+target_compile_definitions(test_demo_units PRIVATE
+  DEMO_RVIZ_CONFIG="${PROJECT_SOURCE_DIR}/demo/rviz/demo.rviz")

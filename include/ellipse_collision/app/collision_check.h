@@ -1,0 +1,65 @@
+#pragma once
+
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "ellipse_collision/app/ellipse_registry.h"
+#include "ellipse_collision/app/ellipse_spec.h"
+#include "ellipse_collision/app/transform_lookup.h"
+#include "ellipse_collision/core/scene_check.h"
+
+namespace ellipse_collision::app {
+
+/// What every check shares: where ellipses are compared and the pair rules.
+struct CheckSettings {
+  std::string fixed_frame{"base_link"};
+  double global_padding_m{0.0};  ///< added to both radii of every ellipse [m]
+  core::SceneRules rules;
+};
+
+/// One ~check_collisions request, converted from its message. Empty names, query and
+/// min_distance_of ask for every pair of the stored ellipses.
+struct CheckRequest {
+  std::vector<std::string> names;    ///< only pairs with one of these (stored or query names)
+  std::vector<EllipseSpec> query;    ///< extra ellipses checked against links and obstacles
+  std::string min_distance_of;       ///< also the nearest partner of this name, if not empty
+};
+
+/// The answer of one check.
+struct CheckOutcome {
+  std::vector<core::NamedEllipse> placed;       ///< stored ellipses that could be placed
+  std::vector<std::string> unavailable_frames;  ///< sorted; their ellipses were skipped
+  std::vector<std::string> skipped;             ///< why each skipped ellipse was skipped
+  std::vector<core::CollidingPair> collisions;
+  std::vector<core::NearPair> warnings;
+  std::optional<core::NearPair> nearest;  ///< of min_distance_of, when asked and measured
+  std::string nearest_problem;            ///< why it was asked but not measured
+  std::string error;                      ///< a bad request or a refused scene: nothing checked
+};
+
+/// The request's own rules, before any frame is looked up: every query ellipse passes
+/// findInvalidPaddedField(); query names are distinct and name no stored ellipse; `names` are
+/// non-empty, distinct and name a stored or query ellipse; min_distance_of is empty or names one.
+/// Returns the first violation as "query[1].name = 'x': expected ...", or "".
+std::string validateCheckRequest(const CheckRequest& request, const EllipseRegistry& registry,
+                                 double global_padding_m);
+
+/// Places the query ellipses and every stored ellipse through `lookup`, checks the scene with the
+/// core (core::checkScene(), core::nearestTo()) and collects the answer. A query ellipse whose
+/// frame is unavailable or that projects to nothing makes the request fail; a stored one is
+/// skipped and its frame listed. Expects a request that passed validateCheckRequest().
+CheckOutcome runCheck(const CheckRequest& request, const EllipseRegistry& registry,
+                      const CheckSettings& settings, const TransformLookup& lookup);
+
+/// For ellipses that are to be stored (~add_obstacles, the ~obstacles topic): field rules
+/// (findInvalidPaddedField()) for all, then a transform to the fixed frame for each frame.
+/// `field` names the list in messages ("obstacles" -> "obstacles[2].frame_id = ...").
+std::string validateAttached(const std::vector<EllipseSpec>& specs, const std::string& field,
+                             const CheckSettings& settings, const TransformLookup& lookup);
+
+/// "a; b; c".
+std::string joinText(const std::vector<std::string>& parts, const std::string& separator);
+
+}  // namespace ellipse_collision::app

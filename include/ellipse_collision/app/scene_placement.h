@@ -1,0 +1,38 @@
+#pragma once
+
+#include <map>
+#include <string>
+
+#include "ellipse_collision/app/ellipse_spec.h"
+#include "ellipse_collision/app/transform_lookup.h"
+#include "ellipse_collision/core/scene_check.h"
+
+namespace ellipse_collision::app {
+
+/// Places ellipses attached to frames into the fixed frame's plane for one check: each frame is
+/// looked up once, then the core projects the padded ellipse (core::projectToPlane()).
+class ScenePlacement {
+ public:
+  enum class Status { Placed, FrameUnavailable, Degenerate };
+
+  struct Placement {
+    Status status{Status::Placed};
+    core::NamedEllipse ellipse;  ///< in the fixed frame, when Placed
+    std::string error;           ///< the lookup error or the projection error otherwise
+  };
+
+  /// `lookup` answers for the fixed frame at the check's time; global padding in [m].
+  ScenePlacement(TransformLookup lookup, double global_padding_m);
+
+  Placement place(const EllipseSpec& spec, core::EllipseRole role);
+
+  /// The transform of `frame`, looked up at most once per placement.
+  const FrameTransform& lookup(const std::string& frame);
+
+ private:
+  TransformLookup lookup_;
+  double global_padding_m_;
+  std::map<std::string, FrameTransform> frames_;
+};
+
+}  // namespace ellipse_collision::app

@@ -1,0 +1,62 @@
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace ellipse_collision::core {
+
+/// Where a list of names stops being a list of distinct, non-empty names.
+struct NameProblem {
+  enum class Kind { Empty, Duplicate };
+  Kind kind{Kind::Empty};
+  std::size_t index{0};        ///< the offending entry
+  std::size_t first_index{0};  ///< Duplicate: the earlier entry with the same name
+};
+
+/// The one uniqueness check of the package (scenes, configuration, requests, the registry): the
+/// first entry, in order, whose name is empty or repeats an earlier one. `name_of(i)` gives the
+/// name of entry i < count as something convertible to std::string_view; the names must outlive
+/// the call. Open addressing over views in one array: a set of string copies (or an
+/// unordered_set with a node per name) would cost more than all the pair tests of a large scene.
+template <class NameOf>
+std::optional<NameProblem> findNameProblem(std::size_t count, NameOf&& name_of);
+
+/// The same for a plain list of names.
+std::optional<NameProblem> findNameProblem(const std::vector<std::string>& names);
+
+namespace detail {
+
+/// Names seen so far with the index of the entry that had each.
+class NameIndex {
+ public:
+  explicit NameIndex(std::size_t capacity);
+  /// The index `name` was first inserted with, or nothing if it is new (then it is inserted).
+  std::optional<std::size_t> insert(std::string_view name, std::size_t index);
+
+ private:
+  struct Slot {
+    std::string_view name;  ///< a null data() marks a free slot; names are non-empty
+    std::size_t index{0};
+  };
+  std::vector<Slot> slots_;
+};
+
+}  // namespace detail
+
+template <class NameOf>
+std::optional<NameProblem> findNameProblem(std::size_t count, NameOf&& name_of) {
+  detail::NameIndex seen(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::string_view name = name_of(i);
+    if (name.empty()) return NameProblem{NameProblem::Kind::Empty, i, i};
+    if (const auto first = seen.insert(name, i)) {
+      return NameProblem{NameProblem::Kind::Duplicate, i, *first};
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace ellipse_collision::core

@@ -1,0 +1,151 @@
+#include "ellipse_collision/app/collision_check.h"
+
+#include <algorithm>
+
+#include "ellipse_collision/app/scene_placement.h"
+#include "ellipse_collision/core/unique_names.h"
+
+namespace ellipse_collision::app {
+
+std::string joinText(const std::vector<std::string>& parts, const std::string& separator) {
+  std::string joined;
+  for (const std::string& part : parts) joined += (joined.empty() ? "" : separator) + part;
+  return joined;
+}
+
+std::string validateCheckRequest(const CheckRequest& request, const EllipseRegistry& registry,
+                                 double global_padding_m) {
+  std::set<std::string> query_names;
+  for (std::size_t i = 0; i < request.query.size(); ++i) {
+    const EllipseSpec& spec = request.query[i];
+    if (const auto invalid = findInvalidPaddedField(spec, global_padding_m)) {
+      return describeFieldError(entryName("query", i), *invalid);
+    }
+    if (registry.contains(spec.name) || !query_names.insert(spec.name).second) {
+      return entryName("query", i) + ".name = '" + spec.name +
+             "': expected a name used by no link, obstacle or other query, got a duplicate";
+    }
+  }
+  const auto known = [&](const std::string& name) {
+    return registry.contains(name) || query_names.count(name) != 0;
+  };
+  if (const auto problem = core::findNameProblem(request.names)) {
+    const std::string where =
+        entryName("names", problem->index) + " = '" + request.names[problem->index] + "': expected ";
+    // An unknown name before the problem is reported first, as a reader meets it.
+    for (std::size_t i = 0; i < problem->index; ++i) {
+      if (!known(request.names[i])) {
+        return entryName("names", i) + " = '" + request.names[i] +
+               "': expected the name of a link, obstacle or query, got an unknown name";
+      }
+    }
+    if (problem->kind == core::NameProblem::Kind::Empty) return where + "a non-empty name";
+    if (!known(request.names[problem->index])) {
+      return where + "the name of a link, obstacle or query, got an unknown name";
+    }
+    return where + "each name once, got a duplicate";
+  }
+  for (std::size_t i = 0; i < request.names.size(); ++i) {
+    if (!known(request.names[i])) {
+      return entryName("names", i) + " = '" + request.names[i] +
+             "': expected the name of a link, obstacle or query, got an unknown name";
+    }
+  }
+  if (!request.min_distance_of.empty() && !known(request.min_distance_of)) {
+    return "min_distance_of = '" + request.min_distance_of +
+           "': expected the name of a link, obstacle or query (or empty), got an unknown name";
+  }
+  return {};
+}
+
+CheckOutcome runCheck(const CheckRequest& request, const EllipseRegistry& registry,
+                      const CheckSettings& settings, const TransformLookup& lookup) {
+  CheckOutcome outcome;
+  ScenePlacement placement(lookup, settings.global_padding_m);
+
+  std::vector<core::NamedEllipse> scene;
+  for (std::size_t i = 0; i < request.query.size(); ++i) {
+    const EllipseSpec& spec = request.query[i];
+    const ScenePlacement::Placement placed = placement.place(spec, core::EllipseRole::Query);
+    if (placed.status == ScenePlacement::Status::FrameUnavailable) {
+      outcome.error = entryName("query", i) + ".frame_id = '" + spec.frame_id +
+                      "': expected a frame with a transform to '" + settings.fixed_frame +
+                      "', got none (" + placed.error + ")";
+      return outcome;
+    }
+    if (placed.status == ScenePlacement::Status::Degenerate) {
+      outcome.error = entryName("query", i) + ": " + placed.error;
+      return outcome;
+    }
+    scene.push_back(placed.ellipse);
+  }
+
+  std::set<std::string> unavailable;
+  for (const auto& [name, stored] : registry.entries()) {
+    const ScenePlacement::Placement placed = placement.place(stored.spec, stored.role());
+    switch (placed.status) {
+      case ScenePlacement::Status::Placed:
+        scene.push_back(placed.ellipse);
+        outcome.placed.push_back(placed.ellipse);
+        break;
+      case ScenePlacement::Status::FrameUnavailable:
+        unavailable.insert(stored.spec.frame_id);
+        outcome.skipped.push_back(name + ": frame '" + stored.spec.frame_id + "' unavailable");
+        break;
+      case ScenePlacement::Status::Degenerate:
+        outcome.skipped.push_back(placed.error);
+        break;
+    }
+  }
+  outcome.unavailable_frames.assign(unavailable.begin(), unavailable.end());
+
+  const std::set<std::string> only_names(request.names.begin(), request.names.end());
+  core::SceneCheckResult result = core::checkScene(scene, settings.rules, only_names);
+  if (!result.ok()) {
+    // Requests are validated before they get here, so this is a bug: say so.
+    outcome.error = "internal error: " + result.error;
+    return outcome;
+  }
+  outcome.collisions = std::move(result.collisions);
+  outcome.warnings = std::move(result.warnings);
+
+  const std::string& of = request.min_distance_of;
+  if (of.empty()) return outcome;
+  const bool placed = std::any_of(scene.begin(), scene.end(),
+                                  [&](const core::NamedEllipse& e) { return e.name == of; });
+  if (!placed) {
+    outcome.nearest_problem =
+        "min_distance_of = '" + of + "': not measured, the ellipse could not be placed";
+    return outcome;
+  }
+  const core::NearestResult nearest = core::nearestTo(scene, settings.rules, of);
+  if (!nearest.ok()) {
+    outcome.error = "internal error: " + nearest.error;
+  } else if (!nearest.found) {
+    outcome.nearest_problem = "min_distance_of = '" + of +
+                              "': no placed ellipse that the pair rules measure it against";
+  } else {
+    outcome.nearest = nearest.nearest;
+  }
+  return outcome;
+}
+
+std::string validateAttached(const std::vector<EllipseSpec>& specs, const std::string& field,
+                             const CheckSettings& settings, const TransformLookup& lookup) {
+  for (std::size_t i = 0; i < specs.size(); ++i) {
+    if (const auto invalid = findInvalidPaddedField(specs[i], settings.global_padding_m)) {
+      return describeFieldError(entryName(field, i), *invalid);
+    }
+  }
+  for (std::size_t i = 0; i < specs.size(); ++i) {
+    const FrameTransform frame = lookup(specs[i].frame_id);
+    if (!frame.ok) {
+      return entryName(field, i) + ".frame_id = '" + specs[i].frame_id +
+             "': expected a known tf frame with a transform to '" + settings.fixed_frame +
+             "', got none (" + frame.error + ")";
+    }
+  }
+  return {};
+}
+
+}  // namespace ellipse_collision::app

@@ -1,0 +1,71 @@
+#include "ellipse_collision/app/ellipse_spec.h"
+
+#include <cmath>
+
+#include "ellipse_collision/core/number_format.h"
+
+namespace ellipse_collision::app {
+
+using core::formatNumber;
+
+std::optional<FieldError> findInvalidField(const EllipseSpec& spec, const std::string& frame_key) {
+  if (spec.name.empty()) return FieldError{"name", "a non-empty string", "''"};
+  if (spec.frame_id.empty()) return FieldError{frame_key, "a non-empty tf frame id", "''"};
+  if (spec.frame_id.front() == '/') {
+    return FieldError{frame_key, "a tf2 frame id without a leading '/'", "'" + spec.frame_id + "'"};
+  }
+  // The core's rules (core/ellipse.h), checked field by field to name the field as given.
+  const std::pair<const char*, std::optional<core::ValueViolation>> fields[] = {
+      {"x", core::coordinateViolation(spec.x)},
+      {"y", core::coordinateViolation(spec.y)},
+      {"angle", core::angleViolation(spec.angle)},
+      {"radius_x", core::radiusViolation(spec.radius_x)},
+      {"radius_y", core::radiusViolation(spec.radius_y)}};
+  for (const auto& [key, violation] : fields) {
+    if (violation) return fieldError(key, *violation);
+  }
+  if (!std::isfinite(spec.padding) || !(spec.padding >= 0.0)) {
+    return FieldError{"padding", "a finite number >= 0", formatNumber(spec.padding)};
+  }
+  if (spec.padding > core::kMaxRadius) {
+    return FieldError{"padding", "a number within [0, " + formatNumber(core::kMaxRadius) + "]",
+                      formatNumber(spec.padding)};
+  }
+  return std::nullopt;
+}
+
+std::optional<FieldError> findInvalidPaddedField(const EllipseSpec& spec, double global_padding,
+                                                 const std::string& frame_key) {
+  if (auto invalid = findInvalidField(spec, frame_key)) return invalid;
+  // The same sums as paddedEllipse(), so that what passes here passes the core's invalidReason().
+  const core::Ellipse padded = paddedEllipse(spec, global_padding);
+  const struct {
+    const char* key;
+    double value;
+    double padded;
+  } radii[] = {{"radius_x", spec.radius_x, padded.radius_x},
+               {"radius_y", spec.radius_y, padded.radius_y}};
+  for (const auto& radius : radii) {
+    if (!(radius.padded >= core::kMinRadius && radius.padded <= core::kMaxRadius)) {
+      return FieldError{radius.key,
+                        "a number whose padded radius (" + std::string(radius.key) + " + padding " +
+                            formatNumber(spec.padding) + " + global padding " +
+                            formatNumber(global_padding) + " = " + formatNumber(radius.padded) +
+                            ") lies within [" + formatNumber(core::kMinRadius) + ", " +
+                            formatNumber(core::kMaxRadius) + "]",
+                        formatNumber(radius.value)};
+    }
+  }
+  return std::nullopt;
+}
+
+core::Ellipse paddedEllipse(const EllipseSpec& spec, double global_padding) {
+  core::Ellipse e;
+  e.center = Eigen::Vector2d(spec.x, spec.y);
+  e.radius_x = spec.radius_x + spec.padding + global_padding;
+  e.radius_y = spec.radius_y + spec.padding + global_padding;
+  e.angle = spec.angle;
+  return e;
+}
+
+}  // namespace ellipse_collision::app

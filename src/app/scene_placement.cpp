@@ -1,0 +1,39 @@
+#include "ellipse_collision/app/scene_placement.h"
+
+#include <utility>
+
+#include "ellipse_collision/core/frame_projection.h"
+
+namespace ellipse_collision::app {
+
+ScenePlacement::ScenePlacement(TransformLookup lookup, double global_padding_m)
+    : lookup_(std::move(lookup)), global_padding_m_(global_padding_m) {}
+
+const FrameTransform& ScenePlacement::lookup(const std::string& frame) {
+  const auto cached = frames_.find(frame);
+  if (cached != frames_.end()) return cached->second;
+  return frames_.emplace(frame, lookup_(frame)).first->second;
+}
+
+ScenePlacement::Placement ScenePlacement::place(const EllipseSpec& spec, core::EllipseRole role) {
+  Placement placement;
+  placement.ellipse.name = spec.name;
+  placement.ellipse.role = role;
+  const FrameTransform& frame = lookup(spec.frame_id);
+  if (!frame.ok) {
+    placement.status = Status::FrameUnavailable;
+    placement.error = frame.error;
+    return placement;
+  }
+  const core::ProjectionResult projected = core::projectToPlane(
+      paddedEllipse(spec, global_padding_m_), frame.fixed_from_frame, spec.name);
+  if (!projected.ok()) {
+    placement.status = Status::Degenerate;
+    placement.error = projected.error;
+    return placement;
+  }
+  placement.ellipse.ellipse = projected.ellipse;
+  return placement;
+}
+
+}  // namespace ellipse_collision::app
