@@ -40,11 +40,13 @@ std::string render(const char* key, const ValueViolation& violation) {
 }  // namespace
 
 std::optional<ValueViolation> coordinateViolation(double value) {
+  if (coordinateOk(value)) return std::nullopt;
   if (auto violation = finiteViolation(value, false)) return violation;
   return rangeViolation(value, -kMaxCoordinate, kMaxCoordinate, false);
 }
 
 std::optional<ValueViolation> radiusViolation(double value) {
+  if (radiusOk(value)) return std::nullopt;
   if (auto violation = finiteViolation(value, true)) return violation;
   if (!(value > 0.0)) {
     return ValueViolation{ValueViolation::Rule::Positive, value, 0.0, 0.0, true};
@@ -52,9 +54,17 @@ std::optional<ValueViolation> radiusViolation(double value) {
   return rangeViolation(value, kMinRadius, kMaxRadius, true);
 }
 
-std::optional<ValueViolation> angleViolation(double value) { return finiteViolation(value, false); }
+std::optional<ValueViolation> angleViolation(double value) {
+  if (angleOk(value)) return std::nullopt;
+  return finiteViolation(value, false);
+}
 
 std::string invalidReason(const Ellipse& ellipse) {
+  // Called for every ellipse of every scene check: the valid case costs five comparisons.
+  if (coordinateOk(ellipse.center.x()) && coordinateOk(ellipse.center.y()) &&
+      radiusOk(ellipse.radius_x) && radiusOk(ellipse.radius_y) && angleOk(ellipse.angle)) {
+    return {};
+  }
   const std::pair<const char*, std::optional<ValueViolation>> fields[] = {
       {"center.x", coordinateViolation(ellipse.center.x())},
       {"center.y", coordinateViolation(ellipse.center.y())},

@@ -10,21 +10,21 @@ std::optional<NameProblem> findNameProblem(const std::vector<std::string>& names
 
 namespace detail {
 
-NameIndex::NameIndex(std::size_t capacity) {
+NameSet::NameSet(std::size_t capacity) {
   std::size_t slots = 16;
   while (slots < 2 * capacity) slots *= 2;  // at most half full: short probe sequences
   slots_.assign(slots, {});
 }
 
-std::optional<std::size_t> NameIndex::insert(std::string_view name, std::size_t index) {
+bool NameSet::insert(std::string_view name) {
   const std::size_t mask = slots_.size() - 1;
   const std::size_t hash = std::hash<std::string_view>{}(name);
   for (std::size_t k = hash & mask;; k = (k + 1) & mask) {
-    if (slots_[k].name.data() == nullptr) {
-      slots_[k] = {name, index};
-      return std::nullopt;
+    if (slots_[k].data() == nullptr) {
+      slots_[k] = name;
+      return true;
     }
-    if (slots_[k].name == name) return slots_[k].index;
+    if (slots_[k] == name) return false;
   }
 }
 

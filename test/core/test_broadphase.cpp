@@ -12,19 +12,16 @@
 
 #include "contact_scale_oracle.h"
 #include "ellipse_collision/core/broadphase.h"
+#include "random_source.h"
 
 namespace ellipse_collision::core {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-class Random {
+class Random : public ellipse_collision::test::RandomSource {
  public:
-  explicit Random(std::uint64_t seed) : rng_(seed) {}
-  double uniform(double lo, double hi) {
-    return std::uniform_real_distribution<double>(lo, hi)(rng_);
-  }
-  double logUniform(double lo, double hi) { return std::exp(uniform(std::log(lo), std::log(hi))); }
+  using RandomSource::RandomSource;
 
   /// Square-ish boxes of half-size in [min_half, max_half] [m], centres in a square of side
   /// `world` [m].
@@ -48,8 +45,6 @@ class Random {
     return e;
   }
 
- private:
-  std::mt19937_64 rng_;
 };
 
 std::vector<IndexPair> bruteForce(const std::vector<BoundingBox>& a,

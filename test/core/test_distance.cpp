@@ -20,6 +20,7 @@
 #include "distance_oracle.h"
 #include "ellipse_collision/core/distance.h"
 #include "ellipse_collision/core/overlap.h"
+#include "random_source.h"
 
 namespace ellipse_collision::core {
 namespace test {
@@ -77,26 +78,20 @@ Built place(const Ellipse& a, Ellipse b, double normal_angle, double gap) {
   return {a, b, gap, sqrtq(ex * ex + ey * ey)};
 }
 
-double logUniform(std::mt19937_64& rng, double lo, double hi) {
-  return std::exp(std::uniform_real_distribution<double>(std::log(lo), std::log(hi))(rng));
-}
-
-double uniform(std::mt19937_64& rng, double lo, double hi) {
-  return std::uniform_real_distribution<double>(lo, hi)(rng);
-}
+using Random = ellipse_collision::test::RandomSource;
 
 /// Ellipse at `center` with radius_x log-uniform in [size_lo, size_hi] and the axis ratio
 /// log-uniform in [1, max_ratio] (radius_y the smaller one, or the larger one half the time).
-Ellipse randomEllipse(std::mt19937_64& rng, Eigen::Vector2d center, double size_lo, double size_hi,
+Ellipse randomEllipse(Random& rng, Eigen::Vector2d center, double size_lo, double size_hi,
                       double max_ratio) {
   Ellipse e;
   e.center = center;
-  const double major = logUniform(rng, size_lo, size_hi);
-  const double minor = std::max(major / logUniform(rng, 1.0, max_ratio), size_lo);
-  const bool swap = std::uniform_int_distribution<int>(0, 1)(rng) == 1;
+  const double major = rng.logUniform(size_lo, size_hi);
+  const double minor = std::max(major / rng.logUniform(1.0, max_ratio), size_lo);
+  const bool swap = rng.integer(0, 1) == 1;
   e.radius_x = swap ? minor : major;
   e.radius_y = swap ? major : minor;
-  e.angle = uniform(rng, -kPi, kPi);
+  e.angle = rng.uniform(-kPi, kPi);
   return e;
 }
 
@@ -182,16 +177,16 @@ class Checker {
 };
 
 TEST(Distance, CirclesMatchTheClosedForm) {
-  std::mt19937_64 rng(11);
+  Random rng(11);
   double max_error = 0.0;
   for (int i = 0; i < 2000; ++i) {
     Ellipse a, b;
-    a.center = {uniform(rng, -100, 100), uniform(rng, -100, 100)};
-    b.center = {uniform(rng, -100, 100), uniform(rng, -100, 100)};
-    a.radius_x = a.radius_y = logUniform(rng, 1e-3, 50);
-    b.radius_x = b.radius_y = logUniform(rng, 1e-3, 50);
-    a.angle = uniform(rng, -kPi, kPi);
-    b.angle = uniform(rng, -kPi, kPi);
+    a.center = {rng.uniform(-100, 100), rng.uniform(-100, 100)};
+    b.center = {rng.uniform(-100, 100), rng.uniform(-100, 100)};
+    a.radius_x = a.radius_y = rng.logUniform(1e-3, 50);
+    b.radius_x = b.radius_y = rng.logUniform(1e-3, 50);
+    a.angle = rng.uniform(-kPi, kPi);
+    b.angle = rng.uniform(-kPi, kPi);
     const quad dx = static_cast<quad>(b.center.x()) - a.center.x();
     const quad dy = static_cast<quad>(b.center.y()) - a.center.y();
     const quad exact = sqrtq(dx * dx + dy * dy) - a.radius_x - b.radius_x;
@@ -213,106 +208,106 @@ TEST(Distance, CirclesMatchTheClosedForm) {
 }
 
 TEST(Distance, RandomPairsMatchTheOracle) {
-  std::mt19937_64 rng(21);
+  Random rng(21);
   Checker checker("random");
   for (int i = 0; i < 300; ++i) {
     const Ellipse a =
-        randomEllipse(rng, {uniform(rng, -10, 10), uniform(rng, -10, 10)}, 0.05, 5, 20);
+        randomEllipse(rng, {rng.uniform(-10, 10), rng.uniform(-10, 10)}, 0.05, 5, 20);
     const Ellipse b = randomEllipse(rng, {0, 0}, 0.05, 5, 20);
-    const double gap = logUniform(rng, 1e-4, 3) * std::max(size(a), size(b));
-    checker.check(place(a, b, uniform(rng, -kPi, kPi), gap));
+    const double gap = rng.logUniform(1e-4, 3) * std::max(size(a), size(b));
+    checker.check(place(a, b, rng.uniform(-kPi, kPi), gap));
   }
 }
 
 TEST(Distance, ThinCrossingPairsMatchTheOracle) {
-  std::mt19937_64 rng(31);
+  Random rng(31);
   Checker checker("thin crossing (1e3)");
   for (int i = 0; i < 300; ++i) {
     Ellipse a, b;
-    a.radius_x = logUniform(rng, 0.5, 2);
+    a.radius_x = rng.logUniform(0.5, 2);
     a.radius_y = a.radius_x * 1e-3;
-    b.radius_x = logUniform(rng, 0.5, 2);
+    b.radius_x = rng.logUniform(0.5, 2);
     b.radius_y = b.radius_x * 1e-3;
-    a.center = {uniform(rng, -1, 1), uniform(rng, -1, 1)};
-    a.angle = uniform(rng, -kPi, kPi);
-    b.angle = a.angle + kPi / 2 + uniform(rng, -0.3, 0.3);
-    const double gap = logUniform(rng, 1e-6, 1) * std::max(size(a), size(b));
-    checker.check(place(a, b, uniform(rng, -kPi, kPi), gap));
+    a.center = {rng.uniform(-1, 1), rng.uniform(-1, 1)};
+    a.angle = rng.uniform(-kPi, kPi);
+    b.angle = a.angle + kPi / 2 + rng.uniform(-0.3, 0.3);
+    const double gap = rng.logUniform(1e-6, 1) * std::max(size(a), size(b));
+    checker.check(place(a, b, rng.uniform(-kPi, kPi), gap));
   }
 }
 
 TEST(Distance, ThinParallelPairsMatchTheOracle) {
-  std::mt19937_64 rng(41);
+  Random rng(41);
   Checker checker("thin parallel (1e3)");
   for (int i = 0; i < 300; ++i) {
     Ellipse a, b;
-    a.radius_x = logUniform(rng, 0.5, 2);
+    a.radius_x = rng.logUniform(0.5, 2);
     a.radius_y = a.radius_x * 1e-3;
-    b.radius_x = logUniform(rng, 0.5, 2);
+    b.radius_x = rng.logUniform(0.5, 2);
     b.radius_y = b.radius_x * 1e-3;
-    a.center = {uniform(rng, -1, 1), uniform(rng, -1, 1)};
-    a.angle = uniform(rng, -kPi, kPi);
-    b.angle = i % 2 == 0 ? a.angle : a.angle + uniform(rng, -1e-3, 1e-3);
+    a.center = {rng.uniform(-1, 1), rng.uniform(-1, 1)};
+    a.angle = rng.uniform(-kPi, kPi);
+    b.angle = i % 2 == 0 ? a.angle : a.angle + rng.uniform(-1e-3, 1e-3);
     // Stacked side by side (normal along the minor axes), nearly so, or at a random angle.
     const int kind = i % 3;
     const double normal = kind == 0   ? a.angle + kPi / 2
-                          : kind == 1 ? a.angle + kPi / 2 + uniform(rng, -1e-3, 1e-3)
-                                      : uniform(rng, -kPi, kPi);
-    const double gap = logUniform(rng, 1e-6, 1) * std::max(size(a), size(b));
+                          : kind == 1 ? a.angle + kPi / 2 + rng.uniform(-1e-3, 1e-3)
+                                      : rng.uniform(-kPi, kPi);
+    const double gap = rng.logUniform(1e-6, 1) * std::max(size(a), size(b));
     checker.check(place(a, b, normal, gap));
   }
 }
 
 TEST(Distance, NearTangentPairsMatchTheOracle) {
   for (const double relative_gap : {1e-3, 1e-6}) {
-    std::mt19937_64 rng(51);
+    Random rng(51);
     char family[32];
     std::snprintf(family, sizeof family, "near tangent, gap %g", relative_gap);
     Checker checker(family);
     for (int i = 0; i < 300; ++i) {
-      const Ellipse a = randomEllipse(rng, {uniform(rng, -3, 3), uniform(rng, -3, 3)}, 0.1, 2, 1e3);
+      const Ellipse a = randomEllipse(rng, {rng.uniform(-3, 3), rng.uniform(-3, 3)}, 0.1, 2, 1e3);
       const Ellipse b = randomEllipse(rng, {0, 0}, 0.1, 2, 1e3);
       const double gap = relative_gap * std::max(size(a), size(b));
-      checker.check(place(a, b, uniform(rng, -kPi, kPi), gap));
+      checker.check(place(a, b, rng.uniform(-kPi, kPi), gap));
     }
   }
 }
 
 TEST(Distance, PairsFarFromTheOriginMatchTheOracle) {
-  std::mt19937_64 rng(61);
+  Random rng(61);
   Checker checker("1e6 m from the origin");
   for (int i = 0; i < 200; ++i) {
-    const double where = uniform(rng, -kPi, kPi);
+    const double where = rng.uniform(-kPi, kPi);
     const Eigen::Vector2d center = 1e6 * Eigen::Vector2d(std::cos(where), std::sin(where));
     const Ellipse a = randomEllipse(rng, center, 0.1, 10, 100);
     const Ellipse b = randomEllipse(rng, center, 0.1, 10, 100);
-    const double gap = logUniform(rng, 1e-3, 1) * std::max(size(a), size(b));
-    checker.check(place(a, b, uniform(rng, -kPi, kPi), gap));
+    const double gap = rng.logUniform(1e-3, 1) * std::max(size(a), size(b));
+    checker.check(place(a, b, rng.uniform(-kPi, kPi), gap));
   }
 }
 
 TEST(Distance, MixedSizesMatchTheOracle) {
-  std::mt19937_64 rng(71);
+  Random rng(71);
   Checker checker("sizes 1e-4..1e4 m");
   for (int i = 0; i < 300; ++i) {
     const Ellipse a = randomEllipse(rng, {0, 0}, 1e-4, 1e4, 1e3);
     const Ellipse b = randomEllipse(rng, {0, 0}, 1e-4, 1e4, 1e3);
-    const double gap = logUniform(rng, 1e-6, 1) * std::max(size(a), size(b));
-    checker.check(place(a, b, uniform(rng, -kPi, kPi), gap));
+    const double gap = rng.logUniform(1e-6, 1) * std::max(size(a), size(b));
+    checker.check(place(a, b, rng.uniform(-kPi, kPi), gap));
   }
 }
 
 // With angle 0 the axes are exact, so nothing limits the accuracy but the evaluation itself: the
 // gap, a tiny difference of large support values, must still come out to 1e-9.
 TEST(Distance, AxisAlignedPairsStayExactAtTinyGaps) {
-  std::mt19937_64 rng(101);
+  Random rng(101);
   Checker checker("axis aligned, gap 1e-9");
   for (int i = 0; i < 200; ++i) {
-    Ellipse a = randomEllipse(rng, {uniform(rng, -3, 3), uniform(rng, -3, 3)}, 0.1, 2, 1e3);
+    Ellipse a = randomEllipse(rng, {rng.uniform(-3, 3), rng.uniform(-3, 3)}, 0.1, 2, 1e3);
     Ellipse b = randomEllipse(rng, {0, 0}, 0.1, 2, 1e3);
     a.angle = b.angle = 0.0;
     const double gap = 1e-9 * std::max(size(a), size(b));
-    checker.check(place(a, b, uniform(rng, -kPi, kPi), gap));
+    checker.check(place(a, b, rng.uniform(-kPi, kPi), gap));
   }
 }
 
@@ -333,14 +328,14 @@ TEST(Distance, NeedlesWhoseCentreLineDoesNotSeparateThemAreSolved) {
 }
 
 TEST(Distance, OverlappingPairsAreNotSeparatedAndHaveZeroDistance) {
-  std::mt19937_64 rng(81);
+  Random rng(81);
   std::vector<std::pair<Ellipse, Ellipse>> pairs;
   for (int i = 0; i < 300; ++i) {
-    const Ellipse a = randomEllipse(rng, {uniform(rng, -3, 3), uniform(rng, -3, 3)}, 0.01, 2, 1e3);
+    const Ellipse a = randomEllipse(rng, {rng.uniform(-3, 3), rng.uniform(-3, 3)}, 0.01, 2, 1e3);
     const Ellipse b = randomEllipse(rng, {0, 0}, 0.01, 2, 1e3);
     // b's support point in -n lies inside a by `depth` along n.
-    const double depth = logUniform(rng, 1e-6, 1) * std::min(size(a), size(b)) * 1e-3;
-    pairs.emplace_back(a, place(a, b, uniform(rng, -kPi, kPi), -depth).b);
+    const double depth = rng.logUniform(1e-6, 1) * std::min(size(a), size(b)) * 1e-3;
+    pairs.emplace_back(a, place(a, b, rng.uniform(-kPi, kPi), -depth).b);
   }
   Ellipse big;
   big.radius_x = 3.0;
@@ -364,11 +359,11 @@ TEST(Distance, OverlappingPairsAreNotSeparatedAndHaveZeroDistance) {
 }
 
 TEST(Distance, SwappingTheEllipsesSwapsTheWitnessPoints) {
-  std::mt19937_64 rng(91);
+  Random rng(91);
   for (int i = 0; i < 200; ++i) {
-    const Ellipse a = randomEllipse(rng, {uniform(rng, -3, 3), uniform(rng, -3, 3)}, 0.1, 2, 1e3);
+    const Ellipse a = randomEllipse(rng, {rng.uniform(-3, 3), rng.uniform(-3, 3)}, 0.1, 2, 1e3);
     const Ellipse b = randomEllipse(rng, {0, 0}, 0.1, 2, 1e3);
-    const Built built = place(a, b, uniform(rng, -kPi, kPi), logUniform(rng, 1e-6, 1));
+    const Built built = place(a, b, rng.uniform(-kPi, kPi), rng.logUniform(1e-6, 1));
     const Clearance ab = distance(built.a, built.b);
     const Clearance ba = distance(built.b, built.a);
     ASSERT_TRUE(ab.separated && ba.separated) << describePair(built.a, built.b);

@@ -18,6 +18,7 @@
 
 #include "contact_scale_oracle.h"
 #include "ellipse_collision/ellipse_collision.h"
+#include "random_source.h"
 
 namespace ellipse_collision::core {
 namespace test {
@@ -48,16 +49,9 @@ double majorAxisAngle(const Ellipse& e) {
 }
 
 /// Seeded source of the random ellipses and placements used by the families.
-class Generator {
+class Generator : public ellipse_collision::test::RandomSource {
  public:
-  explicit Generator(std::uint64_t seed) : rng_(seed) {}
-
-  double uniform(double lo, double hi) {
-    return std::uniform_real_distribution<double>(lo, hi)(rng_);
-  }
-  double logUniform(double lo, double hi) { return std::exp(uniform(std::log(lo), std::log(hi))); }
-  bool coin(double p_true = 0.5) { return uniform(0.0, 1.0) < p_true; }
-  int index(int size) { return std::uniform_int_distribution<int>(0, size - 1)(rng_); }
+  using RandomSource::RandomSource;
 
   /// Mostly any angle in [-2 pi, 2 pi] [rad]; 10 % axis-aligned, where polygon vertices sit on
   /// tips.
@@ -107,8 +101,6 @@ class Generator {
     return {a, placeAtContactScale(a, b, t)};
   }
 
- private:
-  std::mt19937_64 rng_;
 };
 
 /// What one family measured; printed so that regressions in accuracy are visible in the log.

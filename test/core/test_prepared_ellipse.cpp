@@ -15,6 +15,7 @@
 #include "ellipse_collision/core/eigenvalue_test.h"
 #include "ellipse_collision/core/overlap.h"
 #include "ellipse_collision/core/prepared_ellipse.h"
+#include "random_source.h"
 
 namespace ellipse_collision::core {
 namespace {
@@ -26,14 +27,9 @@ struct Pair {
   Ellipse b;
 };
 
-class Random {
+class Random : public ellipse_collision::test::RandomSource {
  public:
-  explicit Random(std::uint64_t seed) : rng_(seed) {}
-  double uniform(double lo, double hi) {
-    return std::uniform_real_distribution<double>(lo, hi)(rng_);
-  }
-  double logUniform(double lo, double hi) { return std::exp(uniform(std::log(lo), std::log(hi))); }
-  bool coin() { return uniform(0.0, 1.0) < 0.5; }
+  using RandomSource::RandomSource;
 
   Ellipse ellipse(double half_width, double min_major, double max_major, double max_ratio,
                   double max_angle = kPi) {
@@ -56,8 +52,6 @@ class Random {
     return {a, test::placeAtContactScale(a, b, coin() ? 1.0 - delta : 1.0 + delta)};
   }
 
- private:
-  std::mt19937_64 rng_;
 };
 
 bool sameBits(double x, double y) { return std::memcmp(&x, &y, sizeof x) == 0; }

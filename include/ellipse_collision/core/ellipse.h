@@ -1,6 +1,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cmath>
 #include <optional>
 #include <string>
 
@@ -36,11 +37,18 @@ struct ValueViolation {
   bool must_be_positive{false};  ///< the field's rule also asks for > 0 (radii)
 };
 
+/// The rules themselves, as cheap tests (NaN fails every comparison, so each is also a finiteness
+/// test). Everything below is defined through them.
 /// A centre coordinate [m]: finite, within [-kMaxCoordinate, kMaxCoordinate].
-std::optional<ValueViolation> coordinateViolation(double value);
+inline bool coordinateOk(double value) { return value >= -kMaxCoordinate && value <= kMaxCoordinate; }
 /// A radius [m]: finite, > 0, within [kMinRadius, kMaxRadius].
-std::optional<ValueViolation> radiusViolation(double value);
+inline bool radiusOk(double value) { return value >= kMinRadius && value <= kMaxRadius; }
 /// An angle [rad]: finite.
+inline bool angleOk(double value) { return std::isfinite(value); }
+
+/// Which part of its field's rule a value breaks; nothing when it keeps it.
+std::optional<ValueViolation> coordinateViolation(double value);
+std::optional<ValueViolation> radiusViolation(double value);
 std::optional<ValueViolation> angleViolation(double value);
 
 /// Why `ellipse` cannot be checked, naming the field and its value ("radius_x = -1 must be > 0"),

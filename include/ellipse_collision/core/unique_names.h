@@ -29,31 +29,30 @@ std::optional<NameProblem> findNameProblem(const std::vector<std::string>& names
 
 namespace detail {
 
-/// Names seen so far with the index of the entry that had each.
-class NameIndex {
+/// The names seen so far, as views (no copies).
+class NameSet {
  public:
-  explicit NameIndex(std::size_t capacity);
-  /// The index `name` was first inserted with, or nothing if it is new (then it is inserted).
-  std::optional<std::size_t> insert(std::string_view name, std::size_t index);
+  explicit NameSet(std::size_t capacity);
+  /// False iff `name` was inserted before; inserts it otherwise.
+  bool insert(std::string_view name);
 
  private:
-  struct Slot {
-    std::string_view name;  ///< a null data() marks a free slot; names are non-empty
-    std::size_t index{0};
-  };
-  std::vector<Slot> slots_;
+  std::vector<std::string_view> slots_;  ///< a null data() marks a free slot; names are non-empty
 };
 
 }  // namespace detail
 
 template <class NameOf>
 std::optional<NameProblem> findNameProblem(std::size_t count, NameOf&& name_of) {
-  detail::NameIndex seen(count);
+  detail::NameSet seen(count);
   for (std::size_t i = 0; i < count; ++i) {
     const std::string_view name = name_of(i);
     if (name.empty()) return NameProblem{NameProblem::Kind::Empty, i, i};
-    if (const auto first = seen.insert(name, i)) {
-      return NameProblem{NameProblem::Kind::Duplicate, i, *first};
+    if (!seen.insert(name)) {
+      // Only on the error path: find where the name stood first.
+      std::size_t first = 0;
+      while (std::string_view(name_of(first)) != name) ++first;
+      return NameProblem{NameProblem::Kind::Duplicate, i, first};
     }
   }
   return std::nullopt;
