@@ -6,14 +6,17 @@ set(ELLIPSE_COLLISION_CORE_SOURCES
   src/core/distance.cpp
   src/core/eigenvalue_test.cpp
   src/core/ellipse.cpp
+  src/core/enclosing_ellipse.cpp
   src/core/frame_projection.cpp
   src/core/number_format.cpp
   src/core/overlap.cpp
   src/core/pair_line_parser.cpp
+  src/core/point_clusters.cpp
   src/core/polygonal_test.cpp
   src/core/prepared_ellipse.cpp
   src/core/relative_shape.cpp
   src/core/scene_check.cpp
+  src/core/shape_outline.cpp
   src/core/unique_names.cpp)
 
 set(ELLIPSE_COLLISION_APP_SOURCES

@@ -38,6 +38,13 @@ ellipse_collision_add_gtest(test_performance_core LIBRARIES ellipse_collision_co
   test/core/test_broadphase.cpp
   test/support/contact_scale_oracle.cpp)
 
+# Minimum-area enclosing ellipses (link fitting, sensor clusters) against their own oracle.
+ellipse_collision_add_gtest(test_enclosing_ellipse LIBRARIES ellipse_collision_core quadmath SOURCES
+  test/core/test_enclosing_ellipse.cpp
+  test/core/test_shape_outline.cpp
+  test/core/test_point_clusters.cpp
+  test/support/enclosing_ellipse_oracle.cpp)
+
 catkin_add_gtest(test_check_ellipses test/core/test_check_ellipses.cpp)
 target_compile_definitions(test_check_ellipses PRIVATE
   CHECK_ELLIPSES_BIN="$<TARGET_FILE:check_ellipses>")

@@ -1,0 +1,98 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "ellipse_collision/core/ellipse.h"
+
+namespace ellipse_collision::core {
+
+/// How an enclosing-ellipse computation ended.
+enum class EnclosingStatus {
+  Ok,          ///< `ellipse` is valid (see invalidReason()) and contains every point
+  Degenerate,  ///< the points span no area: see EnclosingEllipse's segment fields
+  Error,       ///< no ellipse: see `error`
+};
+
+/// Result of minimumAreaEllipse() / enclosingEllipseWithMinRadius().
+struct EnclosingEllipse {
+  EnclosingStatus status{EnclosingStatus::Error};
+
+  /// Ok: contains every input point, certified: each point's normalised quadratic form, evaluated
+  /// from the double fields with rounding accounted for, is <= 1. radius_x >= radius_y [m],
+  /// angle in (-pi/2, pi/2] [rad]. Unspecified otherwise.
+  Ellipse ellipse;
+
+  /// Degenerate: the thin description. Every point lies within `half_width` [m] of the segment
+  /// [segment_start, segment_end] [m] (equal ends for one distinct point), to rounding (about
+  /// 1e-15 of the points' extent). Grow it with enclosingEllipseWithMinRadius().
+  Eigen::Vector2d segment_start{0.0, 0.0};
+  Eigen::Vector2d segment_end{0.0, 0.0};
+  double half_width{0.0};
+
+  /// Ok from minimumAreaEllipse(): an upper bound on area(ellipse) / (minimum area) - 1 from the
+  /// optimiser's duality gap, before the few-ulp certification growth (dimensionless).
+  double area_excess_bound{0.0};
+
+  /// Error: why, naming the offending point and value ("points[3].x = nan is not finite").
+  std::string error;
+
+  bool ok() const { return status == EnclosingStatus::Ok; }
+};
+
+/// Point sets whose width (smallest extent over all directions) is at most this fraction of their
+/// extent count as collinear: below it the thin direction is set by the rounding of the input
+/// (about 1e-16 of the coordinates) more than by the data, and the optimiser's precision would
+/// fall below the promised 1e-6 in area.
+constexpr double kDegenerateRelativeWidth = 1e-9;
+
+/// The optimiser stops when its duality gap bounds the area excess by 1.5 times this.
+constexpr double kEnclosingGapTolerance = 1e-10;
+
+/// The minimum-area ellipse containing every point [m].
+///
+/// Method: translate to the bounding box's centre and scale to unit size; convex hull by Andrew's
+/// monotone chain (A. M. Andrew, "Another efficient algorithm for convex hulls in two dimensions",
+/// IPL 9(5), 1979); an affine normalisation to the hull's principal axes; then Khachiyan's dual
+/// problem (max log det of the lifted moment matrix over weights on the points) on a growing core
+/// set of hull points (Kumar–Yildirim, JOTA 126, 2005), solved by Khachiyan's algorithm with
+/// Todd–Yildirim away steps (M. J. Todd, E. A. Yildirim, "On Khachiyan's algorithm for the
+/// computation of minimum-volume enclosing ellipsoids", Discrete Applied Mathematics 155, 2007)
+/// and, where its linear rate is poor (many points on the optimal ellipse), finished by a dual
+/// interior-point Newton method, until every hull point satisfies omega_i <= 3 (1 +
+/// kEnclosingGapTolerance); a second pass in the frame where the first estimate is a circle, for
+/// full double precision on thin sets; then the certification against every input point in
+/// long double, growing both radii by the minimal factor (plus a few ulps) that puts every point
+/// inside.
+///
+/// Cost: O(n log n) for the hull of n points, O(n) for the certification, and for the optimiser
+/// at most kMaxOptimiserIterations steps of O(k) (Khachiyan) or O(k^3) (Newton) for a core of k
+/// points, plus one O(h) pass over the h hull points per core round. Measured: 2-80 us for laser
+/// clusters of 5-80 points, about 7 ms for the 16,384-point outline of a cylinder.
+///
+/// Status:
+/// - Error: no points; a coordinate not finite or outside [-kMaxCoordinate, kMaxCoordinate]; or
+///   the enclosing ellipse's radius would exceed kMaxRadius.
+/// - Degenerate: one distinct point, or all points collinear, or a width at most
+///   kDegenerateRelativeWidth of the extent or below 2 kMinRadius (the minor radius could fall
+///   below kMinRadius): the segment fields describe the points.
+/// - Ok otherwise. The area is within about 1e-9 (relative) of the minimum, plus the rounding of
+///   the centre to a double: 2 ulp(|centre|) / radius_y relative.
+EnclosingEllipse minimumAreaEllipse(const std::vector<Eigen::Vector2d>& points);
+
+/// An ellipse containing every point [m] with both radii >= `min_radius` [m], for clusters that
+/// may be one point, two points or a line (sensor returns). The minimum-area ellipse when both of
+/// its radii already reach `min_radius`; a too-small radius is raised to `min_radius` (same axes);
+/// for Degenerate sets, the ellipse along the segment with radius_y = max(min_radius,
+/// sqrt(2) half_width) and the smallest radius_x >= min_radius that contains the points. Always
+/// certified like minimumAreaEllipse(). Status Ok or Error (the errors of minimumAreaEllipse(), or
+/// `min_radius` not finite or outside [kMinRadius, kMaxRadius]); never Degenerate.
+EnclosingEllipse enclosingEllipseWithMinRadius(const std::vector<Eigen::Vector2d>& points,
+                                               double min_radius);
+
+/// Upper bound on the optimiser's steps per minimumAreaEllipse() call; reaching it still returns
+/// a certified enclosing ellipse, with a larger area_excess_bound.
+constexpr int kMaxOptimiserIterations = 20000;
+
+}  // namespace ellipse_collision::core

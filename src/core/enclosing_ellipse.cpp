@@ -1,0 +1,653 @@
+#include "ellipse_collision/core/enclosing_ellipse.h"
+
+#include <Eigen/Cholesky>
+#include <Eigen/LU>
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <utility>
+
+#include "ellipse_collision/core/number_format.h"
+
+namespace ellipse_collision::core {
+namespace {
+
+using Vec2 = Eigen::Vector2d;
+using Vec3 = Eigen::Vector3d;
+using Mat2 = Eigen::Matrix2d;
+using Mat3 = Eigen::Matrix3d;
+
+constexpr double kPi = 3.14159265358979323846;
+
+// The lifted dimension of Khachiyan's algorithm: points (x, y, 1) in R^3.
+constexpr double kLifted = 3.0;
+
+// The first pass only has to find a frame in which the ellipse is round; the second pass, in that
+// frame, goes down to kEnclosingGapTolerance.
+constexpr double kCoarseGap = 1e-3;
+
+// Points added to the core set per round at most: the peaks of the violating runs, worst first,
+// so that a round settles several contact regions while the core stays small.
+constexpr std::size_t kCoreAdditions = 16;
+
+// Recompute the moment matrix from the weights this often, so that rounding in the rank-one
+// updates cannot accumulate.
+constexpr int kRefreshInterval = 32;
+
+// Rounds of the certification; each one grows the radii past the worst point, so one suffices
+// unless rounding conspires.
+constexpr int kCertificationRounds = 8;
+
+Vec3 lift(const Vec2& p) { return {p.x(), p.y(), 1.0}; }
+
+double cross(const Vec2& o, const Vec2& a, const Vec2& b) {
+  return (a.x() - o.x()) * (b.y() - o.y()) - (a.y() - o.y()) * (b.x() - o.x());
+}
+
+bool lexicographicLess(const Vec2& a, const Vec2& b) {
+  return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
+}
+
+/// Strictly convex hull, counter-clockwise, without duplicates or collinear points; the two ends
+/// for collinear input, the point itself for one distinct point. Andrew's monotone chain,
+/// O(n log n).
+std::vector<Vec2> convexHull(std::vector<Vec2> p) {
+  std::sort(p.begin(), p.end(), lexicographicLess);
+  p.erase(std::unique(p.begin(), p.end(),
+                      [](const Vec2& a, const Vec2& b) { return a.x() == b.x() && a.y() == b.y(); }),
+          p.end());
+  if (p.size() < 3) return p;
+  std::vector<Vec2> hull(2 * p.size());
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {  // lower chain
+    while (k >= 2 && cross(hull[k - 2], hull[k - 1], p[i]) <= 0.0) --k;
+    hull[k++] = p[i];
+  }
+  for (std::size_t i = p.size() - 1, lower = k + 1; i > 0; --i) {  // upper chain
+    while (k >= lower && cross(hull[k - 2], hull[k - 1], p[i - 1]) <= 0.0) --k;
+    hull[k++] = p[i - 1];
+  }
+  hull.resize(k - 1);  // the last point repeats the first
+  return hull;
+}
+
+/// Smallest extent of a convex polygon (counter-clockwise, >= 3 vertices) over all directions,
+/// by rotating calipers: the antipodal vertex of each edge only moves forward. O(n).
+double hullWidth(const std::vector<Vec2>& hull) {
+  const std::size_t n = hull.size();
+  double width = std::numeric_limits<double>::infinity();
+  std::size_t j = 1;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec2& a = hull[i];
+    const Vec2& b = hull[(i + 1) % n];
+    const double length = (b - a).norm();
+    if (!(length > 0.0)) continue;
+    // Bounded by n steps so that rounding can never make it circle.
+    for (std::size_t step = 0; step < n && cross(a, b, hull[(j + 1) % n]) > cross(a, b, hull[j]);
+         ++step) {
+      j = (j + 1) % n;
+    }
+    width = std::min(width, cross(a, b, hull[j]) / length);
+  }
+  return width;
+}
+
+/// An affine map x -> origin + linear * x, composed as the frames below are nested.
+struct Affine {
+  Vec2 origin{0.0, 0.0};
+  Mat2 linear{Mat2::Identity()};
+  double det{1.0};  ///< det(linear), kept as a product of well-conditioned factors
+
+  Vec2 apply(const Vec2& x) const { return origin + linear * x; }
+  /// this o inner.
+  Affine then(const Affine& inner) const {
+    return {apply(inner.origin), linear * inner.linear, det * inner.det};
+  }
+};
+
+/// The weights of Khachiyan's dual problem, max log det X(u), X(u) = sum u_i q_i q_i^T over the
+/// lifted points q_i = (p_i, 1), sum u_i = 1, u >= 0, restricted to a core set of indices.
+///
+/// On the core, Khachiyan's algorithm with Todd–Yildirim away steps runs first: cheap steps that
+/// converge fast on most sets. When the optimal weights are not unique (many points on the
+/// optimal ellipse, as on co-circular sets) its linear rate can be poor; then a dual interior-
+/// point method finishes: Newton steps on log det X(u) + mu sum log u_i subject to sum u_i = 1,
+/// with mu driven to gap / core size, each step a Cholesky solve of the k x k Hessian (k the
+/// core size, which stays small: the core only gains the peak violator of each region).
+class WeightSolver {
+ public:
+  explicit WeightSolver(std::size_t size) : u_(size, 0.0), in_core_(size, 0) {}
+
+  void addToCore(std::size_t i) {
+    if (in_core_[i]) return;
+    in_core_[i] = 1;
+    core_.push_back(i);
+  }
+  void spreadUniformlyOverCore() {
+    for (const std::size_t i : core_) u_[i] = 1.0 / static_cast<double>(core_.size());
+  }
+  const std::vector<double>& weights() const { return u_; }
+
+  /// Runs until every point satisfies omega_i <= 3 (1 + gap) (or the step budget is spent);
+  /// returns the achieved max omega_i / 3 - 1 over all points. `points` are the vertices of a
+  /// convex polygon in order.
+  double solve(const std::vector<Vec2>& points, double gap) {
+    for (;;) {
+      if (!solveCoreByKhachiyan(points, gap)) solveCoreByInteriorPoint(points, gap);
+      const Mat3 inverse = moment(points).inverse();
+      omega_.resize(points.size());
+      double worst = 0.0;
+      for (std::size_t i = 0; i < points.size(); ++i) {
+        const Vec3 q = lift(points[i]);
+        omega_[i] = q.dot(inverse * q);
+        worst = std::max(worst, omega_[i]);
+      }
+      // The points are the hull's vertices in order, so the violators come in runs around each
+      // place where the ellipse is too small; only each run's peak joins the core (a dense
+      // polygon would otherwise fill the core with neighbours of one contact point).
+      std::vector<std::pair<double, std::size_t>> violators;
+      const std::size_t n = points.size();
+      for (std::size_t i = 0; i < n; ++i) {
+        const double before = omega_[(i + n - 1) % n], after = omega_[(i + 1) % n];
+        if (!in_core_[i] && omega_[i] > kLifted * (1.0 + gap) && omega_[i] > before &&
+            omega_[i] >= after) {
+          violators.emplace_back(omega_[i], i);
+        }
+      }
+      if (violators.empty()) {  // a run of equal values without a strict peak: take them all
+        for (std::size_t i = 0; i < n; ++i) {
+          if (!in_core_[i] && omega_[i] > kLifted * (1.0 + gap)) violators.emplace_back(omega_[i], i);
+        }
+      }
+      if (violators.empty() || steps_ >= kMaxOptimiserIterations) return worst / kLifted - 1.0;
+      const std::size_t count = std::min(kCoreAdditions, violators.size());
+      std::partial_sort(violators.begin(), violators.begin() + count, violators.end(),
+                        [](const auto& a, const auto& b) { return a.first > b.first; });
+      for (std::size_t k = 0; k < count; ++k) addToCore(violators[k].second);
+    }
+  }
+
+ private:
+  Mat3 moment(const std::vector<Vec2>& points) const {
+    Mat3 x = Mat3::Zero();
+    for (const std::size_t i : core_) {
+      if (u_[i] > 0.0) {
+        const Vec3 q = lift(points[i]);
+        x.noalias() += u_[i] * q * q.transpose();
+      }
+    }
+    return x;
+  }
+
+  /// Todd–Yildirim: move weight towards the core point with the largest omega, or away from the
+  /// weighted one with the smallest, whichever is further from optimality, by the step that
+  /// maximises log det X exactly. True when the core is optimal to `gap` within
+  /// kKhachiyanSteps steps.
+  bool solveCoreByKhachiyan(const std::vector<Vec2>& points, double gap) {
+    Mat3 x = moment(points);
+    int since_refresh = 0;
+    for (int round = 0; round < kKhachiyanSteps && steps_ < kMaxOptimiserIterations; ++round) {
+      ++steps_;
+      const Mat3 inverse = x.inverse();
+      std::size_t up = core_.front(), down = core_.front();
+      double omega_up = -1.0, omega_down = std::numeric_limits<double>::infinity();
+      for (const std::size_t i : core_) {
+        const Vec3 q = lift(points[i]);
+        const double omega = q.dot(inverse * q);
+        if (omega > omega_up) omega_up = omega, up = i;
+        if (u_[i] > 0.0 && omega < omega_down) omega_down = omega, down = i;
+      }
+      const double gap_up = omega_up / kLifted - 1.0;
+      const double gap_down = 1.0 - omega_down / kLifted;
+      if (gap_up <= gap && gap_down <= gap) return true;
+
+      std::size_t index;
+      double step;  // u <- (1 - step) u + step e_index; negative for an away step
+      bool drop = false;
+      if (gap_up > gap_down) {
+        index = up;
+        step = (omega_up - kLifted) / (kLifted * (omega_up - 1.0));
+      } else {
+        index = down;
+        const double limit = -u_[down] / (1.0 - u_[down]);  // takes u_down to exactly 0
+        step = omega_down > 1.0 ? (omega_down - kLifted) / (kLifted * (omega_down - 1.0)) : limit;
+        if (step <= limit) step = limit, drop = true;
+      }
+      for (const std::size_t i : core_) u_[i] *= 1.0 - step;
+      u_[index] = drop ? 0.0 : u_[index] + step;
+      const Vec3 q = lift(points[index]);
+      x = (1.0 - step) * x + step * q * q.transpose();
+      if (drop || ++since_refresh == kRefreshInterval) {
+        normaliseWeights();
+        x = moment(points);
+        since_refresh = 0;
+      }
+    }
+    return false;
+  }
+
+  void normaliseWeights() {
+    double sum = 0.0;
+    for (const std::size_t i : core_) sum += u_[i];
+    for (const std::size_t i : core_) u_[i] /= sum;
+  }
+
+  /// log det X(v) + mu sum log v_i for core weights `v` (rows of `q` the lifted core points),
+  /// or -inf outside the domain.
+  static double barrier(const Eigen::MatrixXd& q, const Eigen::VectorXd& v, double mu) {
+    if (v.minCoeff() <= 0.0) return -std::numeric_limits<double>::infinity();
+    Mat3 x = Mat3::Zero();
+    for (Eigen::Index i = 0; i < q.rows(); ++i) {
+      x.noalias() += v[i] * q.row(i).transpose() * q.row(i);
+    }
+    const double det = x.determinant();
+    if (!(det > 0.0)) return -std::numeric_limits<double>::infinity();
+    return std::log(det) + mu * v.array().log().sum();
+  }
+
+  void solveCoreByInteriorPoint(const std::vector<Vec2>& points, double gap) {
+    const Eigen::Index k = static_cast<Eigen::Index>(core_.size());
+    const double size = static_cast<double>(k);
+    normaliseWeights();
+    Eigen::MatrixXd q(k, 3);
+    for (Eigen::Index i = 0; i < k; ++i) q.row(i) = lift(points[core_[i]]).transpose();
+    // Warm start: mu from the current gap (omega_i <= 3 + k mu on the central path), weights
+    // moved off the simplex's faces by about mu (where inactive weights sit on the path).
+    const Mat3 start_inverse = moment(points).inverse();
+    double worst = 0.0;
+    for (Eigen::Index i = 0; i < k; ++i) {
+      worst = std::max(worst, q.row(i).dot(start_inverse * q.row(i).transpose()));
+    }
+    // Stop at mu with k mu / 3 = gap / 10: the margin absorbs the inexact centring.
+    const double final_mu = 0.3 * gap / size;
+    double mu = std::clamp(3.0 * (worst / kLifted - 1.0) / size, final_mu, 1e-2 / size);
+    Eigen::VectorXd v(k);
+    for (Eigen::Index i = 0; i < k; ++i) v[i] = u_[core_[i]] + mu;
+    v /= v.sum();
+
+    // Newton on max f(v) = log det X(v) + mu sum log v_i subject to sum v_i = 1: with
+    // M = G o G + diag(mu / v^2) (G_ij = q_i^T X^-1 q_j, o the elementwise product), positive
+    // definite, the step is d = M^-1 grad - nu M^-1 1 with nu making sum d_i = 0.
+    Eigen::MatrixXd qi(3, k), g(k, k), m(k, k);
+    Eigen::VectorXd grad(k), a(k), b(k), d(k), md(k), trial(k);
+    const Eigen::VectorXd ones = Eigen::VectorXd::Ones(k);
+    Eigen::LLT<Eigen::MatrixXd> llt(k);
+    for (;; mu = std::max(mu * kMuReduction, final_mu)) {
+      for (int newton = 0; newton < kNewtonStepsPerStage && steps_ < kMaxOptimiserIterations;
+           ++newton) {
+        ++steps_;
+        Mat3 x = Mat3::Zero();
+        for (Eigen::Index i = 0; i < k; ++i) x.noalias() += v[i] * q.row(i).transpose() * q.row(i);
+        qi.noalias() = x.inverse() * q.transpose();
+        g.noalias() = q * qi;
+        m = g.cwiseAbs2();
+        m.diagonal().array() += mu / v.array().square();
+        grad = g.diagonal().array() + mu / v.array();
+        llt.compute(m);
+        if (llt.info() != Eigen::Success) break;
+        a = llt.solve(grad);
+        b = llt.solve(ones);
+        d = a - (a.sum() / b.sum()) * b;
+        md.noalias() = m * d;
+        const double ascent = d.dot(md);  // the squared Newton decrement, = grad . d
+        // Intermediate stages only need rough centring; the last one must bring the spread of
+        // omega well below the gap, which a decrement relative to mu does not ensure when every
+        // weight is large (then the barrier term hardly curves f).
+        const double tolerance = mu <= final_mu ? kFinalCentring * gap * gap : kCentringTolerance * mu;
+        if (!(ascent > tolerance)) break;
+        double alpha = 1.0;
+        for (Eigen::Index i = 0; i < k; ++i) {
+          if (d[i] < 0.0) alpha = std::min(alpha, -0.95 * v[i] / d[i]);
+        }
+        // -f / mu is self-concordant with Newton decrement^2 = ascent / mu: below 1/16 the full
+        // step is safe and converges quadratically, so no line search on f, whose changes there
+        // drown in its rounding.
+        if (ascent > kFullStepDecrement * mu) {
+          const double f0 = barrier(q, v, mu);
+          int halvings = 0;
+          for (;; alpha *= 0.5) {
+            trial = v + alpha * d;
+            if (barrier(q, trial, mu) >= f0 + 0.25 * alpha * ascent || ++halvings > kMaxHalvings) {
+              break;
+            }
+          }
+          if (halvings > kMaxHalvings) break;  // rounding floor
+        } else {
+          trial = v + alpha * d;
+        }
+        v = trial / trial.sum();
+      }
+      if (mu <= final_mu || steps_ >= kMaxOptimiserIterations) break;
+    }
+    for (Eigen::Index i = 0; i < k; ++i) u_[core_[i]] = v[i];
+  }
+
+  // Khachiyan steps per core round before the interior-point method takes over: enough for the
+  // sets where its linear rate is good, few enough not to waste time where it is not.
+  static constexpr int kKhachiyanSteps = 100;
+  static constexpr double kMuReduction = 0.1;
+  static constexpr int kNewtonStepsPerStage = 50;
+  // Newton stops when the decrement of f / mu is below this: centred far more closely than the
+  // stage's gap needs.
+  static constexpr double kCentringTolerance = 1e-3;
+  // ... and in the last stage below this times gap^2.
+  static constexpr double kFinalCentring = 1e-4;
+  static constexpr int kMaxHalvings = 60;
+  static constexpr double kFullStepDecrement = 1.0 / 16.0;
+
+  std::vector<double> u_;
+  std::vector<double> omega_;
+  std::vector<char> in_core_;
+  std::vector<std::size_t> core_;
+  int steps_{0};
+};
+
+/// Weighted centre and covariance of the points under `u`.
+std::pair<Vec2, Mat2> weightedMoments(const std::vector<Vec2>& points, const std::vector<double>& u) {
+  Vec2 c = Vec2::Zero();
+  for (std::size_t i = 0; i < points.size(); ++i) c += u[i] * points[i];
+  Mat2 s = Mat2::Zero();
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (u[i] > 0.0) {
+      const Vec2 d = points[i] - c;
+      s.noalias() += u[i] * d * d.transpose();
+    }
+  }
+  return {c, s};
+}
+
+/// Lower-triangular L with L L^T = s (s symmetric positive definite).
+Mat2 cholesky(const Mat2& s) {
+  const double l00 = std::sqrt(s(0, 0));
+  const double l10 = s(1, 0) / l00;
+  const double l11 = std::sqrt(std::max(s(1, 1) - l10 * l10, 0.0));
+  Mat2 l;
+  l << l00, 0.0, l10, l11;
+  return l;
+}
+
+/// The frame in which the weighted points have centre 0 and covariance I: z -> c + L w.
+Affine whiteningFrame(const std::vector<Vec2>& points, const std::vector<double>& u) {
+  const auto [c, s] = weightedMoments(points, u);
+  const Mat2 l = cholesky(s);
+  return {c, l, l(0, 0) * l(1, 1)};
+}
+
+std::vector<Vec2> intoFrame(const Affine& frame, const std::vector<Vec2>& points) {
+  const Mat2 inverse = frame.linear.inverse();
+  std::vector<Vec2> out;
+  out.reserve(points.size());
+  for (const Vec2& p : points) out.push_back(inverse * (p - frame.origin));
+  return out;
+}
+
+/// The frame of the points' principal axes, scaled to their extents along them: z -> origin +
+/// R(phi) diag(ex, ey) z. Makes thin sets round enough for the first pass.
+Affine principalFrame(const std::vector<Vec2>& points) {
+  Vec2 mean = Vec2::Zero();
+  for (const Vec2& p : points) mean += p;
+  mean /= static_cast<double>(points.size());
+  Mat2 s = Mat2::Zero();
+  for (const Vec2& p : points) s.noalias() += (p - mean) * (p - mean).transpose();
+  const double phi = 0.5 * std::atan2(2.0 * s(0, 1), s(0, 0) - s(1, 1));
+  const double c = std::cos(phi), sn = std::sin(phi);
+  double ex = 0.0, ey = 0.0;
+  for (const Vec2& p : points) {
+    const Vec2 d = p - mean;
+    ex = std::max(ex, std::abs(c * d.x() + sn * d.y()));
+    ey = std::max(ey, std::abs(-sn * d.x() + c * d.y()));
+  }
+  Mat2 linear;
+  linear << c * ex, -sn * ey, sn * ex, c * ey;
+  return {mean, linear, ex * ey};
+}
+
+/// Initial core set: the extreme points along eight directions, and the point farthest from the
+/// line through the first two, so that the moment matrix is invertible.
+void seedCore(const std::vector<Vec2>& points, WeightSolver& solver) {
+  std::vector<std::size_t> chosen;
+  for (int k = 0; k < 8; ++k) {
+    const Vec2 direction{std::cos(k * kPi / 4.0), std::sin(k * kPi / 4.0)};
+    std::size_t best = 0;
+    for (std::size_t i = 1; i < points.size(); ++i) {
+      if (points[i].dot(direction) > points[best].dot(direction)) best = i;
+    }
+    chosen.push_back(best);
+  }
+  const Vec2 a = points[chosen[0]], b = points[chosen[4]];
+  std::size_t far = 0;
+  for (std::size_t i = 1; i < points.size(); ++i) {
+    if (std::abs(cross(a, b, points[i])) > std::abs(cross(a, b, points[far]))) far = i;
+  }
+  chosen.push_back(far);
+  for (const std::size_t i : chosen) solver.addToCore(i);
+  solver.spreadUniformlyOverCore();
+}
+
+/// Radii and angle of {centre + m y : |y| <= 1}, given det(m) as an accurate product: the major
+/// radius from the largest eigenvalue of m m^T, the minor one as |det| / major (no cancellation
+/// for thin ellipses), the angle from the eigenvector.
+Ellipse ellipseFromMap(const Vec2& centre, const Mat2& m, double det) {
+  const Mat2 s = m * m.transpose();
+  const double half_sum = 0.5 * (s(0, 0) + s(1, 1));
+  const double half_diff = 0.5 * (s(0, 0) - s(1, 1));
+  const double major = std::sqrt(half_sum + std::hypot(half_diff, s(0, 1)));
+  Ellipse e;
+  e.center = centre;
+  e.radius_x = major;
+  e.radius_y = std::abs(det) / major;
+  double angle = 0.5 * std::atan2(s(0, 1), half_diff);
+  if (angle <= -0.5 * kPi) angle += kPi;  // keep (-pi/2, pi/2]
+  e.angle = angle;
+  return e;
+}
+
+/// The largest normalised quadratic form ((p - c) in the ellipse's axes, divided by the radii,
+/// squared and summed) over the points, in long double.
+long double largestQuadraticForm(const Ellipse& e, const std::vector<Vec2>& points) {
+  const long double c = std::cos(static_cast<long double>(e.angle));
+  const long double s = std::sin(static_cast<long double>(e.angle));
+  const long double rx = e.radius_x, ry = e.radius_y;
+  long double worst = 0.0L;
+  for (const Vec2& p : points) {
+    const long double dx = static_cast<long double>(p.x()) - e.center.x();
+    const long double dy = static_cast<long double>(p.y()) - e.center.y();
+    const long double along = (c * dx + s * dy) / rx;
+    const long double across = (c * dy - s * dx) / ry;
+    worst = std::max(worst, along * along + across * across);
+  }
+  return worst;
+}
+
+double roundedUp(long double value) {
+  const double d = static_cast<double>(value);
+  return d < value ? std::nextafter(d, std::numeric_limits<double>::infinity()) : d;
+}
+
+/// Grows both radii by the smallest factor (plus a few ulps) that puts every point inside, as
+/// evaluated from the double fields: the long double evaluation's rounding (at most a few
+/// long double epsilons times the axis ratio, from the cancellation in the rotation) is kept as a
+/// margin below 1. Returns false if that did not succeed (a non-finite radius).
+bool certify(Ellipse& e, const std::vector<Vec2>& points) {
+  const long double eps = std::numeric_limits<long double>::epsilon();
+  for (int round = 0; round < kCertificationRounds; ++round) {
+    if (!std::isfinite(e.radius_x) || !std::isfinite(e.radius_y)) return false;
+    const long double ratio = std::max(e.radius_x / e.radius_y, e.radius_y / e.radius_x);
+    const long double limit = 1.0L - 64.0L * eps * (1.0L + ratio);
+    const long double worst = largestQuadraticForm(e, points);
+    if (worst <= limit) return true;
+    const long double factor = std::sqrt(worst / limit) * (1.0L + 4.0L * DBL_EPSILON);
+    e.radius_x = roundedUp(e.radius_x * factor);
+    e.radius_y = roundedUp(e.radius_y * factor);
+  }
+  return false;
+}
+
+std::string validationError(const std::vector<Vec2>& points) {
+  if (points.empty()) return "points is empty";
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    for (int axis = 0; axis < 2; ++axis) {
+      if (auto violation = coordinateViolation(points[i][axis])) {
+        const std::string head = "points[" + std::to_string(i) + "]." + (axis == 0 ? "x" : "y") +
+                                 " = " + formatNumber(violation->value);
+        if (violation->rule == ValueViolation::Rule::Finite) return head + " is not finite";
+        return head + " is outside [" + formatNumber(violation->min) + ", " +
+               formatNumber(violation->max) + "] m";
+      }
+    }
+  }
+  return {};
+}
+
+EnclosingEllipse errorResult(std::string message) {
+  EnclosingEllipse result;
+  result.status = EnclosingStatus::Error;
+  result.error = std::move(message);
+  return result;
+}
+
+/// The Degenerate description: the segment between the extreme projections on the direction
+/// from the lexicographically first to the last point (the ends of a collinear set), and the
+/// largest distance from that line.
+EnclosingEllipse degenerateResult(const std::vector<Vec2>& points) {
+  const auto [first, last] = std::minmax_element(points.begin(), points.end(), lexicographicLess);
+  const Vec2 a = *first;
+  Vec2 direction = *last - a;
+  const double length = direction.norm();
+  direction = length > 0.0 ? Vec2(direction / length) : Vec2(1.0, 0.0);
+  const long double ux = direction.x(), uy = direction.y();
+  long double lo = 0.0L, hi = 0.0L, width = 0.0L, extent = 0.0L;
+  for (const Vec2& p : points) {
+    const long double dx = static_cast<long double>(p.x()) - a.x();
+    const long double dy = static_cast<long double>(p.y()) - a.y();
+    const long double along = ux * dx + uy * dy;
+    lo = std::min(lo, along);
+    hi = std::max(hi, along);
+    width = std::max(width, std::abs(ux * dy - uy * dx));
+    extent = std::max(extent, std::abs(dx) + std::abs(dy));
+  }
+  EnclosingEllipse result;
+  result.status = EnclosingStatus::Degenerate;
+  result.segment_start = a + static_cast<double>(lo) * direction;
+  result.segment_end = a + static_cast<double>(hi) * direction;
+  // The rounding of the ends and of the unit direction, a few ulps of the extent.
+  result.half_width = roundedUp(width + 8.0L * DBL_EPSILON * extent);
+  return result;
+}
+
+std::string outOfRange(const Ellipse& e) {
+  const std::string reason = invalidReason(e);
+  return reason.empty() ? reason : "the enclosing ellipse is out of range: " + reason;
+}
+
+}  // namespace
+
+EnclosingEllipse minimumAreaEllipse(const std::vector<Eigen::Vector2d>& points) {
+  if (std::string error = validationError(points); !error.empty()) return errorResult(error);
+
+  // Unit frame: the bounding box's centre and half-extent, so that 1e6 offsets and 1e-4 sizes
+  // look alike to the optimiser.
+  Vec2 low = points.front(), high = points.front();
+  for (const Vec2& p : points) low = low.cwiseMin(p), high = high.cwiseMax(p);
+  Affine unit;
+  unit.origin = 0.5 * (low + high);
+  const double scale = 0.5 * (high - low).maxCoeff();
+  if (!(scale > 0.0)) return degenerateResult(points);
+  unit.linear = scale * Mat2::Identity();
+  unit.det = scale * scale;
+
+  const std::vector<Vec2> hull = convexHull(intoFrame(unit, points));
+  if (hull.size() < 3) return degenerateResult(points);
+  const double width = hullWidth(hull);  // in units of `scale`; the extent is 2 to 2.8
+  if (width <= 2.0 * kDegenerateRelativeWidth || width * scale < 2.0 * kMinRadius) {
+    return degenerateResult(points);
+  }
+
+  // First pass in the principal-axes frame, second in the frame where the first estimate is
+  // round. The weights are affine-invariant, so the second pass continues from the first.
+  const Affine principal = principalFrame(hull);
+  const std::vector<Vec2> z = intoFrame(principal, hull);
+  WeightSolver solver(hull.size());
+  seedCore(z, solver);
+  solver.solve(z, kCoarseGap);
+  const Affine round = whiteningFrame(z, solver.weights());
+  const std::vector<Vec2> w = intoFrame(round, z);
+  const double gap = solver.solve(w, kEnclosingGapTolerance);
+
+  // The ellipse {c + sqrt(r) L y}, L L^T the weighted covariance, r the largest Mahalanobis
+  // radius over the hull: it contains every hull point by construction.
+  const auto [centre, covariance] = weightedMoments(w, solver.weights());
+  const Mat2 inverse = covariance.inverse();
+  double reach = 0.0;
+  for (const Vec2& p : w) reach = std::max(reach, (p - centre).dot(inverse * (p - centre)));
+  const Mat2 l = cholesky(covariance);
+  const double root = std::sqrt(reach);
+  const Affine fitted{centre, root * l, reach * l(0, 0) * l(1, 1)};
+
+  const Affine total = unit.then(principal).then(round).then(fitted);
+  EnclosingEllipse result;
+  result.status = EnclosingStatus::Ok;
+  result.ellipse = ellipseFromMap(total.origin, total.linear, total.det);
+  // area = pi sqrt(det S) reach with det S <= det S* (dual optimality) and reach <= 2 + 3 gap.
+  result.area_excess_bound = std::max(0.0, 1.5 * gap);
+  if (!certify(result.ellipse, points)) {
+    return errorResult("the enclosing ellipse could not be certified (radius_x = " +
+                       formatNumber(result.ellipse.radius_x) + ")");
+  }
+  if (std::string error = outOfRange(result.ellipse); !error.empty()) return errorResult(error);
+  return result;
+}
+
+EnclosingEllipse enclosingEllipseWithMinRadius(const std::vector<Eigen::Vector2d>& points,
+                                               double min_radius) {
+  if (auto violation = radiusViolation(min_radius)) {
+    const std::string head = "min_radius = " + formatNumber(min_radius);
+    if (violation->rule == ValueViolation::Rule::Finite) return errorResult(head + " is not finite");
+    if (violation->rule == ValueViolation::Rule::Positive) return errorResult(head + " must be > 0");
+    return errorResult(head + " is outside [" + formatNumber(violation->min) + ", " +
+                       formatNumber(violation->max) + "] m");
+  }
+  EnclosingEllipse result = minimumAreaEllipse(points);
+  if (result.status == EnclosingStatus::Error) return result;
+  if (result.status == EnclosingStatus::Ok) {
+    // A larger radius on the same axes gives an ellipse containing the old one.
+    result.ellipse.radius_x = std::max(result.ellipse.radius_x, min_radius);
+    result.ellipse.radius_y = std::max(result.ellipse.radius_y, min_radius);
+    if (result.ellipse.radius_y > result.ellipse.radius_x) {
+      std::swap(result.ellipse.radius_x, result.ellipse.radius_y);
+      result.ellipse.angle += result.ellipse.angle > 0.0 ? -0.5 * kPi : 0.5 * kPi;
+    }
+  } else {
+    // The box of half-sizes (h, w) around the segment lies in the ellipse of radii (a, b) when
+    // h^2 / a^2 + w^2 / b^2 <= 1; b >= sqrt(2) w keeps a <= sqrt(2) h.
+    const Vec2 along = result.segment_end - result.segment_start;
+    const double half_length = 0.5 * along.norm();
+    const double w = result.half_width;
+    const double b = std::max(min_radius, std::sqrt(2.0) * w);
+    const double a = std::max(min_radius, half_length / std::sqrt(1.0 - (w / b) * (w / b)));
+    Ellipse e;
+    e.center = 0.5 * (result.segment_start + result.segment_end);
+    e.angle = half_length > 0.0 ? std::atan2(along.y(), along.x()) : 0.0;
+    if (e.angle > 0.5 * kPi) e.angle -= kPi;
+    if (e.angle <= -0.5 * kPi) e.angle += kPi;
+    e.radius_x = a;
+    e.radius_y = b;
+    if (b > a) {
+      std::swap(e.radius_x, e.radius_y);
+      e.angle += e.angle > 0.0 ? -0.5 * kPi : 0.5 * kPi;
+    }
+    result = EnclosingEllipse{};
+    result.status = EnclosingStatus::Ok;
+    result.ellipse = e;
+  }
+  if (!certify(result.ellipse, points)) {
+    return errorResult("the enclosing ellipse could not be certified (radius_x = " +
+                       formatNumber(result.ellipse.radius_x) + ")");
+  }
+  if (std::string error = outOfRange(result.ellipse); !error.empty()) return errorResult(error);
+  return result;
+}
+
+}  // namespace ellipse_collision::core
