@@ -44,9 +44,22 @@ work="$(mktemp -d /var/tmp/ellipse_collision_fresh.XXXXXX)"
 root="${work}/root"
 mounts=()  # mount points inside the root, in the order they were mounted
 
+# Every process still running inside the root (a test or the demo that outlived its stop): killed
+# before the mounts go, so nothing keeps running on the host with its root deleted.
+kill_root_processes() {
+  local proc pid
+  for proc in /proc/[0-9]*; do
+    pid="${proc#/proc/}"
+    [[ "$(readlink "${proc}/root" 2>/dev/null)" == "${root}"* ]] || continue
+    echo "fresh_machine.sh: killing $(tr '\0' ' ' < "${proc}/cmdline" 2>/dev/null | head -c 120) (pid ${pid}), left running in the root" >&2
+    kill -KILL "${pid}" 2>/dev/null || true
+  done
+}
+
 cleanup() {
   local status=$?
   local i
+  kill_root_processes
   for ((i = ${#mounts[@]} - 1; i >= 0; i--)); do
     umount -R "${mounts[i]}" 2>/dev/null || umount -lR "${mounts[i]}" 2>/dev/null || true
   done
