@@ -35,6 +35,11 @@ ellipse_collision_add_benchmark(bench_scene_check bench/bench_scene_check.cpp)
 # distance() beside FCL's distance query, accuracy against the quad rim oracle.
 ellipse_collision_add_benchmark(bench_distance bench/bench_distance.cpp LIBRARIES fcl)
 
+# First contact under translation beside FCL's continuousCollide and sampling overlap() at 100
+# steps, misclassifications and time errors against the quad oracle.
+ellipse_collision_add_benchmark(bench_first_contact bench/bench_first_contact.cpp
+  test/support/first_contact_oracle.cpp LIBRARIES fcl)
+
 # Service round trip: a ROS client of the running node, a plain main (not Google Benchmark);
 # scripts/benchmark.sh starts a roscore and the node for it.
 add_executable(bench_service_roundtrip bench/bench_service_roundtrip.cpp)

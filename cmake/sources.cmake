@@ -7,7 +7,9 @@ set(ELLIPSE_COLLISION_CORE_SOURCES
   src/core/eigenvalue_test.cpp
   src/core/ellipse.cpp
   src/core/enclosing_ellipse.cpp
+  src/core/first_contact.cpp
   src/core/frame_projection.cpp
+  src/core/motion_line_parser.cpp
   src/core/number_format.cpp
   src/core/overlap.cpp
   src/core/pair_line_parser.cpp

@@ -23,6 +23,7 @@ ellipse_collision_add_gtest(test_core LIBRARIES ellipse_collision_core quadmath 
   test/core/test_polygonal_test.cpp
   test/core/test_overlap_accuracy.cpp
   test/core/test_pair_line_parser.cpp
+  test/core/test_motion_line_parser.cpp
   test/core/test_unique_names.cpp
   test/support/contact_scale_oracle.cpp)
 ellipse_collision_add_gtest(test_scene_core LIBRARIES ellipse_collision_core SOURCES
@@ -37,6 +38,11 @@ ellipse_collision_add_gtest(test_performance_core LIBRARIES ellipse_collision_co
   test/core/test_prepared_ellipse.cpp
   test/core/test_broadphase.cpp
   test/support/contact_scale_oracle.cpp)
+
+# First time of contact of moving ellipses against the quad-precision oracle.
+ellipse_collision_add_gtest(test_first_contact LIBRARIES ellipse_collision_core quadmath SOURCES
+  test/core/test_first_contact.cpp
+  test/support/first_contact_oracle.cpp)
 
 # Minimum-area enclosing ellipses (link fitting, sensor clusters) against their own oracle.
 ellipse_collision_add_gtest(test_enclosing_ellipse LIBRARIES ellipse_collision_core quadmath SOURCES

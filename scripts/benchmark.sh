@@ -31,7 +31,7 @@ out="${repo}/build/benchmark"
 mkdir -p "${out}"
 echo "Building the benchmarks (log: build/benchmark/build.txt)"
 if ! bash "${repo}/scripts/build.sh" -DELLIPSE_COLLISION_BENCHMARKS=ON bench_pair_tests \
-    bench_scene_check bench_distance bench_service_roundtrip ellipse_collision_node > "${out}/build.txt" 2>&1; then
+    bench_scene_check bench_distance bench_first_contact bench_service_roundtrip ellipse_collision_node > "${out}/build.txt" 2>&1; then
   cat "${out}/build.txt" >&2
   exit 1
 fi
@@ -40,6 +40,7 @@ if "${smoke}"; then
   pair_args=(--pairs_per_mix=64 --benchmark_min_time=0.01)
   scene_args=(--benchmark_min_time=0.01)
   distance_args=(--benchmark_min_time=0.01)
+  contact_args=(--pairs=64 --benchmark_min_time=0.01)
   roundtrip_calls=200
 else
   repeat=(--benchmark_repetitions=5 --benchmark_enable_random_interleaving=true
@@ -47,6 +48,7 @@ else
   pair_args=(--pairs_per_mix=2000 --benchmark_min_time=0.3 "${repeat[@]}")
   scene_args=(--benchmark_min_time=0.3 "${repeat[@]}")
   distance_args=(--benchmark_min_time=0.3 "${repeat[@]}")
+  contact_args=(--pairs=2000 --benchmark_min_time=0.3 "${repeat[@]}")
   roundtrip_calls=10000
 fi
 
@@ -75,6 +77,13 @@ echo
 echo "Running bench_distance (ns per pair; max/median relative error against the oracle)"
 run bench_distance "${distance_args[@]}"
 grep -E '^(Benchmark|BM_)' "${out}/bench_distance.txt" | grep -vE '_(mean|stddev|cv)( |$)' || true
+
+# ---- firstContact() beside FCL's continuousCollide and sampling, against the quad oracle --------
+echo
+echo "Running bench_first_contact (us per pair; misclassifications and time errors against the oracle)"
+run bench_first_contact "${contact_args[@]}"
+grep -vE '_(mean|stddev|cv)( |$)|^(Run on|CPU|  L[123]|Load Average|\*\*\*)' "${out}/bench_first_contact.txt" \
+  | grep -v '^-*$' || true
 
 # ---- service round trip (issue 7) ---------------------------------------------------------------
 # Started here, stopped by the EXIT trap whatever ends the script: the node first, then roscore

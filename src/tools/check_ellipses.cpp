@@ -10,6 +10,8 @@
 #include <string_view>
 #include <vector>
 
+#include "ellipse_collision/core/first_contact.h"
+#include "ellipse_collision/core/motion_line_parser.h"
 #include "ellipse_collision/ellipse_collision.h"
 
 namespace {
@@ -17,7 +19,10 @@ namespace {
 using ellipse_collision::core::PairLine;
 
 constexpr const char* kUsage =
-    "usage: check_ellipses [--help] < pairs.txt\n"
+    "usage: check_ellipses [--help] [--motion] < pairs.txt\n"
+    "With --motion, lines are `cx1 cy1 rx1 ry1 angle1 vx1 vy1 w1 cx2 cy2 rx2 ry2 angle2 vx2 vy2 w2\n"
+    "horizon` (velocities m/s, angular velocities rad/s about the centre, horizon s) and the answer\n"
+    "is `contact T` (T the first contact time, 17 significant digits) or `clear`.\n"
     "\n"
     "Reads one pair of 2D ellipses per line from standard input:\n"
     "  cx1 cy1 rx1 ry1 angle1 cx2 cy2 rx2 ry2 angle2\n"
@@ -122,7 +127,18 @@ void appendError(std::string& out, unsigned long long line_number, const std::st
   out += '\n';
 }
 
-int run() {
+// One --motion line: `contact T` (T the first contact time [s], 17 significant digits) or `clear`.
+void appendMotion(std::string& out, const ellipse_collision::core::MotionLine& m) {
+  const ellipse_collision::core::FirstContact c = ellipse_collision::core::firstContact(
+      m.first, m.first_motion, m.second, m.second_motion, m.horizon);
+  if (c.contact) {
+    appendResult(out, "contact", c.time);
+  } else {
+    out += "clear\n";
+  }
+}
+
+int run(bool motion) {
   std::ios::sync_with_stdio(false);
   std::cin.tie(nullptr);
 
@@ -139,6 +155,14 @@ int run() {
       appendError(out, line_number,
                   "line is longer than " + std::to_string(kMaxLineBytes) + " bytes");
       any_bad = true;
+    } else if (motion) {
+      const auto parsed = ellipse_collision::core::parseMotionLine(line);
+      if (parsed.kind == ellipse_collision::core::MotionLine::Kind::Error) {
+        appendError(out, line_number, parsed.error);
+        any_bad = true;
+      } else if (parsed.kind == ellipse_collision::core::MotionLine::Kind::Motion) {
+        appendMotion(out, parsed);
+      }
     } else {
       const PairLine parsed = ellipse_collision::core::parsePairLine(line);
       switch (parsed.kind) {
@@ -177,8 +201,13 @@ int run() {
 }  // namespace
 
 int main(int argc, char** argv) {
+  bool motion = false;
   for (int i = 1; i < argc; ++i) {
     const std::string_view arg = argv[i];
+    if (arg == "--motion") {
+      motion = true;
+      continue;
+    }
     if (arg == "--help" || arg == "-h") {
       std::cout << kUsage;
       return 0;
@@ -187,7 +216,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   try {
-    return run();
+    return run(motion);
   } catch (const std::exception& e) {
     // e.g. std::bad_alloc: report it rather than abort without a word.
     std::cerr << "check_ellipses: " << e.what() << "\n";

@@ -487,3 +487,28 @@ int main(int argc, char** argv) {
   testing::InitGoogleTest(&argc, argv);
   return RUN_ALL_TESTS();
 }
+
+// ------------------------------------------------------------------------------ --motion
+
+// Unit circles 4 m apart closing at 2 m/s touch when the gap of 2 m is gone: t = 1 s, by hand.
+// Circles moving apart, or too slow to close the gap within the horizon, stay clear.
+TEST(CheckEllipses, MotionLinesAnswerFirstContactTimeOrClear) {
+  const RunResult run = runTool({"--motion"},
+                                "# cx cy rx ry angle vx vy w (twice), horizon\n"
+                                "0 0 1 1 0  1 0 0  4 0 1 1 0  -1 0 0  10\n"
+                                "0 0 1 1 0  -1 0 0  4 0 1 1 0  1 0 0  10\n"
+                                "0 0 1 1 0  0.1 0 0  4 0 1 1 0  0 0 0  10\n"
+                                "0 0 1 1 0  0 0 0  1 0 1 1 0  0 0 0  5\n"
+                                "0 0 1 1 0 0 0 0 3 0 1 1 0 0 0 0 -4\n"
+                                "0 0 1 1 0 0 0 0 3 0 1 1 0 0 0\n");
+  EXPECT_EQ(run.exit_status, 1);
+  const std::vector<std::string> lines = splitLines(run.out);
+  ASSERT_EQ(lines.size(), 6u) << run.out;
+  ASSERT_EQ(lines[0].rfind("contact ", 0), 0u) << lines[0];
+  EXPECT_NEAR(std::stod(lines[0].substr(8)), 1.0, 1e-12);
+  EXPECT_EQ(lines[1], "clear");
+  EXPECT_EQ(lines[2], "clear");  // 0.1 m/s closes 1 m of the 2 m gap in 10 s
+  EXPECT_EQ(lines[3], "contact 0");  // overlapping at t = 0
+  EXPECT_EQ(lines[4], "error 6: horizon = -4 must be >= 0");
+  EXPECT_EQ(lines[5].rfind("error 7: ", 0), 0u) << lines[5];
+}

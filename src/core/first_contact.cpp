@@ -1,0 +1,274 @@
+#include "ellipse_collision/core/first_contact.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <tuple>
+#include <utility>
+
+#include "ellipse_collision/core/distance.h"
+#include "ellipse_collision/core/eigenvalue_test.h"
+#include "ellipse_collision/core/number_format.h"
+#include "ellipse_collision/core/overlap.h"
+
+namespace ellipse_collision::core {
+namespace {
+
+// ---- translation ----------------------------------------------------------------------------
+// With both shapes fixed, b - a is the centred Minkowski sum K = A + B, and the pair overlaps at t
+// iff the gauge of K at the relative offset p(t) = p0 + w t is <= 1 (Perram & Wertheim 1985;
+// Gilitschenski & Hanebeck 2012: this gauge is the contact scale t*). A gauge is convex and p(t)
+// is affine, so g(t) = contactScale(t) is convex in t. For a convex g the line through two samples
+// t_{k-1} < t_k lies below g beyond t_k, so the secant step from two samples left of the first
+// root lands left of it again: the iteration approaches the root monotonically from the left
+// (never late), superlinearly for a transversal crossing. It starts where the bounding circles
+// first meet (no contact before) with one step the gauge's Lipschitz bound makes safe. A rise of g
+// beyond its rounding, or a secant root beyond the horizon, proves g > 1 on the rest of the
+// horizon (clear). Where the secant stalls (grazing: linear convergence; or differences within
+// rounding) a golden-section search for the minimum of the convex g and a bisection of the first
+// crossing decide, neither needing a slope.
+constexpr int kMaxSecantSteps = 60;
+constexpr int kMaxGoldenSteps = 90;
+constexpr int kMaxBisections = 80;
+// Relative error of contactScale() we allow for: ~1e-15 for round shapes, measured up to ~3e-13 for
+// thin ones near tangency (the tests only claim 1e-9). Differences of g below 4x this are noise.
+constexpr double kScaleRounding = 2.5e-12;
+
+// ---- rotation ---------------------------------------------------------------------------------
+// Conservative advancement (Mirtich 1996; Zhang, Lee, Kim, Manocha 2006) on the exact distance.
+// Why it cannot step past a contact: by the support-function dual (distance.h)
+//   D(t) = max over unit u of  u . p(t) - h_a(u, t) - h_b(u, t)   (clipped at 0),
+// and for an ellipse of semi-axes R >= r turning at w, |dh/dt| = |w| |dh/dphi| <= |w| (R - r)
+// (the largest distance from the centre to a normal line of the ellipse is R - r), while
+// |d(u . p)/dt| <= |v_b - v_a|. A maximum of functions with that Lipschitz constant has it too, so
+//   |D'(t)| <= V = |v_b - v_a| + |w_a| (R_a - r_a) + |w_b| (R_b - r_b)
+// and no contact happens in [t, t + D(t) / V). (A spinning circle adds nothing: it sweeps no
+// area.) Stepping by slightly less than D / V therefore never passes the first contact. When D
+// drops below kGrazeDistance of r_a + r_b the contact scale is within kGrazeDistance of 1 (K
+// contains the disc of radius r_a + r_b, so t* <= 1 + D / (r_a + r_b)): inside the 1e-9 band
+// where either answer is accepted, and the pair is reported in contact at that certified-safe
+// time. The step count is capped (kMaxAdvancements); at the cap the pair is reported in contact at
+// the last certified-safe time, never clear. Near grazing the steps shrink with the distance (about
+// sqrt(size / gap) of them), so a rotating pair that passes within ~1e-8 relative of touching can
+// reach the cap and is then reported, conservatively, in contact.
+constexpr int kMaxAdvancements = 20000;  // ~40 ms of distance() calls at most (2 us each)
+constexpr double kGrazeDistance = 5e-10;
+constexpr double kStepShrink = 1.0 - 1e-9;
+
+// Everything in the frame of a's centre, so that centres 1e6 m out lose no precision.
+struct RelativePair {
+  Ellipse a;  // centred at the origin
+  Ellipse b;  // centred at p0
+  Eigen::Vector2d w;  // v_b - v_a [m/s]
+  double wa, wb;      // angular velocities [rad/s]
+
+  Ellipse aAt(double t) const {
+    Ellipse e = a;
+    e.angle = a.angle + wa * t;
+    return e;
+  }
+  Ellipse bAt(double t) const {
+    Ellipse e = b;
+    e.center = b.center + w * t;
+    e.angle = b.angle + wb * t;
+    return e;
+  }
+};
+
+double scaleAt(const RelativePair& p, double t) { return contactScale(p.a, p.bAt(t)); }
+
+FirstContact contactAt(double t) { return {true, t}; }
+
+// First t in [lo, hi] with g(t) <= 1, given g(lo) > 1 and g(hi) <= 1; returns the right end of the
+// final bracket (g <= 1 there, within kScaleRounding-level of the crossing).
+double bisectCrossing(const RelativePair& p, double lo, double hi) {
+  for (int i = 0; i < kMaxBisections && hi - lo > 0.0; ++i) {
+    const double mid = lo + 0.5 * (hi - lo);
+    if (mid <= lo || mid >= hi) break;
+    (scaleAt(p, mid) <= 1.0 ? hi : lo) = mid;
+  }
+  return hi;
+}
+
+FirstContact translationContact(const RelativePair& p, double horizon) {
+  const double speed = std::hypot(p.w.x(), p.w.y());  // hypot: no underflow for tiny w
+  if (!(speed > 0.0)) return {};  // same velocity: the t = 0 answer holds throughout
+  // Bounding circles first: before the relative centre comes within R_a + R_b (enlarged against
+  // rounding) no contact is possible, and a path that never does is clear without any gauge.
+  // Distances along and across the path are formed from p0 directly (absolute rounding ~eps |p0|,
+  // covered by `slack`).
+  const Eigen::Vector2d& p0 = p.b.center;
+  const double slack = 4e-15 * p0.norm();
+  const double outer = (boundingRadius(p.a) + boundingRadius(p.b)) * (1.0 + 1e-9) + slack;
+  // The unit direction of w from w scaled by a power of two (exact), so that a tiny or subnormal
+  // relative velocity keeps its full precision.
+  const double w_max = std::max(std::fabs(p.w.x()), std::fabs(p.w.y()));
+  const Eigen::Vector2d dir = (p.w * std::ldexp(1.0, -std::ilogb(w_max))).normalized();
+  const double across = std::fabs(p0.x() * dir.y() - p0.y() * dir.x());
+  if (across > outer) return {};  // the line stays outside the circle of radius `outer`
+  const double along = -p0.dot(dir);  // [m] to the point of the line nearest the origin
+  const double half_chord = std::sqrt((outer - across) * (outer + across));
+  if ((along + half_chord + slack) / speed < 0.0) return {};  // moving away
+  const double enter = (along - half_chord - slack) / speed;  // [s], certified early
+  if (enter > horizon) return {};
+  double t_prev = std::max(0.0, enter);
+  double g_prev = scaleAt(p, t_prev);
+  if (g_prev <= 1.0) return contactAt(t_prev);  // at t = 0: overlap() and contactScale() disagree by rounding
+  // First step: the gauge of K is Lipschitz with constant 1 / (r_a + r_b) (K contains the disc of
+  // that radius), so g'(t) >= -speed / (r_a + r_b) and this step cannot pass the root.
+  const double inradius = inscribedRadius(p.a) + inscribedRadius(p.b);
+  double t = t_prev + (g_prev - 1.0) * (inradius / speed) * kStepShrink;
+  if (t > horizon) return {};
+  double g = scaleAt(p, t);
+  if (g <= 1.0) return contactAt(t);
+  for (int step = 0; step < kMaxSecantSteps; ++step) {
+    // Differences within the rounding of contactScale() prove nothing: then the search for the
+    // minimum below decides (it needs no slope).
+    const double noise = 4.0 * kScaleRounding * std::max(g, g_prev);
+    if (g - g_prev > noise) return {};  // g increasing from t on (convex): it stays > 1
+    if (g_prev - g <= noise) break;
+    const double slope = (g - g_prev) / (t - t_prev);
+    const double advance = (g - 1.0) / -slope;
+    const double next = t + advance;
+    if (next > horizon) return {};  // the secant (a lower bound of g) stays > 1 up to the horizon
+    if (advance <= 1e-15 * horizon || g - 1.0 <= kScaleRounding * g) return contactAt(next);
+    const double g_next = scaleAt(p, next);
+    if (g_next <= 1.0) return contactAt(next);  // landed on the root within rounding
+    t_prev = t, g_prev = g;
+    t = next, g = g_next;
+  }
+  // Grazing: golden section for the minimum of the convex g on [t, horizon]; all t' < t are
+  // certified clear already.
+  constexpr double kInvPhi = 0.6180339887498949;
+  double lo = t, hi = horizon;
+  double x1 = hi - kInvPhi * (hi - lo), x2 = lo + kInvPhi * (hi - lo);
+  double g1 = scaleAt(p, x1), g2 = scaleAt(p, x2);
+  for (int i = 0; i < kMaxGoldenSteps; ++i) {
+    if (g1 <= 1.0) return contactAt(bisectCrossing(p, lo, x1));
+    if (g2 <= 1.0) return contactAt(bisectCrossing(p, lo, x2));
+    if (g1 <= g2) {
+      hi = x2, x2 = x1, g2 = g1;
+      x1 = hi - kInvPhi * (hi - lo);
+      g1 = scaleAt(p, x1);
+    } else {
+      lo = x1, x1 = x2, g1 = g2;
+      x2 = lo + kInvPhi * (hi - lo);
+      g2 = scaleAt(p, x2);
+    }
+    if (!(hi - lo > 1e-15 * horizon)) break;
+  }
+  if (g1 <= 1.0) return contactAt(bisectCrossing(p, t, x1));
+  if (g2 <= 1.0) return contactAt(bisectCrossing(p, t, x2));
+  const double g_end = scaleAt(p, horizon);
+  if (g_end <= 1.0) return contactAt(bisectCrossing(p, t, horizon));
+  return {};
+}
+
+FirstContact rotationContact(const RelativePair& p, double horizon) {
+  // Rounding of R - r is harmless: it is exact (Sterbenz) when r >= R / 2, and tiny against R.
+  const double approach_speed =
+      std::hypot(p.w.x(), p.w.y()) + std::fabs(p.wa) * (boundingRadius(p.a) - inscribedRadius(p.a)) +
+      std::fabs(p.wb) * (boundingRadius(p.b) - inscribedRadius(p.b));
+  if (!(approach_speed > 0.0)) return {};
+  const double graze = kGrazeDistance * (inscribedRadius(p.a) + inscribedRadius(p.b));
+  double t = 0.0;
+  for (int i = 0; i < kMaxAdvancements; ++i) {
+    const Clearance c = distance(p.aAt(t), p.bAt(t));
+    if (!c.separated) return contactAt(t);
+    if (c.distance <= graze) return contactAt(t);  // within the band around tangency
+    // Shrunk a little against the ~1e-16 relative rounding of the distance and of t + step.
+    const double step = c.distance * kStepShrink / approach_speed;
+    const double next = t + step;
+    if (next > horizon) {
+      // [t, horizon] is certified clear unless the horizon itself touches: the last interval is
+      // shortened to end exactly at the horizon and checked there.
+      if (t == horizon) return {};
+      t = horizon;
+      continue;
+    }
+    if (!(next > t)) return contactAt(t);  // step below the resolution of t: certified safe here
+    t = next;
+  }
+  return contactAt(t);  // iteration cap: no contact before t is certified, claim contact at t
+}
+
+// A total order on (ellipse, motion): the pair is always processed in this order, which makes
+// firstContact exactly symmetric.
+auto orderKey(const Ellipse& e, const Motion& m) {
+  return std::make_tuple(e.center.x(), e.center.y(), e.radius_x, e.radius_y, e.angle,
+                         m.velocity.x(), m.velocity.y(), m.angular_velocity);
+}
+
+std::string motionReason(const Motion& m, double horizon) {
+  const char* const names[2] = {"velocity.x", "velocity.y"};
+  for (int i = 0; i < 2; ++i) {
+    const double v = m.velocity[i];
+    if (!std::isfinite(v)) return std::string(names[i]) + " = " + formatNumber(v) + " must be finite";
+    if (std::fabs(v) > kMaxSpeed) {
+      return std::string(names[i]) + " = " + formatNumber(v) + " is outside [" +
+             formatNumber(-kMaxSpeed) + ", " + formatNumber(kMaxSpeed) + "] m/s";
+    }
+  }
+  const double w = m.angular_velocity;
+  if (!std::isfinite(w)) return "angular_velocity = " + formatNumber(w) + " must be finite";
+  if (std::fabs(w) > kMaxAngularVelocity) {
+    return "angular_velocity = " + formatNumber(w) + " is outside [" +
+           formatNumber(-kMaxAngularVelocity) + ", " + formatNumber(kMaxAngularVelocity) +
+           "] rad/s";
+  }
+  if (std::fabs(w) * horizon > kMaxTurn) {
+    return "angular_velocity = " + formatNumber(w) + " turns more than " + formatNumber(kMaxTurn) +
+           " rad within horizon = " + formatNumber(horizon) + " s";
+  }
+  return {};
+}
+
+std::string pathReason(const Ellipse& e, const Motion& m, double horizon) {
+  const char* const names[2] = {"center.x", "center.y"};
+  for (int i = 0; i < 2; ++i) {
+    const double end = e.center[i] + m.velocity[i] * horizon;
+    if (!coordinateOk(end)) {
+      return std::string(names[i]) + " at the horizon = " + formatNumber(end) + " is outside [" +
+             formatNumber(-kMaxCoordinate) + ", " + formatNumber(kMaxCoordinate) + "] m";
+    }
+  }
+  return {};
+}
+
+}  // namespace
+
+std::string invalidMotionReason(const Ellipse& a, const Motion& motion_a, const Ellipse& b,
+                                const Motion& motion_b, double horizon) {
+  if (std::string r = invalidReason(a); !r.empty()) return "ellipse 1: " + r;
+  if (std::string r = invalidReason(b); !r.empty()) return "ellipse 2: " + r;
+  if (!std::isfinite(horizon)) return "horizon = " + formatNumber(horizon) + " must be finite";
+  if (horizon < 0.0) return "horizon = " + formatNumber(horizon) + " must be >= 0";
+  if (std::string r = motionReason(motion_a, horizon); !r.empty()) return "motion 1: " + r;
+  if (std::string r = motionReason(motion_b, horizon); !r.empty()) return "motion 2: " + r;
+  if (std::string r = pathReason(a, motion_a, horizon); !r.empty()) return "motion 1: " + r;
+  if (std::string r = pathReason(b, motion_b, horizon); !r.empty()) return "motion 2: " + r;
+  return {};
+}
+
+FirstContact firstContact(const Ellipse& a, const Motion& motion_a, const Ellipse& b,
+                          const Motion& motion_b, double horizon) {
+  if (orderKey(b, motion_b) < orderKey(a, motion_a)) {
+    return firstContact(b, motion_b, a, motion_a, horizon);
+  }
+  if (overlap(a, b)) return contactAt(0.0);
+  if (!(horizon > 0.0)) return {};
+  RelativePair p{a, b, motion_b.velocity - motion_a.velocity, motion_a.angular_velocity,
+                 motion_b.angular_velocity};
+  p.a.center = Eigen::Vector2d::Zero();
+  p.b.center = b.center - a.center;
+  // A spinning circle sweeps nothing: such pairs translate, and the exact method applies.
+  const bool a_turns = p.wa != 0.0 && p.a.radius_x != p.a.radius_y;
+  const bool b_turns = p.wb != 0.0 && p.b.radius_x != p.b.radius_y;
+  if (!a_turns && !b_turns) {
+    p.wa = p.wb = 0.0;
+    return translationContact(p, horizon);
+  }
+  return rotationContact(p, horizon);
+}
+
+}  // namespace ellipse_collision::core

@@ -1,0 +1,187 @@
+#include "first_contact_oracle.h"
+
+#include <quadmath.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace ellipse_collision::core {
+namespace test {
+namespace {
+
+using quad = __float128;
+
+inline void sinCos(quad x, quad* s, quad* c) { sincosq(x, s, c); }
+inline void sinCos(long double x, long double* s, long double* c) { *s = sinl(x), *c = cosl(x); }
+inline quad root(quad x) { return sqrtq(x); }
+inline long double root(long double x) { return sqrtl(x); }
+inline quad absolute(quad x) { return fabsq(x); }
+inline long double absolute(long double x) { return fabsl(x); }
+template <typename T> T pi() { return static_cast<T>(acosq(static_cast<quad>(-1))); }
+
+// A centred ellipse by its axis directions and squared radii.
+template <typename T>
+struct Shape {
+  T c, s, rx2, ry2;
+  // h(u) and the support point s(u) = (rx^2 (u.ex) ex + ry^2 (u.ey) ey) / h(u).
+  void support(T ux, T uy, T* px, T* py, T* h) const {
+    const T ax = c * ux + s * uy, ay = c * uy - s * ux;
+    *h = root(rx2 * ax * ax + ry2 * ay * ay);
+    const T fx = rx2 * ax / *h, fy = ry2 * ay / *h;
+    *px = c * fx - s * fy;
+    *py = s * fx + c * fy;
+  }
+};
+
+template <typename T>
+Shape<T> shapeAt(const Ellipse& e, const Motion& m, T t) {
+  T s, c;
+  sinCos(static_cast<T>(e.angle) + static_cast<T>(m.angular_velocity) * t, &s, &c);
+  const T rx = e.radius_x, ry = e.radius_y;
+  return {c, s, rx * rx, ry * ry};
+}
+
+template <typename T>
+struct Sum {
+  Shape<T> a, b;
+  // The boundary point k(phi) of K = A + B with outer normal (cos phi, sin phi), and h_K.
+  void at(T phi, T* kx, T* ky, T* h) const {
+    T s, c;
+    sinCos(phi, &s, &c);
+    T ax, ay, ha, bx, by, hb;
+    a.support(c, s, &ax, &ay, &ha);
+    b.support(c, s, &bx, &by, &hb);
+    *kx = ax + bx, *ky = ay + by, *h = ha + hb;
+  }
+  // The phi in [lo, hi] where m . k(phi) - level changes sign (it increases from lo to hi).
+  T crossing(T lo, T hi, T mx, T my, T level) const {
+    for (int i = 0; i < 160; ++i) {
+      const T mid = (lo + hi) / 2;
+      if (!(mid > lo && mid < hi)) break;
+      T kx, ky, h;
+      at(mid, &kx, &ky, &h);
+      (mx * kx + my * ky - level < 0 ? lo : hi) = mid;
+    }
+    return (lo + hi) / 2;
+  }
+  // Gauge of K at p.
+  T gauge(T px, T py) const {
+    const T norm = root(px * px + py * py);
+    if (norm == 0) return 0;
+    const T mx = -py / norm, my = px / norm;  // m = rot90(p^)
+    const T phi_m = atan2l(static_cast<long double>(my), static_cast<long double>(mx));
+    // On [phi_m - pi, phi_m] the normal turns from -m through p^ to m: m . k increases through 0.
+    const T phi = crossing(phi_m - pi<T>(), phi_m, mx, my, 0);
+    T kx, ky, h;
+    at(phi, &kx, &ky, &h);
+    return norm * norm / (px * kx + py * ky);
+  }
+};
+
+template <typename T>
+Sum<T> sumAt(const Ellipse& a, const Motion& ma, const Ellipse& b, const Motion& mb, T t) {
+  return {shapeAt(a, ma, t), shapeAt(b, mb, t)};
+}
+
+template <typename T>
+T gaugeAt(const Ellipse& a, const Motion& ma, const Ellipse& b, const Motion& mb, T t) {
+  const T px = (static_cast<T>(b.center.x()) - a.center.x()) +
+               (static_cast<T>(mb.velocity.x()) - ma.velocity.x()) * t;
+  const T py = (static_cast<T>(b.center.y()) - a.center.y()) +
+               (static_cast<T>(mb.velocity.y()) - ma.velocity.y()) * t;
+  return sumAt(a, ma, b, mb, t).gauge(px, py);
+}
+
+OracleFirstContact translation(const Ellipse& a, const Motion& ma, const Ellipse& b,
+                               const Motion& mb, quad horizon) {
+  OracleFirstContact r;
+  const Sum<quad> k = sumAt<quad>(a, ma, b, mb, 0);
+  const quad px = static_cast<quad>(b.center.x()) - a.center.x();
+  const quad py = static_cast<quad>(b.center.y()) - a.center.y();
+  const quad wx = static_cast<quad>(mb.velocity.x()) - ma.velocity.x();
+  const quad wy = static_cast<quad>(mb.velocity.y()) - ma.velocity.y();
+  const quad g0 = k.gauge(px, py);
+  if (g0 <= 1) return {true, 0, g0};
+  const quad w2 = wx * wx + wy * wy;
+  if (w2 == 0) return {false, 0, g0};
+  const quad wn = sqrtq(w2);
+  const quad nx = -wy / wn, ny = wx / wn;
+  const quad sigma = nx * px + ny * py;  // the line is {x : n . x = sigma}
+  const quad phi_n = atan2q(ny, nx);
+  quad kx, ky, hn;
+  k.at(phi_n, &kx, &ky, &hn);
+  const quad s_line = fabsq(sigma) / hn;
+  // Tangency point of s_line K with the line, and its time.
+  quad qx, qy, hq;
+  k.at(sigma >= 0 ? phi_n : phi_n + pi<quad>(), &qx, &qy, &hq);
+  const quad t_min = ((s_line * qx - px) * wx + (s_line * qy - py) * wy) / w2;
+  if (t_min >= 0 && t_min <= horizon) {
+    r.min_scale = s_line;
+  } else if (t_min < 0) {
+    r.min_scale = g0;
+  } else {
+    r.min_scale = gaugeAt<quad>(a, ma, b, mb, horizon);
+  }
+  if (s_line >= 1) return {false, 0, r.min_scale};
+  // Entry and exit: on [phi_n - pi, phi_n] n . k increases from -h to h, on [phi_n, phi_n + pi]
+  // it decreases (cross with the negated normal).
+  const quad phi1 = k.crossing(phi_n - pi<quad>(), phi_n, nx, ny, sigma);
+  const quad phi2 = k.crossing(phi_n, phi_n + pi<quad>(), -nx, -ny, -sigma);
+  quad t_first = 0;
+  bool first = true;
+  for (quad phi : {phi1, phi2}) {
+    k.at(phi, &kx, &ky, &hn);
+    const quad t = ((kx - px) * wx + (ky - py) * wy) / w2;
+    if (first || t < t_first) t_first = t;
+    first = false;
+  }
+  if (t_first < 0 || t_first > horizon) return {false, 0, r.min_scale};
+  return {true, t_first, r.min_scale};
+}
+
+OracleFirstContact rotation(const Ellipse& a, const Motion& ma, const Ellipse& b,
+                            const Motion& mb, double horizon, int samples) {
+  using ld = long double;
+  ld prev_t = 0;
+  const ld g0 = gaugeAt<ld>(a, ma, b, mb, 0);
+  quad g0q = gaugeAt<quad>(a, ma, b, mb, 0);
+  if (g0q <= 1) return {true, 0, g0q};
+  ld min_scale = g0;
+  for (int i = 1; i <= samples; ++i) {
+    const ld t = static_cast<ld>(horizon) * i / samples;
+    const ld g = gaugeAt<ld>(a, ma, b, mb, t);
+    min_scale = std::min(min_scale, g);
+    if (g <= 1) {
+      quad lo = prev_t, hi = t;
+      if (gaugeAt<quad>(a, ma, b, mb, hi) > 1) {  // long double rounding: keep scanning
+        prev_t = t;
+        continue;
+      }
+      for (int k = 0; k < 120; ++k) {
+        const quad mid = (lo + hi) / 2;
+        if (!(mid > lo && mid < hi)) break;
+        (gaugeAt<quad>(a, ma, b, mb, mid) <= 1 ? hi : lo) = mid;
+      }
+      return {true, hi, static_cast<quad>(min_scale)};
+    }
+    prev_t = t;
+  }
+  return {false, 0, static_cast<quad>(min_scale)};
+}
+
+}  // namespace
+
+quad oracleScaleAt(const Ellipse& a, const Motion& ma, const Ellipse& b, const Motion& mb, quad t) {
+  return gaugeAt<quad>(a, ma, b, mb, t);
+}
+
+OracleFirstContact oracleFirstContact(const Ellipse& a, const Motion& ma, const Ellipse& b,
+                                      const Motion& mb, double horizon, int rotation_samples) {
+  if (ma.angular_velocity == 0 && mb.angular_velocity == 0) {
+    return translation(a, ma, b, mb, horizon);
+  }
+  return rotation(a, ma, b, mb, horizon, rotation_samples);
+}
+
+}  // namespace test
+}  // namespace ellipse_collision::core
