@@ -21,4 +21,5 @@ set(ELLIPSE_COLLISION_APP_SOURCES
   src/app/ellipse_registry.cpp
   src/app/ellipse_spec.cpp
   src/app/field_error.cpp
-  src/app/scene_placement.cpp)
+  src/app/scene_placement.cpp
+  src/app/transform_lookup.cpp)

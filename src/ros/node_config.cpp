@@ -92,6 +92,14 @@ double readInRange(const XmlRpcValue& value, const std::string& where, const std
   return number;
 }
 
+/// A whole number within [1, max] (YAML `100000` is an int; 1e5 as a double is accepted if whole).
+double readWhole(const XmlRpcValue& value, const std::string& where, const std::string& key,
+                 double max) {
+  const double number = readInRange(value, where, key, 1.0, max);
+  if (number != std::floor(number)) fail(where, key, "a whole number", core::formatNumber(number));
+  return number;
+}
+
 std::string readFrame(const XmlRpcValue& value, const std::string& where, const std::string& key) {
   const std::string frame = readString(value, where, key);
   if (frame.empty()) fail(where, key, "a non-empty tf frame id", "''");
@@ -200,15 +208,18 @@ NodeConfig parseNodeConfig(const XmlRpcValue& params) {
                       describeValue(root));
   }
 
-  const std::set<std::string> known = {"fixed_frame",   "rate",           "tf_timeout",
-                                       "padding",       "links",          "obstacles",
-                                       "allowed_pairs", "self_collision", "warning_distance"};
+  const std::set<std::string> known = {
+      "fixed_frame",    "rate",             "tf_timeout",        "padding",
+      "links",          "obstacles",        "allowed_pairs",     "self_collision",
+      "warning_distance", "max_transform_age", "obstacle_timeout", "max_obstacles",
+      "max_name_length"};
   if (root.getType() == XmlRpcValue::TypeStruct) {
     for (auto it = root.begin(); it != root.end(); ++it) {
       if (!known.count(it->first)) {
         throw ConfigError("parameter ~" + it->first +
                           ": unknown key (expected one of fixed_frame, rate, tf_timeout, padding, "
-                          "links, obstacles, allowed_pairs, self_collision, warning_distance)");
+                          "links, obstacles, allowed_pairs, self_collision, warning_distance, "
+                          "max_transform_age, obstacle_timeout, max_obstacles, max_name_length)");
       }
     }
   }
@@ -239,6 +250,22 @@ NodeConfig parseNodeConfig(const XmlRpcValue& params) {
   if (has("warning_distance")) {
     config.warning_distance_m = readNonNegative(root["warning_distance"],
                                                 "parameter ~warning_distance", "warning_distance");
+  }
+  if (has("max_transform_age")) {
+    config.max_transform_age_s = readInRange(root["max_transform_age"], "parameter ~max_transform_age",
+                                             "max_transform_age", 0.0, kMaxTfTimeoutS);
+  }
+  if (has("obstacle_timeout")) {
+    config.obstacle_timeout_s = readInRange(root["obstacle_timeout"], "parameter ~obstacle_timeout",
+                                            "obstacle_timeout", 0.0, kMaxTfTimeoutS);
+  }
+  if (has("max_obstacles")) {
+    config.limits.max_obstacles = static_cast<std::size_t>(readWhole(
+        root["max_obstacles"], "parameter ~max_obstacles", "max_obstacles", kMaxObstaclesLimit));
+  }
+  if (has("max_name_length")) {
+    config.limits.max_name_length = static_cast<std::size_t>(readWhole(
+        root["max_name_length"], "parameter ~max_name_length", "max_name_length", kMaxNameLengthLimit));
   }
   if (!has("links")) {
     throw ConfigError(
