@@ -149,6 +149,28 @@ std::string EllipseRegistry::replaceTopicObstacles(const std::vector<EllipseSpec
   return {};
 }
 
+StoredObstacles EllipseRegistry::runtimeObstacles() const {
+  StoredObstacles stored;
+  for (const auto& named : entries_) {
+    if (named.second.source == EllipseSource::ServiceObstacle) stored.service.push_back(named.second.spec);
+    if (named.second.source == EllipseSource::TopicObstacle) stored.topic.push_back(named.second.spec);
+  }
+  stored.topic_stamp_s = topic_stamp_s_;
+  return stored;
+}
+
+std::string EllipseRegistry::restore(const StoredObstacles& stored) {
+  const std::map<std::string, StoredEllipse> before = entries_;
+  const double stamp_before = topic_stamp_s_;
+  std::string error = addObstacles(stored.service, "service obstacles");
+  if (error.empty()) error = replaceTopicObstacles(stored.topic, "topic obstacles", stored.topic_stamp_s);
+  if (!error.empty()) {
+    entries_ = before;
+    topic_stamp_s_ = stamp_before;
+  }
+  return error;
+}
+
 std::size_t EllipseRegistry::dropExpiredTopicObstacles(double now_s, double timeout_s) {
   if (timeout_s <= 0.0 || now_s - topic_stamp_s_ <= timeout_s) return 0;
   std::size_t dropped = 0;

@@ -8,6 +8,7 @@
 #include <set>
 #include <sstream>
 
+#include "ellipse_collision/app/obstacle_store.h"
 #include "ellipse_collision/core/number_format.h"
 #include "ellipse_collision/ros/conversions.h"
 #include "ellipse_collision/ros/tf_lookup.h"
@@ -46,6 +47,9 @@ CollisionNode::CollisionNode(const ros::NodeHandle& nh, const ros::NodeHandle& p
       registry_(config_.links, config_.obstacles, config_.limits),
       tf_buffer_(),
       tf_listener_(tf_buffer_) {
+  obstacle_store_ = config_.obstacle_store ? *config_.obstacle_store
+                                           : defaultObstacleStore(ros::this_node::getName());
+  restoreObstacles();
   collisions_pub_ = private_nh_.advertise<CollisionState>("collisions", 1, /*latch=*/true);
   markers_pub_ = private_nh_.advertise<visualization_msgs::MarkerArray>(
       "markers", 1,
@@ -77,6 +81,53 @@ CollisionNode::CollisionNode(const ros::NodeHandle& nh, const ros::NodeHandle& p
                           : std::string()));
 }
 
+void CollisionNode::restoreObstacles() {
+  if (obstacle_store_.empty()) return;
+  ros::param::get("/run_id", session_);
+  std::string text, error;
+  bool missing = false;
+  if (!app::readWholeFile(obstacle_store_, text, missing, error)) {
+    if (!missing) {
+      ROS_ERROR_STREAM("ellipse_collision: obstacle store unreadable, starting without it: " << error);
+    }
+    return;
+  }
+  app::StoredObstacles stored;
+  error = app::parseObstacles(text, stored);
+  if (!error.empty()) {
+    ROS_ERROR_STREAM("ellipse_collision: obstacle store '" << obstacle_store_
+                     << "' is corrupt, starting without it: " << error);
+    return;
+  }
+  if (stored.session != session_) {
+    ROS_INFO_STREAM("ellipse_collision: obstacle store '" << obstacle_store_ << "' is from another launch (run_id '"
+                    << stored.session << "'), not restored");
+    return;
+  }
+  error = registry_.restore(stored);
+  if (!error.empty()) {
+    ROS_ERROR_STREAM("ellipse_collision: obstacle store '" << obstacle_store_
+                     << "' does not fit the configuration, starting without it: " << error);
+    return;
+  }
+  ROS_WARN_STREAM("ellipse_collision: restarted: restored " << stored.service.size()
+                  << " service obstacle(s) and " << stored.topic.size()
+                  << " topic obstacle(s) from '" << obstacle_store_ << "'");
+}
+
+std::string CollisionNode::persistObstacles() {
+  if (obstacle_store_.empty()) return {};
+  app::StoredObstacles stored = registry_.runtimeObstacles();
+  stored.session = session_;
+  std::string error = app::makeParentDirectories(obstacle_store_);
+  if (error.empty()) error = app::writeFileAtomically(obstacle_store_, app::serializeObstacles(stored));
+  last_store_error_ = error;
+  if (!error.empty()) {
+    ROS_ERROR_STREAM_THROTTLE(5.0, "ellipse_collision: cannot persist the runtime obstacles: " << error);
+  }
+  return error;
+}
+
 void CollisionNode::handleTimeJumpAndExpiry() {
   const ros::Time now = ros::Time::now();
   if (now < last_now_) {
@@ -93,6 +144,7 @@ void CollisionNode::handleTimeJumpAndExpiry() {
       registry_.dropExpiredTopicObstacles(now.toSec(), config_.obstacle_timeout_s);
   if (dropped > 0) {
     dropped_obstacles_ += dropped;
+    persistObstacles();
     ROS_WARN_STREAM_THROTTLE(5.0, "ellipse_collision: dropped "
                                       << dropped << " obstacle(s) from ~obstacles: the last message is "
                                       << core::formatNumber(now.toSec() - registry_.topicStamp())
@@ -176,6 +228,7 @@ void CollisionNode::onObstacles(const EllipseArray::ConstPtr& msg) {
       tfLookup(tf_buffer_, config_.fixed_frame, ros::Time(0), ros::Duration(config_.tf_timeout_s)));
   if (error.empty()) {
     error = registry_.replaceTopicObstacles(specs, "ellipses", msg->header.stamp.toSec());
+    if (error.empty()) persistObstacles();
   }
   last_obstacles_error_ = error;
   if (!error.empty()) {
@@ -222,6 +275,11 @@ bool CollisionNode::onAddObstacles(AddObstacles::Request& request,
       specs, "obstacles", settings_,
       tfLookup(tf_buffer_, config_.fixed_frame, ros::Time(0), ros::Duration(config_.tf_timeout_s)));
   if (error.empty()) error = registry_.addObstacles(specs, "obstacles");
+  // Durable before success: a node killed right after the answer restores them.
+  if (error.empty()) {
+    const std::string store_error = persistObstacles();
+    if (!store_error.empty()) error = "added in memory but not persisted: " + store_error;
+  }
   response.success = error.empty();
   response.message =
       error.empty() ? "added " + std::to_string(specs.size()) + " obstacle(s)" : error;
@@ -230,7 +288,11 @@ bool CollisionNode::onAddObstacles(AddObstacles::Request& request,
 
 bool CollisionNode::onRemoveObstacles(RemoveObstacles::Request& request,
                                       RemoveObstacles::Response& response) {
-  const std::string error = registry_.removeObstacles(request.names, "names");
+  std::string error = registry_.removeObstacles(request.names, "names");
+  if (error.empty()) {
+    const std::string store_error = persistObstacles();
+    if (!store_error.empty()) error = "removed in memory but not persisted: " + store_error;
+  }
   response.success = error.empty();
   response.message =
       error.empty() ? "removed " + std::to_string(request.names.size()) + " obstacle(s)" : error;
@@ -269,6 +331,7 @@ void CollisionNode::onDiagnosticsTimer(const ros::TimerEvent& /*event*/) {
     problems.push_back("last ~obstacles message refused: " + last_obstacles_error_);
   }
   if (!state_.failure.empty()) problems.push_back("last check failed: " + state_.failure);
+  if (!last_store_error_.empty()) problems.push_back("obstacle store: " + last_store_error_);
   const bool only_waiting = !state_.valid && problems.size() == 1;
   status.level = !state_.failure.empty() || missing_too_long
                      ? diagnostic_msgs::DiagnosticStatus::ERROR

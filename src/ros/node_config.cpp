@@ -3,6 +3,7 @@
 #include <ros/param.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <map>
 #include <set>
 
@@ -212,14 +213,15 @@ NodeConfig parseNodeConfig(const XmlRpcValue& params) {
       "fixed_frame",    "rate",             "tf_timeout",        "padding",
       "links",          "obstacles",        "allowed_pairs",     "self_collision",
       "warning_distance", "max_transform_age", "obstacle_timeout", "max_obstacles",
-      "max_name_length"};
+      "max_name_length", "obstacle_store"};
   if (root.getType() == XmlRpcValue::TypeStruct) {
     for (auto it = root.begin(); it != root.end(); ++it) {
       if (!known.count(it->first)) {
         throw ConfigError("parameter ~" + it->first +
                           ": unknown key (expected one of fixed_frame, rate, tf_timeout, padding, "
                           "links, obstacles, allowed_pairs, self_collision, warning_distance, "
-                          "max_transform_age, obstacle_timeout, max_obstacles, max_name_length)");
+                          "max_transform_age, obstacle_timeout, max_obstacles, max_name_length, "
+                          "obstacle_store)");
       }
     }
   }
@@ -267,6 +269,9 @@ NodeConfig parseNodeConfig(const XmlRpcValue& params) {
     config.limits.max_name_length = static_cast<std::size_t>(readWhole(
         root["max_name_length"], "parameter ~max_name_length", "max_name_length", kMaxNameLengthLimit));
   }
+  if (has("obstacle_store")) {
+    config.obstacle_store = readString(root["obstacle_store"], "parameter ~obstacle_store", "obstacle_store");
+  }
   if (!has("links")) {
     throw ConfigError(
         "parameter ~links, key 'links': expected a list of ellipses (required; may be []), got "
@@ -295,6 +300,18 @@ NodeConfig parseNodeConfig(const XmlRpcValue& params) {
   for (const auto& [where, spec] : entries) defined.emplace(spec->name, where);
   if (has("allowed_pairs")) config.allowed_pairs = readAllowedPairs(root["allowed_pairs"], defined);
   return config;
+}
+
+std::string defaultObstacleStore(const std::string& node_name) {
+  const char* ros_home = std::getenv("ROS_HOME");
+  const char* home = std::getenv("HOME");
+  const std::string directory = ros_home && *ros_home ? std::string(ros_home)
+                                : home && *home        ? std::string(home) + "/.ros"
+                                                       : std::string("/tmp");
+  std::string file = node_name;
+  for (char& c : file) c = c == '/' ? '_' : c;
+  if (!file.empty() && file.front() == '_') file.erase(0, 1);
+  return directory + "/ellipse_collision/" + file + ".obstacles";
 }
 
 NodeConfig loadNodeConfig(const ros::NodeHandle& private_nh) {

@@ -395,7 +395,13 @@ TEST_F(HostileRequests, TransformJumpingFarAwayGivesCorrectAnswersAndRecovers) {
 }
 
 TEST_F(HostileRequests, LongAndUnusualNamesRoundTripExactly) {
-  const std::vector<std::string> names = {std::string(10000, 'n'), "line\nbreak", "tab\there",
+  // Longer than max_name_length (256, the default; issue 12): refused naming the limit and value.
+  const AddObstacles::Response too_long =
+      add({ellipseMsg(std::string(10000, 'n'), "base_link", 0.0, 0.0, 0.1, 0.1)});
+  EXPECT_FALSE(too_long.success);
+  EXPECT_EQ(too_long.message,
+            "obstacles[0].name: expected at most max_name_length = 256 characters, got 10000");
+  const std::vector<std::string> names = {std::string(256, 'n'), "line\nbreak", "tab\there",
                                           "\xc3\xbc-umlaut", "slash/and space"};
   for (const std::string& name : names) {
     const AddObstacles::Response added = add({ellipseMsg(name, "base_link", 0.0, 0.0, 0.1, 0.1)});

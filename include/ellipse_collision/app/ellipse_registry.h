@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "ellipse_collision/app/ellipse_spec.h"
+#include "ellipse_collision/app/obstacle_store.h"
 #include "ellipse_collision/core/scene_check.h"
 
 namespace ellipse_collision::app {
@@ -53,6 +54,11 @@ class EllipseRegistry {
   /// `timeout_s` before `now_s` (or the stamp is 0, unknown), every topic obstacle is dropped.
   /// Returns how many were dropped (0 when nothing expired or there were none).
   std::size_t dropExpiredTopicObstacles(double now_s, double timeout_s);
+  /// The runtime obstacles (service and topic, with the topic stamp) for the obstacle store.
+  StoredObstacles runtimeObstacles() const;
+  /// Puts back what runtimeObstacles() returned (after a restart), through the same rules as the
+  /// service and the topic; "" or why it was refused (then nothing is restored).
+  std::string restore(const StoredObstacles& stored);
   /// The stamp of the current topic obstacles [s] (0 = none or unstamped).
   double topicStamp() const { return topic_stamp_s_; }
 

@@ -44,6 +44,12 @@ class CollisionNode {
   void handleTimeJumpAndExpiry();
   app::CheckOutcome runFullCheck(const ros::Duration& timeout,
                                  const std::string& min_distance_of = "");
+  /// Restores the runtime obstacles of an earlier run of this node in the same launch session
+  /// (roslaunch's /run_id) from ~obstacle_store; a missing, corrupt or foreign store is logged and
+  /// the node starts without it.
+  void restoreObstacles();
+  /// Writes the runtime obstacles to ~obstacle_store (atomically, durable on return); "" or why not.
+  std::string persistObstacles();
   void publishState();
   void publishMarkers();
 
@@ -82,6 +88,9 @@ class CollisionNode {
   ros::Time last_now_;                              ///< time of the last check, to see jumps back
   std::uint64_t dropped_obstacles_{0};              ///< dropped by ~obstacle_timeout
   std::uint64_t time_jumps_{0};
+  std::string obstacle_store_;  ///< path of the store; "" = off
+  std::string session_;         ///< /run_id of this launch
+  std::string last_store_error_;
 };
 
 }  // namespace ellipse_collision

@@ -3,6 +3,7 @@
 #include <ros/node_handle.h>
 #include <xmlrpcpp/XmlRpcValue.h>
 
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -41,6 +42,9 @@ struct NodeConfig {
   double max_transform_age_s{0.5};  ///< older non-static transforms are stale [s]; 0 = off
   double obstacle_timeout_s{0.0};   ///< ~obstacles older than this are dropped [s]; 0 = never
   app::RegistryLimits limits;       ///< max_obstacles, max_name_length
+  /// File that keeps the runtime obstacles across a crash; unset = defaultObstacleStore(),
+  /// "" = off.
+  std::optional<std::string> obstacle_store;
   std::vector<app::EllipseSpec> links;
   std::vector<app::EllipseSpec> obstacles;
   std::vector<std::pair<std::string, std::string>> allowed_pairs;
@@ -52,6 +56,9 @@ struct NodeConfig {
 /// Values out of their documented range are refused, never clamped; every ellipse must pass
 /// findInvalidPaddedField() with the global padding. Throws ConfigError.
 NodeConfig parseNodeConfig(const XmlRpc::XmlRpcValue& params);
+
+/// $ROS_HOME (else ~/.ros)/ellipse_collision/<node name, '/' -> '_'>.obstacles.
+std::string defaultObstacleStore(const std::string& node_name);
 
 /// Reads the whole private namespace of `private_nh` from the parameter server and parses it.
 /// Throws ConfigError.
