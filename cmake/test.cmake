@@ -86,6 +86,8 @@ ellipse_collision_add_rostest(test_stale_data test/ros/stale_data.test
   test/ros/test_stale_data.cpp)
 ellipse_collision_add_rostest(test_time_jump test/ros/time_jump.test
   test/ros/test_time_jump.cpp)
+ellipse_collision_add_rostest(test_respawn test/ros/respawn.test
+  test/ros/test_respawn.cpp)
 ellipse_collision_add_rostest(test_node_cli test/ros/node_cli.test
   test/ros/test_node_cli.cpp)
 ellipse_collision_add_rostest(test_bad_config test/ros/bad_config.test
