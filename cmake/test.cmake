@@ -114,6 +114,8 @@ target_compile_definitions(test_bad_startup PRIVATE
 # 60 s of load by default; a quick run: rostest $PWD/test/reliability/load.test duration:=10
 ellipse_collision_add_rostest(test_load test/reliability/load.test
   test/reliability/test_load.cpp)
+ellipse_collision_add_rostest(test_storm test/reliability/storm.test
+  test/reliability/test_storm.cpp)
 
 # ---- demo (test/demo): the whole demo with rviz in a virtual X server, judged from a screenshot
 catkin_add_executable_with_gtest(test_demo_screenshot EXCLUDE_FROM_ALL
