@@ -61,7 +61,8 @@ target_compile_options(test_check_ellipses PRIVATE ${ELLIPSE_COLLISION_WARNINGS}
 ellipse_collision_add_gtest(test_app LIBRARIES ellipse_collision_app SOURCES
   test/app/test_ellipse_registry.cpp
   test/app/test_field_validation.cpp
-  test/app/test_collision_check.cpp)
+  test/app/test_collision_check.cpp
+  test/app/test_obstacle_store.cpp)
 
 # ---- ROS layer units (test/ros): conversions, parameters, markers; no master -------------------
 ellipse_collision_add_gtest(test_ros_units LIBRARIES ellipse_collision_ros SOURCES
@@ -94,6 +95,12 @@ ellipse_collision_add_rostest(test_node_services test/ros/node_services.test
   test/ros/test_node_services.cpp)
 ellipse_collision_add_rostest(test_node_topics test/ros/node_topics.test
   test/ros/test_node_topics.cpp)
+ellipse_collision_add_rostest(test_stale_data test/ros/stale_data.test
+  test/ros/test_stale_data.cpp)
+ellipse_collision_add_rostest(test_time_jump test/ros/time_jump.test
+  test/ros/test_time_jump.cpp)
+ellipse_collision_add_rostest(test_respawn test/ros/respawn.test
+  test/ros/test_respawn.cpp)
 ellipse_collision_add_rostest(test_node_cli test/ros/node_cli.test
   test/ros/test_node_cli.cpp)
 ellipse_collision_add_rostest(test_bad_config test/ros/bad_config.test
@@ -120,6 +127,8 @@ target_compile_definitions(test_bad_startup PRIVATE
 # 60 s of load by default; a quick run: rostest $PWD/test/reliability/load.test duration:=10
 ellipse_collision_add_rostest(test_load test/reliability/load.test
   test/reliability/test_load.cpp)
+ellipse_collision_add_rostest(test_storm test/reliability/storm.test
+  test/reliability/test_storm.cpp)
 
 # ---- demo (test/demo): the whole demo with rviz in a virtual X server, judged from a screenshot
 catkin_add_executable_with_gtest(test_demo_screenshot EXCLUDE_FROM_ALL

@@ -59,9 +59,11 @@ std::string validateCheckRequest(const CheckRequest& request, const EllipseRegis
 }
 
 CheckOutcome runCheck(const CheckRequest& request, const EllipseRegistry& registry,
-                      const CheckSettings& settings, const TransformLookup& lookup) {
+                      const CheckSettings& settings, const TransformLookup& lookup,
+                      double reference_time_s) {
   CheckOutcome outcome;
-  ScenePlacement placement(lookup, settings.global_padding_m);
+  ScenePlacement placement(lookup, settings.global_padding_m,
+                           Freshness{settings.max_transform_age_s, reference_time_s});
 
   std::vector<core::NamedEllipse> scene;
   for (std::size_t i = 0; i < request.query.size(); ++i) {
@@ -73,6 +75,12 @@ CheckOutcome runCheck(const CheckRequest& request, const EllipseRegistry& regist
                       "', got none (" + placed.error + ")";
       return outcome;
     }
+    if (placed.status == ScenePlacement::Status::Stale) {
+      outcome.error = entryName("query", i) + ".frame_id = '" + spec.frame_id +
+                      "': expected a transform to '" + settings.fixed_frame +
+                      "' within max_transform_age, got a stale one (" + placed.error + ")";
+      return outcome;
+    }
     if (placed.status == ScenePlacement::Status::Degenerate) {
       outcome.error = entryName("query", i) + ": " + placed.error;
       return outcome;
@@ -81,6 +89,7 @@ CheckOutcome runCheck(const CheckRequest& request, const EllipseRegistry& regist
   }
 
   std::set<std::string> unavailable;
+  std::set<std::string> stale;
   for (const auto& [name, stored] : registry.entries()) {
     const ScenePlacement::Placement placed = placement.place(stored.spec, stored.role());
     switch (placed.status) {
@@ -92,12 +101,19 @@ CheckOutcome runCheck(const CheckRequest& request, const EllipseRegistry& regist
         unavailable.insert(stored.spec.frame_id);
         outcome.skipped.push_back(name + ": frame '" + stored.spec.frame_id + "' unavailable");
         break;
+      case ScenePlacement::Status::Stale:
+        stale.insert(stored.spec.frame_id);
+        outcome.skipped.push_back(name + ": frame '" + stored.spec.frame_id + "' stale (" +
+                                  placed.error + ")");
+        break;
       case ScenePlacement::Status::Degenerate:
         outcome.skipped.push_back(placed.error);
         break;
     }
   }
   outcome.unavailable_frames.assign(unavailable.begin(), unavailable.end());
+  outcome.stale_frames.assign(stale.begin(), stale.end());
+  outcome.complete = outcome.skipped.empty();
 
   const std::set<std::string> only_names(request.names.begin(), request.names.end());
   core::SceneCheckResult result = core::checkScene(scene, settings.rules, only_names);

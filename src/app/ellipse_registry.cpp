@@ -43,7 +43,8 @@ std::vector<std::string> namesOf(const std::vector<EllipseSpec>& specs) {
 }  // namespace
 
 EllipseRegistry::EllipseRegistry(const std::vector<EllipseSpec>& links,
-                                 const std::vector<EllipseSpec>& obstacles) {
+                                 const std::vector<EllipseSpec>& obstacles, RegistryLimits limits)
+    : limits_(limits) {
   const auto add = [this](const EllipseSpec& spec, EllipseSource source) {
     if (spec.name.empty()) throw std::invalid_argument("ellipse with an empty name");
     if (!entries_.emplace(spec.name, StoredEllipse{spec, source}).second) {
@@ -60,9 +61,36 @@ std::size_t EllipseRegistry::count(EllipseSource source) const {
   return n;
 }
 
+std::string EllipseRegistry::checkLimits(const std::vector<EllipseSpec>& obstacles,
+                                         const std::string& field,
+                                         std::size_t runtime_after) const {
+  for (std::size_t i = 0; i < obstacles.size(); ++i) {
+    if (obstacles[i].name.size() > limits_.max_name_length) {
+      return entryName(field, i) + ".name: expected at most max_name_length = " +
+             std::to_string(limits_.max_name_length) + " characters, got " +
+             std::to_string(obstacles[i].name.size());
+    }
+  }
+  if (runtime_after > limits_.max_obstacles) {
+    return field + ": expected at most max_obstacles = " + std::to_string(limits_.max_obstacles) +
+           " runtime obstacles (service and topic) in total, got " + std::to_string(runtime_after);
+  }
+  return {};
+}
+
 std::string EllipseRegistry::addObstacles(const std::vector<EllipseSpec>& obstacles,
                                           const std::string& field) {
   std::string error = checkRequestNames(namesOf(obstacles), field, ".name");
+  if (!error.empty()) return error;
+  std::size_t runtime_after =
+      count(EllipseSource::ServiceObstacle) + count(EllipseSource::TopicObstacle);
+  for (const EllipseSpec& spec : obstacles) {
+    const auto found = entries_.find(spec.name);
+    if (found == entries_.end() || found->second.source != EllipseSource::ServiceObstacle) {
+      ++runtime_after;  // new, or a configured obstacle that becomes a runtime one
+    }
+  }
+  error = checkLimits(obstacles, field, runtime_after);
   if (!error.empty()) return error;
   for (std::size_t i = 0; i < obstacles.size(); ++i) {
     const auto found = entries_.find(obstacles[i].name);
@@ -99,8 +127,10 @@ std::string EllipseRegistry::removeObstacles(const std::vector<std::string>& nam
 }
 
 std::string EllipseRegistry::replaceTopicObstacles(const std::vector<EllipseSpec>& obstacles,
-                                                   const std::string& field) {
+                                                   const std::string& field, double stamp_s) {
   std::string error = checkRequestNames(namesOf(obstacles), field, ".name");
+  if (!error.empty()) return error;
+  error = checkLimits(obstacles, field, count(EllipseSource::ServiceObstacle) + obstacles.size());
   if (!error.empty()) return error;
   for (std::size_t i = 0; i < obstacles.size(); ++i) {
     const auto found = entries_.find(obstacles[i].name);
@@ -115,7 +145,44 @@ std::string EllipseRegistry::replaceTopicObstacles(const std::vector<EllipseSpec
   for (const EllipseSpec& spec : obstacles) {
     entries_.emplace(spec.name, StoredEllipse{spec, EllipseSource::TopicObstacle});
   }
+  topic_stamp_s_ = stamp_s;
   return {};
+}
+
+StoredObstacles EllipseRegistry::runtimeObstacles() const {
+  StoredObstacles stored;
+  for (const auto& named : entries_) {
+    if (named.second.source == EllipseSource::ServiceObstacle) stored.service.push_back(named.second.spec);
+    if (named.second.source == EllipseSource::TopicObstacle) stored.topic.push_back(named.second.spec);
+  }
+  stored.topic_stamp_s = topic_stamp_s_;
+  return stored;
+}
+
+std::string EllipseRegistry::restore(const StoredObstacles& stored) {
+  const std::map<std::string, StoredEllipse> before = entries_;
+  const double stamp_before = topic_stamp_s_;
+  std::string error = addObstacles(stored.service, "service obstacles");
+  if (error.empty()) error = replaceTopicObstacles(stored.topic, "topic obstacles", stored.topic_stamp_s);
+  if (!error.empty()) {
+    entries_ = before;
+    topic_stamp_s_ = stamp_before;
+  }
+  return error;
+}
+
+std::size_t EllipseRegistry::dropExpiredTopicObstacles(double now_s, double timeout_s) {
+  if (timeout_s <= 0.0 || now_s - topic_stamp_s_ <= timeout_s) return 0;
+  std::size_t dropped = 0;
+  for (auto it = entries_.begin(); it != entries_.end();) {
+    if (it->second.source == EllipseSource::TopicObstacle) {
+      it = entries_.erase(it);
+      ++dropped;
+    } else {
+      ++it;
+    }
+  }
+  return dropped;
 }
 
 }  // namespace ellipse_collision::app

@@ -3,11 +3,13 @@
 #include <utility>
 
 #include "ellipse_collision/core/frame_projection.h"
+#include "ellipse_collision/core/number_format.h"
 
 namespace ellipse_collision::app {
 
-ScenePlacement::ScenePlacement(TransformLookup lookup, double global_padding_m)
-    : lookup_(std::move(lookup)), global_padding_m_(global_padding_m) {}
+ScenePlacement::ScenePlacement(TransformLookup lookup, double global_padding_m,
+                               Freshness freshness)
+    : lookup_(std::move(lookup)), global_padding_m_(global_padding_m), freshness_(freshness) {}
 
 const FrameTransform& ScenePlacement::lookup(const std::string& frame) {
   const auto cached = frames_.find(frame);
@@ -23,6 +25,14 @@ ScenePlacement::Placement ScenePlacement::place(const EllipseSpec& spec, core::E
   if (!frame.ok) {
     placement.status = Status::FrameUnavailable;
     placement.error = frame.error;
+    return placement;
+  }
+  if (isStale(frame, freshness_)) {
+    placement.status = Status::Stale;
+    placement.age_s = ageOf(frame, freshness_);
+    placement.error = "transform of frame '" + spec.frame_id + "' is " +
+                      core::formatNumber(placement.age_s) + " s old, older than max_transform_age " +
+                      core::formatNumber(freshness_.max_age_s) + " s";
     return placement;
   }
   const core::ProjectionResult projected = core::projectToPlane(

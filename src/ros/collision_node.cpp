@@ -4,8 +4,11 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <set>
 #include <sstream>
 
+#include "ellipse_collision/app/obstacle_store.h"
 #include "ellipse_collision/core/number_format.h"
 #include "ellipse_collision/ros/conversions.h"
 #include "ellipse_collision/ros/tf_lookup.h"
@@ -19,9 +22,13 @@ app::CheckSettings makeSettings(const NodeConfig& config) {
   settings.global_padding_m = config.padding_m;
   settings.rules.self_collision = config.self_collision;
   settings.rules.warning_distance = config.warning_distance_m;
+  settings.max_transform_age_s = config.max_transform_age_s;
   for (const auto& pair : config.allowed_pairs) settings.rules.allowed.add(pair.first, pair.second);
   return settings;
 }
+
+/// A frame unavailable or stale for longer than this [s] makes /diagnostics ERROR.
+constexpr double kMaxMissingS = 1.0;
 
 diagnostic_msgs::KeyValue keyValue(const std::string& key, const std::string& value) {
   diagnostic_msgs::KeyValue kv;
@@ -37,9 +44,12 @@ CollisionNode::CollisionNode(const ros::NodeHandle& nh, const ros::NodeHandle& p
       private_nh_(private_nh),
       config_(loadNodeConfig(private_nh)),
       settings_(makeSettings(config_)),
-      registry_(config_.links, config_.obstacles),
+      registry_(config_.links, config_.obstacles, config_.limits),
       tf_buffer_(),
       tf_listener_(tf_buffer_) {
+  obstacle_store_ = config_.obstacle_store ? *config_.obstacle_store
+                                           : defaultObstacleStore(ros::this_node::getName());
+  restoreObstacles();
   collisions_pub_ = private_nh_.advertise<CollisionState>("collisions", 1, /*latch=*/true);
   markers_pub_ = private_nh_.advertise<visualization_msgs::MarkerArray>(
       "markers", 1,
@@ -71,13 +81,88 @@ CollisionNode::CollisionNode(const ros::NodeHandle& nh, const ros::NodeHandle& p
                           : std::string()));
 }
 
+void CollisionNode::restoreObstacles() {
+  if (obstacle_store_.empty()) return;
+  ros::param::get("/run_id", session_);
+  std::string text, error;
+  bool missing = false;
+  if (!app::readWholeFile(obstacle_store_, text, missing, error)) {
+    if (!missing) {
+      ROS_ERROR_STREAM("ellipse_collision: obstacle store unreadable, starting without it: " << error);
+    }
+    return;
+  }
+  app::StoredObstacles stored;
+  error = app::parseObstacles(text, stored);
+  if (!error.empty()) {
+    ROS_ERROR_STREAM("ellipse_collision: obstacle store '" << obstacle_store_
+                     << "' is corrupt, starting without it: " << error);
+    return;
+  }
+  if (stored.session != session_) {
+    ROS_INFO_STREAM("ellipse_collision: obstacle store '" << obstacle_store_ << "' is from another launch (run_id '"
+                    << stored.session << "'), not restored");
+    return;
+  }
+  error = registry_.restore(stored);
+  if (!error.empty()) {
+    ROS_ERROR_STREAM("ellipse_collision: obstacle store '" << obstacle_store_
+                     << "' does not fit the configuration, starting without it: " << error);
+    return;
+  }
+  ROS_WARN_STREAM("ellipse_collision: restarted: restored " << stored.service.size()
+                  << " service obstacle(s) and " << stored.topic.size()
+                  << " topic obstacle(s) from '" << obstacle_store_ << "'");
+}
+
+std::string CollisionNode::persistObstacles() {
+  if (obstacle_store_.empty()) return {};
+  app::StoredObstacles stored = registry_.runtimeObstacles();
+  stored.session = session_;
+  std::string error = app::makeParentDirectories(obstacle_store_);
+  if (error.empty()) error = app::writeFileAtomically(obstacle_store_, app::serializeObstacles(stored));
+  last_store_error_ = error;
+  if (!error.empty()) {
+    ROS_ERROR_STREAM_THROTTLE(5.0, "ellipse_collision: cannot persist the runtime obstacles: " << error);
+  }
+  return error;
+}
+
+void CollisionNode::handleTimeJumpAndExpiry() {
+  const ros::Time now = ros::Time::now();
+  if (now < last_now_) {
+    // A bag played in a loop, a simulator reset: tf2 would keep answering from the future.
+    ROS_WARN_STREAM("ellipse_collision: time jumped back by "
+                    << core::formatNumber((last_now_ - now).toSec())
+                    << " s, clearing the tf buffer");
+    tf_buffer_.clear();
+    missing_since_.clear();
+    ++time_jumps_;
+  }
+  last_now_ = now;
+  const std::size_t dropped =
+      registry_.dropExpiredTopicObstacles(now.toSec(), config_.obstacle_timeout_s);
+  if (dropped > 0) {
+    dropped_obstacles_ += dropped;
+    persistObstacles();
+    ROS_WARN_STREAM_THROTTLE(5.0, "ellipse_collision: dropped "
+                                      << dropped << " obstacle(s) from ~obstacles: the last message is "
+                                      << core::formatNumber(now.toSec() - registry_.topicStamp())
+                                      << " s old, older than obstacle_timeout "
+                                      << core::formatNumber(config_.obstacle_timeout_s) << " s");
+  }
+}
+
 app::CheckOutcome CollisionNode::runFullCheck(const ros::Duration& timeout,
                                               const std::string& min_distance_of) {
+  handleTimeJumpAndExpiry();
   const auto start = std::chrono::steady_clock::now();
   app::CheckRequest request;
   request.min_distance_of = min_distance_of;
-  app::CheckOutcome outcome = app::runCheck(
-      request, registry_, settings_, tfLookup(tf_buffer_, config_.fixed_frame, ros::Time(0), timeout));
+  const ros::Time now = ros::Time::now();
+  app::CheckOutcome outcome =
+      app::runCheck(request, registry_, settings_,
+                    tfLookup(tf_buffer_, config_.fixed_frame, ros::Time(0), timeout), now.toSec());
   if (!outcome.error.empty()) {
     // Never publish a failed check as "clear": the topics keep the last good state.
     ROS_ERROR_STREAM_THROTTLE(5.0, "ellipse_collision: check failed: " << outcome.error);
@@ -88,8 +173,15 @@ app::CheckOutcome CollisionNode::runFullCheck(const ros::Duration& timeout,
   state_.duration_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   state_.valid = true;
-  state_.stamp = ros::Time::now();
+  state_.stamp = now;
   state_.outcome = outcome;
+  // Since when each frame has been missing (unavailable or stale), for the diagnostics level.
+  std::set<std::string> missing(outcome.unavailable_frames.begin(), outcome.unavailable_frames.end());
+  missing.insert(outcome.stale_frames.begin(), outcome.stale_frames.end());
+  for (auto it = missing_since_.begin(); it != missing_since_.end();) {
+    it = missing.count(it->first) ? std::next(it) : missing_since_.erase(it);
+  }
+  for (const std::string& frame : missing) missing_since_.emplace(frame, now);
   ++full_checks_;
   if (!outcome.skipped.empty()) {
     ROS_WARN_STREAM_THROTTLE(5.0, "ellipse_collision: skipped " << app::joinText(outcome.skipped, "; "));
@@ -107,6 +199,8 @@ void CollisionNode::publishState() {
   msg.in_collision = !msg.collisions.empty();
   msg.unavailable_frames = state_.outcome.unavailable_frames;
   msg.warnings = toMsg(state_.outcome.warnings);
+  msg.stale_frames = state_.outcome.stale_frames;
+  msg.complete = state_.outcome.complete;
   collisions_pub_.publish(msg);
 }
 
@@ -132,7 +226,10 @@ void CollisionNode::onObstacles(const EllipseArray::ConstPtr& msg) {
   std::string error = app::validateAttached(
       specs, "ellipses", settings_,
       tfLookup(tf_buffer_, config_.fixed_frame, ros::Time(0), ros::Duration(config_.tf_timeout_s)));
-  if (error.empty()) error = registry_.replaceTopicObstacles(specs, "ellipses");
+  if (error.empty()) {
+    error = registry_.replaceTopicObstacles(specs, "ellipses", msg->header.stamp.toSec());
+    if (error.empty()) persistObstacles();
+  }
   last_obstacles_error_ = error;
   if (!error.empty()) {
     ROS_WARN_STREAM_THROTTLE(
@@ -152,10 +249,14 @@ bool CollisionNode::onCheckCollisions(CheckCollisions::Request& request,
   // rate = 0 this is the only way they are updated).
   const ros::Duration timeout(config_.tf_timeout_s);
   const bool full_check = request.names.empty() && request.query.empty() && request.stamp.isZero();
+  if (!full_check) handleTimeJumpAndExpiry();
+  // Freshness is measured against now for latest-transform checks, else the requested stamp.
+  const double reference_s = (request.stamp.isZero() ? ros::Time::now() : request.stamp).toSec();
   const app::CheckOutcome outcome =
       full_check ? runFullCheck(timeout, check.min_distance_of)
                  : app::runCheck(check, registry_, settings_,
-                                 tfLookup(tf_buffer_, config_.fixed_frame, request.stamp, timeout));
+                                 tfLookup(tf_buffer_, config_.fixed_frame, request.stamp, timeout),
+                                 reference_s);
   if (!outcome.error.empty()) {
     ROS_ERROR_STREAM_COND(outcome.error.rfind("internal error", 0) == 0,
                           "ellipse_collision: " << outcome.error);
@@ -174,6 +275,11 @@ bool CollisionNode::onAddObstacles(AddObstacles::Request& request,
       specs, "obstacles", settings_,
       tfLookup(tf_buffer_, config_.fixed_frame, ros::Time(0), ros::Duration(config_.tf_timeout_s)));
   if (error.empty()) error = registry_.addObstacles(specs, "obstacles");
+  // Durable before success: a node killed right after the answer restores them.
+  if (error.empty()) {
+    const std::string store_error = persistObstacles();
+    if (!store_error.empty()) error = "added in memory but not persisted: " + store_error;
+  }
   response.success = error.empty();
   response.message =
       error.empty() ? "added " + std::to_string(specs.size()) + " obstacle(s)" : error;
@@ -182,7 +288,11 @@ bool CollisionNode::onAddObstacles(AddObstacles::Request& request,
 
 bool CollisionNode::onRemoveObstacles(RemoveObstacles::Request& request,
                                       RemoveObstacles::Response& response) {
-  const std::string error = registry_.removeObstacles(request.names, "names");
+  std::string error = registry_.removeObstacles(request.names, "names");
+  if (error.empty()) {
+    const std::string store_error = persistObstacles();
+    if (!store_error.empty()) error = "removed in memory but not persisted: " + store_error;
+  }
   response.success = error.empty();
   response.message =
       error.empty() ? "removed " + std::to_string(request.names.size()) + " obstacle(s)" : error;
@@ -198,15 +308,33 @@ void CollisionNode::onDiagnosticsTimer(const ros::TimerEvent& /*event*/) {
   if (!state_.outcome.unavailable_frames.empty()) {
     problems.push_back("frames unavailable: " + app::joinText(state_.outcome.unavailable_frames, ", "));
   }
+  if (!state_.outcome.stale_frames.empty()) {
+    problems.push_back("frames stale: " + app::joinText(state_.outcome.stale_frames, ", "));
+  }
   if (!state_.outcome.skipped.empty()) {
     problems.push_back("skipped: " + app::joinText(state_.outcome.skipped, "; "));
+  }
+  // Seconds each missing frame has been unavailable or stale; over 1 s is an error.
+  const ros::Time now = ros::Time::now();
+  std::vector<std::string> missing_for;
+  bool missing_too_long = false;
+  for (const auto& [frame, since] : missing_since_) {
+    const double seconds = std::max(0.0, (now - since).toSec());
+    missing_too_long = missing_too_long || seconds > kMaxMissingS;
+    missing_for.push_back(frame + ": " + core::formatNumber(std::round(seconds * 10.0) / 10.0));
+  }
+  if (missing_too_long) {
+    problems.push_back("a frame has been unavailable or stale for more than " +
+                       core::formatNumber(kMaxMissingS) + " s");
   }
   if (!last_obstacles_error_.empty()) {
     problems.push_back("last ~obstacles message refused: " + last_obstacles_error_);
   }
   if (!state_.failure.empty()) problems.push_back("last check failed: " + state_.failure);
+  if (!last_store_error_.empty()) problems.push_back("obstacle store: " + last_store_error_);
   const bool only_waiting = !state_.valid && problems.size() == 1;
-  status.level = !state_.failure.empty()            ? diagnostic_msgs::DiagnosticStatus::ERROR
+  status.level = !state_.failure.empty() || missing_too_long
+                     ? diagnostic_msgs::DiagnosticStatus::ERROR
                  : problems.empty() || only_waiting ? diagnostic_msgs::DiagnosticStatus::OK
                                                     : diagnostic_msgs::DiagnosticStatus::WARN;
   status.message = !problems.empty()                    ? app::joinText(problems, "; ")
@@ -230,6 +358,12 @@ void CollisionNode::onDiagnosticsTimer(const ros::TimerEvent& /*event*/) {
   status.values.push_back(keyValue("full checks", std::to_string(full_checks_)));
   status.values.push_back(
       keyValue("last check duration [ms]", core::formatNumber(1e3 * state_.duration_s)));
+  status.values.push_back(keyValue("complete", state_.valid && state_.outcome.complete ? "true" : "false"));
+  status.values.push_back(keyValue("stale frames", app::joinText(state_.outcome.stale_frames, ", ")));
+  status.values.push_back(keyValue("missing for [s]", app::joinText(missing_for, ", ")));
+  status.values.push_back(
+      keyValue("dropped obstacles (obstacle_timeout)", std::to_string(dropped_obstacles_)));
+  status.values.push_back(keyValue("time jumps back", std::to_string(time_jumps_)));
 
   diagnostic_msgs::DiagnosticArray array;
   array.header.stamp = ros::Time::now();

@@ -106,6 +106,8 @@ void toMsg(const app::CheckOutcome& outcome, CheckCollisions::Response& response
   response.warnings = toMsg(outcome.warnings);
   response.has_min_distance = outcome.nearest.has_value();
   if (outcome.nearest) response.nearest = toMsg(*outcome.nearest);
+  response.stale_frames = outcome.stale_frames;
+  response.complete = outcome.complete;
 }
 
 }  // namespace ellipse_collision

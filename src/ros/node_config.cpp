@@ -3,6 +3,7 @@
 #include <ros/param.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <map>
 #include <set>
 
@@ -89,6 +90,14 @@ double readInRange(const XmlRpcValue& value, const std::string& where, const std
              core::formatNumber(max) + "]",
          core::formatNumber(number));
   }
+  return number;
+}
+
+/// A whole number within [1, max] (YAML `100000` is an int; 1e5 as a double is accepted if whole).
+double readWhole(const XmlRpcValue& value, const std::string& where, const std::string& key,
+                 double max) {
+  const double number = readInRange(value, where, key, 1.0, max);
+  if (number != std::floor(number)) fail(where, key, "a whole number", core::formatNumber(number));
   return number;
 }
 
@@ -200,15 +209,19 @@ NodeConfig parseNodeConfig(const XmlRpcValue& params) {
                       describeValue(root));
   }
 
-  const std::set<std::string> known = {"fixed_frame",   "rate",           "tf_timeout",
-                                       "padding",       "links",          "obstacles",
-                                       "allowed_pairs", "self_collision", "warning_distance"};
+  const std::set<std::string> known = {
+      "fixed_frame",    "rate",             "tf_timeout",        "padding",
+      "links",          "obstacles",        "allowed_pairs",     "self_collision",
+      "warning_distance", "max_transform_age", "obstacle_timeout", "max_obstacles",
+      "max_name_length", "obstacle_store"};
   if (root.getType() == XmlRpcValue::TypeStruct) {
     for (auto it = root.begin(); it != root.end(); ++it) {
       if (!known.count(it->first)) {
         throw ConfigError("parameter ~" + it->first +
                           ": unknown key (expected one of fixed_frame, rate, tf_timeout, padding, "
-                          "links, obstacles, allowed_pairs, self_collision, warning_distance)");
+                          "links, obstacles, allowed_pairs, self_collision, warning_distance, "
+                          "max_transform_age, obstacle_timeout, max_obstacles, max_name_length, "
+                          "obstacle_store)");
       }
     }
   }
@@ -240,6 +253,25 @@ NodeConfig parseNodeConfig(const XmlRpcValue& params) {
     config.warning_distance_m = readNonNegative(root["warning_distance"],
                                                 "parameter ~warning_distance", "warning_distance");
   }
+  if (has("max_transform_age")) {
+    config.max_transform_age_s = readInRange(root["max_transform_age"], "parameter ~max_transform_age",
+                                             "max_transform_age", 0.0, kMaxTfTimeoutS);
+  }
+  if (has("obstacle_timeout")) {
+    config.obstacle_timeout_s = readInRange(root["obstacle_timeout"], "parameter ~obstacle_timeout",
+                                            "obstacle_timeout", 0.0, kMaxTfTimeoutS);
+  }
+  if (has("max_obstacles")) {
+    config.limits.max_obstacles = static_cast<std::size_t>(readWhole(
+        root["max_obstacles"], "parameter ~max_obstacles", "max_obstacles", kMaxObstaclesLimit));
+  }
+  if (has("max_name_length")) {
+    config.limits.max_name_length = static_cast<std::size_t>(readWhole(
+        root["max_name_length"], "parameter ~max_name_length", "max_name_length", kMaxNameLengthLimit));
+  }
+  if (has("obstacle_store")) {
+    config.obstacle_store = readString(root["obstacle_store"], "parameter ~obstacle_store", "obstacle_store");
+  }
   if (!has("links")) {
     throw ConfigError(
         "parameter ~links, key 'links': expected a list of ellipses (required; may be []), got "
@@ -268,6 +300,18 @@ NodeConfig parseNodeConfig(const XmlRpcValue& params) {
   for (const auto& [where, spec] : entries) defined.emplace(spec->name, where);
   if (has("allowed_pairs")) config.allowed_pairs = readAllowedPairs(root["allowed_pairs"], defined);
   return config;
+}
+
+std::string defaultObstacleStore(const std::string& node_name) {
+  const char* ros_home = std::getenv("ROS_HOME");
+  const char* home = std::getenv("HOME");
+  const std::string directory = ros_home && *ros_home ? std::string(ros_home)
+                                : home && *home        ? std::string(home) + "/.ros"
+                                                       : std::string("/tmp");
+  std::string file = node_name;
+  for (char& c : file) c = c == '/' ? '_' : c;
+  if (!file.empty() && file.front() == '_') file.erase(0, 1);
+  return directory + "/ellipse_collision/" + file + ".obstacles";
 }
 
 NodeConfig loadNodeConfig(const ros::NodeHandle& private_nh) {

@@ -9,14 +9,17 @@ namespace ellipse_collision {
 bool lookupTransformSafe(const tf2_ros::Buffer& buffer, const std::string& target_frame,
                          const std::string& source_frame, const ros::Time& time,
                          const ros::Duration& timeout, Eigen::Isometry3d& target_from_source,
-                         std::string* error) {
+                         std::string* error, ros::Time* stamp) {
   if (target_frame == source_frame) {
     target_from_source = Eigen::Isometry3d::Identity();
+    if (stamp) *stamp = ros::Time(0);
     return true;
   }
   try {
-    target_from_source =
-        tf2::transformToEigen(buffer.lookupTransform(target_frame, source_frame, time, timeout));
+    const geometry_msgs::TransformStamped found =
+        buffer.lookupTransform(target_frame, source_frame, time, timeout);
+    target_from_source = tf2::transformToEigen(found);
+    if (stamp) *stamp = found.header.stamp;
     return true;
   } catch (const tf2::TransformException& exception) {
     ROS_WARN_STREAM_THROTTLE(5.0, "No transform from '" << source_frame << "' to '" << target_frame
@@ -30,8 +33,11 @@ app::TransformLookup tfLookup(const tf2_ros::Buffer& buffer, const std::string& 
                               const ros::Time& time, const ros::Duration& timeout) {
   return [&buffer, fixed_frame, time, timeout](const std::string& frame) {
     app::FrameTransform transform;
+    ros::Time stamp;
     transform.ok = lookupTransformSafe(buffer, fixed_frame, frame, time, timeout,
-                                       transform.fixed_from_frame, &transform.error);
+                                       transform.fixed_from_frame, &transform.error, &stamp);
+    // tf2 stamps a chain of static transforms 0 at the latest time: timeless, never stale.
+    transform.stamp_s = stamp.toSec();
     return transform;
   };
 }

@@ -22,9 +22,11 @@ EllipseSpec circle(const std::string& name, const std::string& frame, double x, 
   return spec;
 }
 
-/// Frames translated in the plane; unknown frames are unavailable. Counts the lookups.
+/// Frames translated in the plane; unknown frames are unavailable. Counts the lookups. A frame
+/// without an entry in `stamps` is timeless (static).
 struct TranslationTable {
   std::map<std::string, Eigen::Vector2d> offsets;
+  std::map<std::string, double> stamps;  ///< [s]
   std::map<std::string, int>* lookups;
   FrameTransform operator()(const std::string& frame) const {
     ++(*lookups)[frame];
@@ -35,6 +37,7 @@ struct TranslationTable {
       return transform;
     }
     transform.ok = true;
+    if (stamps.count(frame)) transform.stamp_s = stamps.at(frame);
     transform.fixed_from_frame.translation() << found->second, 0.0;
     return transform;
   }
@@ -51,8 +54,8 @@ class CollisionCheckTest : public ::testing::Test {
     table_.lookups = &lookups_;
   }
 
-  CheckOutcome run(const CheckRequest& request) {
-    return runCheck(request, registry_, settings_, TransformLookup(table_));
+  CheckOutcome run(const CheckRequest& request, double now_s = 0.0) {
+    return runCheck(request, registry_, settings_, TransformLookup(table_), now_s);
   }
 
   EllipseRegistry registry_;
@@ -161,6 +164,88 @@ TEST_F(CollisionCheckTest, AttachedEllipsesNeedValidFieldsThenAKnownFrame) {
   EXPECT_EQ(validateAttached({circle("a", "nowhere", 0, 0, 1)}, "obstacles", settings_, lookup),
             "obstacles[0].frame_id = 'nowhere': expected a known tf frame with a transform to "
             "'map', got none (frame 'nowhere' does not exist)");
+}
+
+TEST(Freshness, OnlyStampedTransformsOlderThanTheMaximumAreStale) {
+  FrameTransform transform;
+  transform.ok = true;
+  transform.stamp_s = 100.0;
+  EXPECT_FALSE(isStale(transform, {0.5, 100.5})) << "exactly max_transform_age old is fresh";
+  EXPECT_TRUE(isStale(transform, {0.5, 100.6}));
+  EXPECT_NEAR(ageOf(transform, {0.5, 100.6}), 0.6, 1e-9);
+  EXPECT_FALSE(isStale(transform, {0.0, 1e6})) << "max_transform_age 0 is off";
+  EXPECT_FALSE(isStale(transform, {0.5, 99.0})) << "a transform from the future is not old";
+  transform.stamp_s = 0.0;
+  EXPECT_FALSE(isStale(transform, {0.5, 1e6})) << "static chains (stamp 0) never go stale";
+  EXPECT_EQ(ageOf(transform, {0.5, 1e6}), 0.0);
+  transform.ok = false;
+  transform.stamp_s = 1.0;
+  EXPECT_FALSE(isStale(transform, {0.5, 1e6})) << "unavailable is not stale";
+}
+
+TEST_F(CollisionCheckTest, EverythingPlacedFromFreshDataIsComplete) {
+  table_.offsets["arm"] = {0.0, -3.0};
+  table_.stamps["arm"] = 10.0;
+  settings_.max_transform_age_s = 0.5;
+  const CheckOutcome outcome = run({}, 10.4);
+  ASSERT_EQ(outcome.error, "");
+  EXPECT_TRUE(outcome.complete);
+  EXPECT_TRUE(outcome.stale_frames.empty());
+  EXPECT_EQ(outcome.placed.size(), 4u);
+}
+
+TEST_F(CollisionCheckTest, UnavailableFrameMakesTheAnswerIncomplete) {
+  const CheckOutcome outcome = run({});
+  ASSERT_EQ(outcome.error, "");
+  EXPECT_FALSE(outcome.complete);
+  EXPECT_TRUE(outcome.stale_frames.empty());
+}
+
+TEST_F(CollisionCheckTest, StaleFrameIsNotCheckedAtItsOldPoseAndListed) {
+  table_.offsets["arm"] = {0.0, 0.95};  // at this old pose the hand would touch the wall
+  table_.stamps["arm"] = 10.0;
+  table_.stamps["base_link"] = 11.0;    // fresh
+  settings_.max_transform_age_s = 0.5;
+  const CheckOutcome outcome = run({}, 11.25);
+  ASSERT_EQ(outcome.error, "");
+  EXPECT_EQ(outcome.stale_frames, std::vector<std::string>{"arm"});
+  EXPECT_TRUE(outcome.unavailable_frames.empty());
+  EXPECT_TRUE(outcome.collisions.empty()) << "the hand was not placed at its old pose";
+  EXPECT_EQ(outcome.placed.size(), 2u);  // body, wall
+  EXPECT_FALSE(outcome.complete);
+  ASSERT_EQ(outcome.skipped.size(), 2u);
+  EXPECT_EQ(outcome.skipped[0],
+            "hand: frame 'arm' stale (transform of frame 'arm' is 1.25 s old, older than "
+            "max_transform_age 0.5 s)");
+
+  // Published again: fresh at once.
+  table_.stamps["arm"] = 11.2;
+  const CheckOutcome again = run({}, 11.25);
+  EXPECT_TRUE(again.complete);
+  EXPECT_TRUE(again.stale_frames.empty());
+  EXPECT_EQ(again.collisions.size(), 1u);
+}
+
+TEST_F(CollisionCheckTest, FreshnessOffKeepsTheLastPose) {
+  table_.offsets["arm"] = {0.0, 0.95};
+  table_.stamps["arm"] = 10.0;
+  settings_.max_transform_age_s = 0.0;
+  const CheckOutcome outcome = run({}, 1000.0);
+  EXPECT_TRUE(outcome.complete);
+  EXPECT_EQ(outcome.collisions.size(), 1u);
+}
+
+TEST_F(CollisionCheckTest, QueryInAStaleFrameFailsTheRequest) {
+  table_.offsets["arm"] = {0.0, 0.0};
+  table_.stamps["arm"] = 10.0;
+  settings_.max_transform_age_s = 0.5;
+  CheckRequest request;
+  request.query = {circle("probe", "arm", 0.0, 0.0, 0.1)};
+  const CheckOutcome outcome = run(request, 12.0);
+  EXPECT_EQ(outcome.error,
+            "query[0].frame_id = 'arm': expected a transform to 'map' within max_transform_age, "
+            "got a stale one (transform of frame 'arm' is 2 s old, older than max_transform_age "
+            "0.5 s)");
 }
 
 }  // namespace

@@ -114,6 +114,47 @@ TEST(EllipseRegistry, TopicObstacleCanBeRemovedByTheService) {
   EXPECT_FALSE(registry.contains("rock"));
 }
 
+TEST(EllipseRegistry, TopicObstaclesOlderThanTheTimeoutAreDropped) {
+  EllipseRegistry registry = makeRegistry();
+  ASSERT_EQ(registry.replaceTopicObstacles({spec("rock1"), spec("rock2")}, "ellipses", 100.0), "");
+  ASSERT_EQ(registry.addObstacles({spec("box")}, "obstacles"), "");
+  EXPECT_EQ(registry.topicStamp(), 100.0);
+  EXPECT_EQ(registry.dropExpiredTopicObstacles(1000.0, 0.0), 0u) << "timeout 0 = never";
+  EXPECT_EQ(registry.dropExpiredTopicObstacles(101.0, 1.0), 0u) << "exactly the timeout is kept";
+  EXPECT_TRUE(registry.contains("rock1"));
+  EXPECT_EQ(registry.dropExpiredTopicObstacles(101.5, 1.0), 2u);
+  EXPECT_FALSE(registry.contains("rock1"));
+  EXPECT_FALSE(registry.contains("rock2"));
+  EXPECT_TRUE(registry.contains("box")) << "service obstacles never time out";
+  EXPECT_TRUE(registry.contains("table"));
+  EXPECT_EQ(registry.dropExpiredTopicObstacles(102.0, 1.0), 0u) << "nothing left to drop";
+  // A new message brings them back.
+  ASSERT_EQ(registry.replaceTopicObstacles({spec("rock3")}, "ellipses", 101.9), "");
+  EXPECT_EQ(registry.dropExpiredTopicObstacles(102.0, 1.0), 0u);
+  EXPECT_TRUE(registry.contains("rock3"));
+}
+
+TEST(EllipseRegistry, RuntimeObstaclesBeyondTheLimitsAreRefusedNamingTheLimit) {
+  EllipseRegistry registry({spec("arm")}, {spec("table")}, RegistryLimits{3, 8});
+  EXPECT_EQ(registry.addObstacles({spec("a"), spec("b")}, "obstacles"), "");
+  EXPECT_EQ(registry.addObstacles({spec("a"), spec("b")}, "obstacles"), "")
+      << "replacing does not count twice";
+  EXPECT_EQ(registry.addObstacles({spec("c"), spec("d")}, "obstacles"),
+            "obstacles: expected at most max_obstacles = 3 runtime obstacles (service and topic) in "
+            "total, got 4");
+  EXPECT_FALSE(registry.contains("c")) << "all or nothing";
+  EXPECT_EQ(registry.replaceTopicObstacles({spec("r1"), spec("r2")}, "ellipses"),
+            "ellipses: expected at most max_obstacles = 3 runtime obstacles (service and topic) in "
+            "total, got 4");
+  EXPECT_EQ(registry.replaceTopicObstacles({spec("r1")}, "ellipses"), "");
+  EXPECT_EQ(registry.addObstacles({spec("123456789")}, "obstacles"),
+            "obstacles[0].name: expected at most max_name_length = 8 characters, got 9");
+  EXPECT_EQ(registry.replaceTopicObstacles({spec("r"), spec("123456789")}, "ellipses"),
+            "ellipses[1].name: expected at most max_name_length = 8 characters, got 9");
+  EXPECT_EQ(registry.removeObstacles({"a"}, "names"), "");
+  EXPECT_EQ(registry.addObstacles({spec("12345678")}, "obstacles"), "");
+}
+
 TEST(EllipseRegistry, DuplicateConfiguredNameIsRejected) {
   EXPECT_THROW(EllipseRegistry({spec("a")}, {spec("a")}), std::invalid_argument);
 }

@@ -315,10 +315,16 @@ TEST_F(HostileRequests, FrameThatStopsBeingPublishedIsUnavailableWhileOthersAreS
   EXPECT_TRUE(r.success) << r.message;
   EXPECT_EQ(r.unavailable_frames, std::vector<std::string>{"vanishing_link"});
   EXPECT_EQ(pairsOf(r.collisions), (Pairs{{"arm", "pillar"}}));
-  // Latest-available checks (stamp 0) still answer, with or without the last known pose.
+  // Latest-available checks (stamp 0) still answer, but no longer at the last known pose: the
+  // transform is older than max_transform_age (0.5 s, the default), so the frame is stale and the
+  // answer incomplete (issue 12; before it, the ghost was checked at its last pose forever).
   r = check();
   EXPECT_TRUE(r.success) << r.message;
   EXPECT_TRUE(findPair(r.collisions, "arm", "pillar"));
+  EXPECT_FALSE(findPair(r.collisions, "body", "ghost"));
+  EXPECT_EQ(r.stale_frames, std::vector<std::string>{"vanishing_link"});
+  EXPECT_TRUE(r.unavailable_frames.empty());
+  EXPECT_FALSE(r.complete);
   // A new query in the vanished frame is a clear error.
   r = check({}, {ellipseMsg("q", "vanishing_link", 0.0, 0.0, 0.1, 0.1)}, ros::Time::now());
   EXPECT_FALSE(r.success);
@@ -332,6 +338,7 @@ TEST_F(HostileRequests, FrameThatStopsBeingPublishedIsUnavailableWhileOthersAreS
         return now.success && findPair(now.collisions, "body", "ghost");
       },
       10.0));
+  EXPECT_TRUE(waitUntil([&] { return check().complete; }, 10.0)) << "fresh again at once";
   EXPECT_TRUE(remove({"ghost"}).success);
 }
 
@@ -388,7 +395,13 @@ TEST_F(HostileRequests, TransformJumpingFarAwayGivesCorrectAnswersAndRecovers) {
 }
 
 TEST_F(HostileRequests, LongAndUnusualNamesRoundTripExactly) {
-  const std::vector<std::string> names = {std::string(10000, 'n'), "line\nbreak", "tab\there",
+  // Longer than max_name_length (256, the default; issue 12): refused naming the limit and value.
+  const AddObstacles::Response too_long =
+      add({ellipseMsg(std::string(10000, 'n'), "base_link", 0.0, 0.0, 0.1, 0.1)});
+  EXPECT_FALSE(too_long.success);
+  EXPECT_EQ(too_long.message,
+            "obstacles[0].name: expected at most max_name_length = 256 characters, got 10000");
+  const std::vector<std::string> names = {std::string(256, 'n'), "line\nbreak", "tab\there",
                                           "\xc3\xbc-umlaut", "slash/and space"};
   for (const std::string& name : names) {
     const AddObstacles::Response added = add({ellipseMsg(name, "base_link", 0.0, 0.0, 0.1, 0.1)});

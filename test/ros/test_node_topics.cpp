@@ -369,19 +369,25 @@ TEST_F(NodeTopics, ObstacleStreamReplacesThePreviousTopicObstacles) {
 TEST_F(NodeTopics, DiagnosticsReportCountsUnavailableFramesAndCheckDuration) {
   Recorder<diagnostic_msgs::DiagnosticArray> diagnostics(nh_, "/diagnostics");
   diagnostic_msgs::DiagnosticArray array;
+  // camera_link is missing: WARN (incomplete) at first, ERROR once it has been missing for more
+  // than 1 s (issue 12; before it, a frame missing for good stayed WARN).
   ASSERT_TRUE(diagnostics.waitForLatest(
       [](const diagnostic_msgs::DiagnosticArray& a) {
-        return !a.status.empty() && a.status[0].name.find("ellipse_collision") != std::string::npos;
+        return !a.status.empty() && a.status[0].name.find("ellipse_collision") != std::string::npos &&
+               a.status[0].level == diagnostic_msgs::DiagnosticStatus::ERROR;
       },
       10.0, &array));
   const diagnostic_msgs::DiagnosticStatus& status = array.status[0];
-  EXPECT_EQ(status.level, diagnostic_msgs::DiagnosticStatus::WARN);  // camera_link is missing
   EXPECT_CONTAINS(status.message, "camera_link");
+  EXPECT_CONTAINS(status.message, "unavailable or stale for more than 1 s");
   std::map<std::string, std::string> values;
   for (const auto& kv : status.values) values[kv.key] = kv.value;
   EXPECT_EQ(values["links"], "5");
   EXPECT_EQ(values["obstacles (configured)"], "4");
   EXPECT_EQ(values["unavailable frames"], "camera_link");
+  EXPECT_EQ(values["complete"], "false");
+  EXPECT_EQ(values["stale frames"], "");
+  EXPECT_CONTAINS(values["missing for [s]"], "camera_link: ");
   EXPECT_EQ(values["collisions"], "1");  // plate / post_near
   EXPECT_EQ(values["warnings"], "1");    // plate / post
   ASSERT_TRUE(values.count("last check duration [ms]"));

@@ -17,6 +17,8 @@ struct CheckSettings {
   std::string fixed_frame{"base_link"};
   double global_padding_m{0.0};  ///< added to both radii of every ellipse [m]
   core::SceneRules rules;
+  /// A non-timeless transform older than this is stale (isStale()) [s]; 0 = off.
+  double max_transform_age_s{0.0};
 };
 
 /// One ~check_collisions request, converted from its message. Empty names, query and
@@ -31,12 +33,16 @@ struct CheckRequest {
 struct CheckOutcome {
   std::vector<core::NamedEllipse> placed;       ///< stored ellipses that could be placed
   std::vector<std::string> unavailable_frames;  ///< sorted; their ellipses were skipped
+  std::vector<std::string> stale_frames;        ///< sorted; transform too old, ellipses skipped
   std::vector<std::string> skipped;             ///< why each skipped ellipse was skipped
   std::vector<core::CollidingPair> collisions;
   std::vector<core::NearPair> warnings;
   std::optional<core::NearPair> nearest;  ///< of min_distance_of, when asked and measured
   std::string nearest_problem;            ///< why it was asked but not measured
   std::string error;                      ///< a bad request or a refused scene: nothing checked
+  /// Every stored ellipse was placed from fresh data: none unavailable, stale or skipped. The
+  /// one bit a safety consumer needs; false whenever the answer does not cover everything.
+  bool complete{false};
 };
 
 /// The request's own rules, before any frame is looked up: every query ellipse passes
@@ -49,9 +55,14 @@ std::string validateCheckRequest(const CheckRequest& request, const EllipseRegis
 /// Places the query ellipses and every stored ellipse through `lookup`, checks the scene with the
 /// core (core::checkScene(), core::nearestTo()) and collects the answer. A query ellipse whose
 /// frame is unavailable or that projects to nothing makes the request fail; a stored one is
-/// skipped and its frame listed. Expects a request that passed validateCheckRequest().
+/// skipped and its frame listed. A frame whose transform is older than
+/// settings.max_transform_age_s at `reference_time_s` (now for latest-transform checks, the
+/// requested stamp otherwise; same clock as FrameTransform::stamp_s) is stale: a query ellipse in
+/// it fails the request, stored ones are skipped and the frame is listed in stale_frames.
+/// Expects a request that passed validateCheckRequest().
 CheckOutcome runCheck(const CheckRequest& request, const EllipseRegistry& registry,
-                      const CheckSettings& settings, const TransformLookup& lookup);
+                      const CheckSettings& settings, const TransformLookup& lookup,
+                      double reference_time_s = 0.0);
 
 /// For ellipses that are to be stored (~add_obstacles, the ~obstacles topic): field rules
 /// (findInvalidPaddedField()) for all, then a transform to the fixed frame for each frame.

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "ellipse_collision/app/ellipse_spec.h"
+#include "ellipse_collision/app/obstacle_store.h"
 #include "ellipse_collision/core/scene_check.h"
 
 namespace ellipse_collision::app {
@@ -21,6 +22,12 @@ struct StoredEllipse {
   }
 };
 
+/// Memory limits on what requests and messages may store. Refused beyond them, naming the limit.
+struct RegistryLimits {
+  std::size_t max_obstacles{100000};   ///< runtime obstacles (service + topic) at any time
+  std::size_t max_name_length{256};    ///< characters in the name of a runtime obstacle
+};
+
 /// The named ellipses the node keeps, by name. Every change is all-or-nothing: a refused request
 /// leaves the registry as it was and returns a message naming the field and value; an accepted one
 /// returns an empty string. Field values are validated by the caller (findInvalidPaddedField(),
@@ -33,20 +40,41 @@ struct StoredEllipse {
 class EllipseRegistry {
  public:
   /// Configured links and obstacles; throws std::invalid_argument on an empty or duplicate name.
-  EllipseRegistry(const std::vector<EllipseSpec>& links, const std::vector<EllipseSpec>& obstacles);
+  EllipseRegistry(const std::vector<EllipseSpec>& links, const std::vector<EllipseSpec>& obstacles,
+                  RegistryLimits limits = {});
 
   /// `field` prefixes messages ("obstacles" -> "obstacles[1].name = ...").
   std::string addObstacles(const std::vector<EllipseSpec>& obstacles, const std::string& field);
   std::string removeObstacles(const std::vector<std::string>& names, const std::string& field);
+  /// `stamp_s` is the message's observation time [s] (see dropExpiredTopicObstacles()).
   std::string replaceTopicObstacles(const std::vector<EllipseSpec>& obstacles,
-                                    const std::string& field);
+                                    const std::string& field, double stamp_s = 0.0);
+
+  /// The obstacle-timeout rule: when `timeout_s` > 0 and the topic obstacles' stamp is more than
+  /// `timeout_s` before `now_s` (or the stamp is 0, unknown), every topic obstacle is dropped.
+  /// Returns how many were dropped (0 when nothing expired or there were none).
+  std::size_t dropExpiredTopicObstacles(double now_s, double timeout_s);
+  /// The runtime obstacles (service and topic, with the topic stamp) for the obstacle store.
+  StoredObstacles runtimeObstacles() const;
+  /// Puts back what runtimeObstacles() returned (after a restart), through the same rules as the
+  /// service and the topic; "" or why it was refused (then nothing is restored).
+  std::string restore(const StoredObstacles& stored);
+  /// The stamp of the current topic obstacles [s] (0 = none or unstamped).
+  double topicStamp() const { return topic_stamp_s_; }
 
   const std::map<std::string, StoredEllipse>& entries() const { return entries_; }
   bool contains(const std::string& name) const { return entries_.count(name) != 0; }
   std::size_t count(EllipseSource source) const;
 
  private:
+  /// The limits' rule for one request or message: a name longer than max_name_length, or more
+  /// than max_obstacles runtime obstacles after it (`runtime_after`). "" when within them.
+  std::string checkLimits(const std::vector<EllipseSpec>& obstacles, const std::string& field,
+                          std::size_t runtime_after) const;
+
   std::map<std::string, StoredEllipse> entries_;
+  RegistryLimits limits_;
+  double topic_stamp_s_{0.0};
 };
 
 }  // namespace ellipse_collision::app

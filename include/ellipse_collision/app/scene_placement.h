@@ -13,16 +13,18 @@ namespace ellipse_collision::app {
 /// looked up once, then the core projects the padded ellipse (core::projectToPlane()).
 class ScenePlacement {
  public:
-  enum class Status { Placed, FrameUnavailable, Degenerate };
+  enum class Status { Placed, FrameUnavailable, Stale, Degenerate };
 
   struct Placement {
     Status status{Status::Placed};
     core::NamedEllipse ellipse;  ///< in the fixed frame, when Placed
     std::string error;           ///< the lookup error or the projection error otherwise
+    double age_s{0.0};           ///< how old the frame's transform is [s] (when Stale)
   };
 
-  /// `lookup` answers for the fixed frame at the check's time; global padding in [m].
-  ScenePlacement(TransformLookup lookup, double global_padding_m);
+  /// `lookup` answers for the fixed frame at the check's time; global padding in [m]. A frame
+  /// whose transform is stale under `freshness` (isStale()) is not placed at that old pose.
+  ScenePlacement(TransformLookup lookup, double global_padding_m, Freshness freshness = {});
 
   Placement place(const EllipseSpec& spec, core::EllipseRole role);
 
@@ -32,6 +34,7 @@ class ScenePlacement {
  private:
   TransformLookup lookup_;
   double global_padding_m_;
+  Freshness freshness_;
   std::map<std::string, FrameTransform> frames_;
 };
 

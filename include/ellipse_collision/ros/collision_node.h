@@ -5,6 +5,7 @@
 #include <tf2_ros/transform_listener.h>
 
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -38,8 +39,17 @@ class CollisionNode {
 
   /// Checks every stored ellipse at the latest transforms, records the result as the published
   /// state and publishes it (a failed check is only logged and reported in diagnostics).
+  /// Clears the tf buffer when ros::Time went backwards (a looping bag) and drops topic
+  /// obstacles older than ~obstacle_timeout; every check starts here.
+  void handleTimeJumpAndExpiry();
   app::CheckOutcome runFullCheck(const ros::Duration& timeout,
                                  const std::string& min_distance_of = "");
+  /// Restores the runtime obstacles of an earlier run of this node in the same launch session
+  /// (roslaunch's /run_id) from ~obstacle_store; a missing, corrupt or foreign store is logged and
+  /// the node starts without it.
+  void restoreObstacles();
+  /// Writes the runtime obstacles to ~obstacle_store (atomically, durable on return); "" or why not.
+  std::string persistObstacles();
   void publishState();
   void publishMarkers();
 
@@ -74,6 +84,13 @@ class CollisionNode {
   PublishedState state_;
   std::string last_obstacles_error_;  ///< why the last ~obstacles message was refused, if it was
   std::uint64_t full_checks_{0};
+  std::map<std::string, ros::Time> missing_since_;  ///< frame -> first full check it was missing
+  ros::Time last_now_;                              ///< time of the last check, to see jumps back
+  std::uint64_t dropped_obstacles_{0};              ///< dropped by ~obstacle_timeout
+  std::uint64_t time_jumps_{0};
+  std::string obstacle_store_;  ///< path of the store; "" = off
+  std::string session_;         ///< /run_id of this launch
+  std::string last_store_error_;
 };
 
 }  // namespace ellipse_collision

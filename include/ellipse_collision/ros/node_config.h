@@ -3,11 +3,13 @@
 #include <ros/node_handle.h>
 #include <xmlrpcpp/XmlRpcValue.h>
 
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "ellipse_collision/app/ellipse_registry.h"
 #include "ellipse_collision/app/ellipse_spec.h"
 
 namespace ellipse_collision {
@@ -23,7 +25,11 @@ class ConfigError : public std::runtime_error {
 /// resolution), and the global padding within the core's radius range.
 constexpr double kMinRateHz = 1e-3;        ///< rate is 0 or within [kMinRateHz, kMaxRateHz]
 constexpr double kMaxRateHz = 1e3;         ///< [Hz]
-constexpr double kMaxTfTimeoutS = 3600.0;  ///< tf_timeout within [0, kMaxTfTimeoutS] [s]
+constexpr double kMaxTfTimeoutS = 3600.0;  ///< tf_timeout, max_transform_age, obstacle_timeout
+                                           ///< within [0, kMaxTfTimeoutS] [s]
+
+constexpr double kMaxObstaclesLimit = 1e7;   ///< max_obstacles within [1, kMaxObstaclesLimit]
+constexpr double kMaxNameLengthLimit = 1e6;  ///< max_name_length within [1, kMaxNameLengthLimit]
 
 /// The node's private parameters (see config/ellipse_collision.yaml for the documentation).
 struct NodeConfig {
@@ -33,6 +39,12 @@ struct NodeConfig {
   double padding_m{0.0};      ///< added to both radii of every ellipse [m], [0, kMaxRadius]
   bool self_collision{true};  ///< also check link against link
   double warning_distance_m{0.0};  ///< separated pairs closer than this are warnings [m]; 0 = off
+  double max_transform_age_s{0.5};  ///< older non-static transforms are stale [s]; 0 = off
+  double obstacle_timeout_s{0.0};   ///< ~obstacles older than this are dropped [s]; 0 = never
+  app::RegistryLimits limits;       ///< max_obstacles, max_name_length
+  /// File that keeps the runtime obstacles across a crash; unset = defaultObstacleStore(),
+  /// "" = off.
+  std::optional<std::string> obstacle_store;
   std::vector<app::EllipseSpec> links;
   std::vector<app::EllipseSpec> obstacles;
   std::vector<std::pair<std::string, std::string>> allowed_pairs;
@@ -44,6 +56,9 @@ struct NodeConfig {
 /// Values out of their documented range are refused, never clamped; every ellipse must pass
 /// findInvalidPaddedField() with the global padding. Throws ConfigError.
 NodeConfig parseNodeConfig(const XmlRpc::XmlRpcValue& params);
+
+/// $ROS_HOME (else ~/.ros)/ellipse_collision/<node name, '/' -> '_'>.obstacles.
+std::string defaultObstacleStore(const std::string& node_name);
 
 /// Reads the whole private namespace of `private_nh` from the parameter server and parses it.
 /// Throws ConfigError.

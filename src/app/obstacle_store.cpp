@@ -1,0 +1,191 @@
+#include "ellipse_collision/app/obstacle_store.h"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+namespace ellipse_collision::app {
+namespace {
+
+constexpr const char* kHeader = "ellipse_collision obstacle store 1";
+
+std::string number(double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof(buffer), "%.17g", value);
+  return buffer;
+}
+
+std::string text(const std::string& s) { return std::to_string(s.size()) + ":" + s; }
+
+void writeSpec(std::ostringstream& out, const char* kind, const EllipseSpec& spec) {
+  out << kind << ' ' << text(spec.name) << ' ' << text(spec.frame_id) << ' ' << number(spec.x)
+      << ' ' << number(spec.y) << ' ' << number(spec.angle) << ' ' << number(spec.radius_x) << ' '
+      << number(spec.radius_y) << ' ' << number(spec.padding) << '\n';
+}
+
+/// Reads "<length>:<bytes>" at `pos` of `line`, then skips one space.
+bool readText(const std::string& line, std::size_t& pos, std::string& out) {
+  const std::size_t colon = line.find(':', pos);
+  if (colon == std::string::npos || colon == pos) return false;
+  std::size_t length = 0;
+  for (std::size_t i = pos; i < colon; ++i) {
+    if (line[i] < '0' || line[i] > '9' || length > line.size()) return false;
+    length = 10 * length + static_cast<std::size_t>(line[i] - '0');
+  }
+  if (colon + 1 + length > line.size()) return false;
+  out = line.substr(colon + 1, length);
+  pos = colon + 1 + length;
+  if (pos < line.size() && line[pos] == ' ') ++pos;
+  return true;
+}
+
+bool readNumbers(const std::string& line, EllipseSpec& spec) {
+  std::istringstream in(line);
+  in >> spec.x >> spec.y >> spec.angle >> spec.radius_x >> spec.radius_y >> spec.padding;
+  if (!in) return false;
+  std::string rest;
+  return !(in >> rest);
+}
+
+std::string errnoText(const std::string& step, const std::string& path) {
+  return step + " '" + path + "': " + std::strerror(errno);
+}
+
+}  // namespace
+
+std::string serializeObstacles(const StoredObstacles& obstacles) {
+  std::ostringstream out;
+  out << kHeader << '\n';
+  out << "session " << text(obstacles.session) << '\n';
+  out << "topic_stamp " << number(obstacles.topic_stamp_s) << '\n';
+  for (const EllipseSpec& spec : obstacles.service) writeSpec(out, "service", spec);
+  for (const EllipseSpec& spec : obstacles.topic) writeSpec(out, "topic", spec);
+  out << "end\n";
+  return out.str();
+}
+
+std::string parseObstacles(const std::string& input, StoredObstacles& out) {
+  // Records end with '\n'; names and frames are length-prefixed and may hold any byte, newlines
+  // included, so the reader walks positions rather than lines.
+  StoredObstacles parsed;
+  std::size_t pos = 0;
+  std::size_t record = 0;
+  const auto at = [&](const std::string& what) {
+    return "record " + std::to_string(record) + ": " + what;
+  };
+  const auto restOfLine = [&](std::string& rest) {
+    const std::size_t newline = input.find('\n', pos);
+    if (newline == std::string::npos) return false;
+    rest = input.substr(pos, newline - pos);
+    pos = newline + 1;
+    return true;
+  };
+  if (input.empty()) return "empty file";
+  std::string line;
+  ++record;
+  if (!restOfLine(line) || line != kHeader) {
+    return at("expected '" + std::string(kHeader) + "'");
+  }
+  while (true) {
+    ++record;
+    if (pos >= input.size()) return "truncated: no 'end' record";
+    const std::size_t space = input.find_first_of(" \n", pos);
+    if (space == std::string::npos) return "truncated: no 'end' record";
+    const std::string kind = input.substr(pos, space - pos);
+    pos = space + (input[space] == ' ' ? 1 : 0);
+    if (kind == "end") {
+      if (!restOfLine(line) || !line.empty() || pos != input.size()) {
+        return at("expected nothing after 'end'");
+      }
+      break;
+    }
+    if (kind == "session") {
+      if (!readText(input, pos, parsed.session) || !restOfLine(line) || !line.empty()) {
+        return at("expected session <length>:<id>");
+      }
+    } else if (kind == "topic_stamp") {
+      std::istringstream value(restOfLine(line) ? line : "");
+      std::string extra;
+      if (!(value >> parsed.topic_stamp_s) || (value >> extra)) {
+        return at("expected topic_stamp <seconds>");
+      }
+    } else if (kind == "service" || kind == "topic") {
+      EllipseSpec spec;
+      if (!readText(input, pos, spec.name) || !readText(input, pos, spec.frame_id) ||
+          !restOfLine(line) || !readNumbers(line, spec)) {
+        return at("expected " + kind + " <name> <frame> x y angle radius_x radius_y padding");
+      }
+      (kind == "service" ? parsed.service : parsed.topic).push_back(spec);
+    } else {
+      return at("unknown entry '" + kind + "'");
+    }
+  }
+  out = std::move(parsed);
+  return {};
+}
+
+std::string writeFileAtomically(const std::string& path, const std::string& content) {
+  const std::string temporary = path + ".tmp." + std::to_string(::getpid());
+  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) return errnoText("cannot create", temporary);
+  std::size_t written = 0;
+  while (written < content.size()) {
+    const ssize_t n = ::write(fd, content.data() + written, content.size() - written);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      const std::string error = errnoText("cannot write", temporary);
+      ::close(fd);
+      return error;
+    }
+    written += static_cast<std::size_t>(n);
+  }
+  if (::fsync(fd) != 0) {
+    const std::string error = errnoText("cannot fsync", temporary);
+    ::close(fd);
+    return error;
+  }
+  if (::close(fd) != 0) return errnoText("cannot close", temporary);
+  if (::rename(temporary.c_str(), path.c_str()) != 0) return errnoText("cannot rename to", path);
+  const std::size_t slash = path.rfind('/');
+  const std::string directory = slash == std::string::npos ? "." : path.substr(0, slash + 1);
+  const int dir = ::open(directory.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (dir < 0) return errnoText("cannot open directory", directory);
+  const bool synced = ::fsync(dir) == 0;
+  const std::string error = synced ? "" : errnoText("cannot fsync directory", directory);
+  ::close(dir);
+  return error;
+}
+
+std::string makeParentDirectories(const std::string& path) {
+  for (std::size_t slash = path.find('/', 1); slash != std::string::npos;
+       slash = path.find('/', slash + 1)) {
+    const std::string directory = path.substr(0, slash);
+    if (::mkdir(directory.c_str(), 0755) != 0 && errno != EEXIST) {
+      return errnoText("cannot create directory", directory);
+    }
+  }
+  return {};
+}
+
+bool readWholeFile(const std::string& path, std::string& content, bool& missing,
+                   std::string& error) {
+  missing = false;
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    missing = errno == ENOENT;
+    if (!missing) error = errnoText("cannot open", path);
+    return false;
+  }
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  content = buffer.str();
+  return true;
+}
+
+}  // namespace ellipse_collision::app
