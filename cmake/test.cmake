@@ -63,6 +63,14 @@ ellipse_collision_add_gtest(test_ros_units LIBRARIES ellipse_collision_ros SOURC
   test/ros/test_node_config.cpp
   test/ros/test_collision_markers.cpp)
 
+# URDF links to ellipses (test/fixtures/), fit_link_ellipses' YAML read back by the node's parser.
+ellipse_collision_add_gtest(test_urdf_links LIBRARIES ellipse_collision_ros SOURCES
+  test/ros/test_urdf_links.cpp)
+target_compile_definitions(test_urdf_links PRIVATE
+  ELLIPSE_COLLISION_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
+  FIT_LINK_ELLIPSES_BIN="$<TARGET_FILE:fit_link_ellipses>")
+add_dependencies(test_urdf_links fit_link_ellipses)
+
 # ---- rostests: roscore, the real node, a tf helper and a gtest client --------------------------
 # Helper node broadcasting the test frames; built with the tests only.
 add_executable(tf_test_broadcaster EXCLUDE_FROM_ALL test/ros/tf_test_broadcaster.cpp)

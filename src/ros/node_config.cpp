@@ -190,9 +190,48 @@ std::vector<std::pair<std::string, std::string>> readAllowedPairs(
   return pairs;
 }
 
+/// `links_from_urdf: {param, links, padding}` -> the fitted link ellipses.
+app::LinkFitResult readLinksFromUrdf(const XmlRpcValue& value, const UrdfLinkFitter& fit_urdf_links) {
+  const std::string where = "parameter ~links_from_urdf";
+  if (value.getType() != XmlRpcValue::TypeStruct) {
+    throw ConfigError(where + ": expected a dict {param, links, padding}, got " +
+                      describeValue(value));
+  }
+  for (auto it = value.begin(); it != value.end(); ++it) {
+    if (it->first != "param" && it->first != "links" && it->first != "padding") {
+      throw ConfigError(where + ": unknown key '" + it->first +
+                        "' (expected one of param, links, padding)");
+    }
+  }
+  std::string param = "robot_description";
+  if (value.hasMember("param")) {
+    param = readString(value["param"], where, "param");
+    if (param.empty()) fail(where, "param", "a parameter name", "''");
+  }
+  app::LinkFitOptions options;
+  if (value.hasMember("links")) {
+    const XmlRpcValue& links = value["links"];
+    if (links.getType() != XmlRpcValue::TypeArray) {
+      fail(where, "links", "a list of link names", describeValue(links));
+    }
+    for (int i = 0; i < links.size(); ++i) {
+      options.links.push_back(readString(links[i], where, app::entryName("links", i)));
+    }
+  }
+  if (value.hasMember("padding")) {
+    options.padding = readInRange(value["padding"], where, "padding", 0.0, core::kMaxRadius);
+  }
+  if (!fit_urdf_links) throw ConfigError(where + ": no URDF reader in this program");
+  try {
+    return fit_urdf_links(param, options);
+  } catch (const std::runtime_error& error) {
+    throw ConfigError(where + ": " + error.what());
+  }
+}
+
 }  // namespace
 
-NodeConfig parseNodeConfig(const XmlRpcValue& params) {
+NodeConfig parseNodeConfig(const XmlRpcValue& params, const UrdfLinkFitter& fit_urdf_links) {
   XmlRpcValue root = params;
   if (root.getType() == XmlRpcValue::TypeInvalid) root = XmlRpcValue();
   if (root.getType() != XmlRpcValue::TypeInvalid && root.getType() != XmlRpcValue::TypeStruct) {
@@ -200,15 +239,17 @@ NodeConfig parseNodeConfig(const XmlRpcValue& params) {
                       describeValue(root));
   }
 
-  const std::set<std::string> known = {"fixed_frame",   "rate",           "tf_timeout",
-                                       "padding",       "links",          "obstacles",
-                                       "allowed_pairs", "self_collision", "warning_distance"};
+  const std::set<std::string> known = {
+      "fixed_frame",    "rate",          "tf_timeout",     "padding",
+      "links",          "obstacles",     "allowed_pairs",  "self_collision",
+      "warning_distance", "links_from_urdf"};
   if (root.getType() == XmlRpcValue::TypeStruct) {
     for (auto it = root.begin(); it != root.end(); ++it) {
       if (!known.count(it->first)) {
         throw ConfigError("parameter ~" + it->first +
                           ": unknown key (expected one of fixed_frame, rate, tf_timeout, padding, "
-                          "links, obstacles, allowed_pairs, self_collision, warning_distance)");
+                          "links, links_from_urdf, obstacles, allowed_pairs, self_collision, "
+                          "warning_distance)");
       }
     }
   }
@@ -240,12 +281,24 @@ NodeConfig parseNodeConfig(const XmlRpcValue& params) {
     config.warning_distance_m = readNonNegative(root["warning_distance"],
                                                 "parameter ~warning_distance", "warning_distance");
   }
-  if (!has("links")) {
+  if (!has("links") && !has("links_from_urdf")) {
     throw ConfigError(
-        "parameter ~links, key 'links': expected a list of ellipses (required; may be []), got "
-        "nothing (is the YAML loaded into the node's private namespace?)");
+        "parameter ~links, key 'links': expected a list of ellipses (required unless "
+        "links_from_urdf is given; may be []), got nothing (is the YAML loaded into the node's "
+        "private namespace?)");
   }
-  config.links = readEllipseList(root["links"], "links", config.padding_m);
+  if (has("links")) config.links = readEllipseList(root["links"], "links", config.padding_m);
+  if (has("links_from_urdf")) {
+    const app::LinkFitResult fitted = readLinksFromUrdf(root["links_from_urdf"], fit_urdf_links);
+    for (const app::EllipseSpec& spec : fitted.links) {
+      if (const auto invalid = app::findInvalidPaddedField(spec, config.padding_m, "frame")) {
+        fail("parameter ~links_from_urdf (link '" + spec.name + "')", invalid->key,
+             invalid->expected, invalid->actual);
+      }
+      config.links.push_back(spec);
+    }
+    config.urdf_links_skipped = fitted.skipped;
+  }
   if (has("obstacles")) {
     config.obstacles = readEllipseList(root["obstacles"], "obstacles", config.padding_m);
   }
@@ -270,11 +323,11 @@ NodeConfig parseNodeConfig(const XmlRpcValue& params) {
   return config;
 }
 
-NodeConfig loadNodeConfig(const ros::NodeHandle& private_nh) {
+NodeConfig loadNodeConfig(const ros::NodeHandle& private_nh, const UrdfLinkFitter& fit_urdf_links) {
   XmlRpcValue params;
   // Absent namespace: no parameters at all, which parseNodeConfig reports as a missing ~links.
   if (!ros::param::get(private_nh.getNamespace(), params)) params = XmlRpcValue();
-  return parseNodeConfig(params);
+  return parseNodeConfig(params, fit_urdf_links);
 }
 
 }  // namespace ellipse_collision

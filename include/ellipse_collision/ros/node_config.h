@@ -3,12 +3,14 @@
 #include <ros/node_handle.h>
 #include <xmlrpcpp/XmlRpcValue.h>
 
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "ellipse_collision/app/ellipse_spec.h"
+#include "ellipse_collision/app/link_fitting.h"
 
 namespace ellipse_collision {
 
@@ -33,20 +35,33 @@ struct NodeConfig {
   double padding_m{0.0};      ///< added to both radii of every ellipse [m], [0, kMaxRadius]
   bool self_collision{true};  ///< also check link against link
   double warning_distance_m{0.0};  ///< separated pairs closer than this are warnings [m]; 0 = off
-  std::vector<app::EllipseSpec> links;
+  std::vector<app::EllipseSpec> links;  ///< `links` entries, then those of `links_from_urdf`
+  /// Links of `links_from_urdf` that were skipped, and why ("base_footprint: no collision
+  /// geometry"); the node logs them at start-up.
+  std::vector<std::string> urdf_links_skipped;
   std::vector<app::EllipseSpec> obstacles;
   std::vector<std::pair<std::string, std::string>> allowed_pairs;
 };
 
+/// Fits the link ellipses of `links_from_urdf`: the URDF in parameter `param`, the links and
+/// padding of `options`. Throws a std::runtime_error naming the parameter (or link, mesh URI) on
+/// failure. The node passes ros/urdf_links.h's reader (urdfLinkFitter()); tests pass their own.
+using UrdfLinkFitter =
+    std::function<app::LinkFitResult(const std::string& param, const app::LinkFitOptions& options)>;
+
 /// Parses and validates the node's private namespace given as one XmlRpc struct. `links` is
-/// required (an empty list is fine), every other key optional; unknown keys are errors, so that a
-/// typo cannot silently fall back to a default. Integers are accepted where a double is expected.
-/// Values out of their documented range are refused, never clamped; every ellipse must pass
-/// findInvalidPaddedField() with the global padding. Throws ConfigError.
-NodeConfig parseNodeConfig(const XmlRpc::XmlRpcValue& params);
+/// required (an empty list is fine) unless `links_from_urdf` is given, every other key optional;
+/// unknown keys are errors, so that a typo cannot silently fall back to a default. Integers are
+/// accepted where a double is expected. Values out of their documented range are refused, never
+/// clamped; every ellipse must pass findInvalidPaddedField() with the global padding.
+/// `links_from_urdf: {param, links, padding}` appends the ellipses `fit_urdf_links` fits to
+/// `links` (an empty `fit_urdf_links` makes it an error). Throws ConfigError.
+NodeConfig parseNodeConfig(const XmlRpc::XmlRpcValue& params,
+                           const UrdfLinkFitter& fit_urdf_links = {});
 
 /// Reads the whole private namespace of `private_nh` from the parameter server and parses it.
 /// Throws ConfigError.
-NodeConfig loadNodeConfig(const ros::NodeHandle& private_nh);
+NodeConfig loadNodeConfig(const ros::NodeHandle& private_nh,
+                          const UrdfLinkFitter& fit_urdf_links = {});
 
 }  // namespace ellipse_collision
