@@ -173,6 +173,22 @@ void expectClustersEnclosed(const std::vector<Points>& clusters, const ClusterEl
   }
 }
 
+TEST(ClusterEllipses, NoisyWallGetsAnEllipseAsLongAsTheWall) {
+  // A 2 m wall with 1e-4 m of noise across: the minimum-area ellipse of such a band is sqrt(2)
+  // times longer than the band; with min_radius 0.05 the ellipse must hug the wall's ends.
+  std::mt19937_64 random(7);
+  std::uniform_real_distribution<double> noise(-1e-4, 1e-4);
+  Points wall;
+  for (int i = 0; i <= 100; ++i) wall.emplace_back(-1.0 + 0.02 * i, -2.0 + noise(random));
+  const ClusterEllipses fit = clusterEllipses(wall, 0.1, 1, 0.05);
+  int violations = 0;
+  expectClustersEnclosed({wall}, fit, 0.05, violations);
+  ASSERT_EQ(fit.ellipses.size(), 1u);
+  EXPECT_LT(fit.ellipses[0].radius_x, 1.0 + 1e-3);
+  EXPECT_LT(fit.ellipses[0].radius_y, 0.05 + 1e-3);
+  EXPECT_NEAR(fit.ellipses[0].center.x(), 0.0, 1e-3);
+}
+
 TEST(ClusterEllipses, OneAndTwoPointClustersGetMinRadiusEllipses) {
   const Points p = {{0, 0}, {5, 0}, {5, 0.1}};
   const ClusterEllipses fit = clusterEllipses(p, 0.5, 1, 0.05);
