@@ -25,4 +25,5 @@ set(ELLIPSE_COLLISION_APP_SOURCES
   src/app/ellipse_spec.cpp
   src/app/field_error.cpp
   src/app/link_fitting.cpp
+  src/app/scan_obstacles.cpp
   src/app/scene_placement.cpp)

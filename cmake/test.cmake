@@ -100,6 +100,10 @@ ellipse_collision_add_rostest(test_node_cli test/ros/node_cli.test
   test/ros/test_node_cli.cpp)
 ellipse_collision_add_rostest(test_bad_config test/ros/bad_config.test
   test/ros/test_bad_config.cpp)
+# A synthetic LaserScan through scan_obstacles into the node's ~obstacles.
+ellipse_collision_add_rostest(test_scan_obstacles test/ros/scan_obstacles.test
+  test/ros/test_scan_obstacles.cpp)
+add_dependencies(test_scan_obstacles scan_obstacles)
 
 # The rospy example client against the example configuration (a Python rostest).
 add_rostest(test/ros/python_client.test

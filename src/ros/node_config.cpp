@@ -330,4 +330,51 @@ NodeConfig loadNodeConfig(const ros::NodeHandle& private_nh, const UrdfLinkFitte
   return parseNodeConfig(params, fit_urdf_links);
 }
 
+app::ScanObstacleSettings parseScanObstacleSettings(const XmlRpcValue& params) {
+  XmlRpcValue root = params;
+  if (root.getType() == XmlRpcValue::TypeInvalid) return {};
+  if (root.getType() != XmlRpcValue::TypeStruct) {
+    throw ConfigError("private namespace: expected a dict of parameters, got " +
+                      describeValue(root));
+  }
+  const std::set<std::string> known = {"cluster_distance", "min_cluster_points", "min_radius",
+                                       "z_min",            "z_max",              "name_prefix"};
+  for (auto it = root.begin(); it != root.end(); ++it) {
+    if (!known.count(it->first)) {
+      throw ConfigError("parameter ~" + it->first +
+                        ": unknown key (expected one of cluster_distance, min_cluster_points, "
+                        "min_radius, z_min, z_max, name_prefix)");
+    }
+  }
+  app::ScanObstacleSettings settings;
+  for (const auto& [key, field] :
+       {std::pair<const char*, double*>{"cluster_distance", &settings.cluster_distance},
+        {"min_radius", &settings.min_radius},
+        {"z_min", &settings.z_min},
+        {"z_max", &settings.z_max}}) {
+    if (root.hasMember(key)) *field = readNumber(root[key], std::string("parameter ~") + key, key);
+  }
+  if (root.hasMember("min_cluster_points")) {
+    XmlRpcValue value = root["min_cluster_points"];
+    if (value.getType() != XmlRpcValue::TypeInt) {
+      fail("parameter ~min_cluster_points", "min_cluster_points", "an integer",
+           describeValue(value));
+    }
+    settings.min_cluster_points = static_cast<int&>(value);
+  }
+  if (root.hasMember("name_prefix")) {
+    settings.name_prefix = readString(root["name_prefix"], "parameter ~name_prefix", "name_prefix");
+  }
+  if (const auto invalid = app::findInvalidSetting(settings)) {
+    fail("parameter ~" + invalid->key, invalid->key, invalid->expected, invalid->actual);
+  }
+  return settings;
+}
+
+app::ScanObstacleSettings loadScanObstacleSettings(const ros::NodeHandle& private_nh) {
+  XmlRpcValue params;
+  if (!ros::param::get(private_nh.getNamespace(), params)) params = XmlRpcValue();
+  return parseScanObstacleSettings(params);
+}
+
 }  // namespace ellipse_collision

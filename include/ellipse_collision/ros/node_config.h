@@ -11,6 +11,7 @@
 
 #include "ellipse_collision/app/ellipse_spec.h"
 #include "ellipse_collision/app/link_fitting.h"
+#include "ellipse_collision/app/scan_obstacles.h"
 
 namespace ellipse_collision {
 
@@ -63,5 +64,13 @@ NodeConfig parseNodeConfig(const XmlRpc::XmlRpcValue& params,
 /// Throws ConfigError.
 NodeConfig loadNodeConfig(const ros::NodeHandle& private_nh,
                           const UrdfLinkFitter& fit_urdf_links = {});
+
+/// Parses scan_obstacles' private namespace (every key optional, documented defaults in
+/// app::ScanObstacleSettings; unknown keys and wrong types are errors; ranges from
+/// app::findInvalidSetting()). Throws ConfigError naming the key.
+app::ScanObstacleSettings parseScanObstacleSettings(const XmlRpc::XmlRpcValue& params);
+
+/// Reads scan_obstacles' private namespace from the parameter server and parses it.
+app::ScanObstacleSettings loadScanObstacleSettings(const ros::NodeHandle& private_nh);
 
 }  // namespace ellipse_collision
