@@ -61,7 +61,8 @@ ellipse_collision_add_gtest(test_app LIBRARIES ellipse_collision_app SOURCES
 ellipse_collision_add_gtest(test_ros_units LIBRARIES ellipse_collision_ros SOURCES
   test/ros/test_conversions.cpp
   test/ros/test_node_config.cpp
-  test/ros/test_collision_markers.cpp)
+  test/ros/test_collision_markers.cpp
+  test/ros/test_scan_obstacles_units.cpp)
 
 # URDF links to ellipses (test/fixtures/), fit_link_ellipses' YAML read back by the node's parser.
 ellipse_collision_add_gtest(test_urdf_links LIBRARIES ellipse_collision_ros SOURCES
