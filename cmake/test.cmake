@@ -99,6 +99,7 @@ ellipse_collision_add_rostest(test_node_topics test/ros/node_topics.test
   test/ros/test_node_topics.cpp)
 ellipse_collision_add_rostest(test_node_cli test/ros/node_cli.test
   test/ros/test_node_cli.cpp)
+add_dependencies(test_node_cli fit_link_ellipses)
 ellipse_collision_add_rostest(test_bad_config test/ros/bad_config.test
   test/ros/test_bad_config.cpp)
 # A synthetic LaserScan through scan_obstacles into the node's ~obstacles.
