@@ -55,7 +55,8 @@ target_compile_options(test_check_ellipses PRIVATE ${ELLIPSE_COLLISION_WARNINGS}
 ellipse_collision_add_gtest(test_app LIBRARIES ellipse_collision_app SOURCES
   test/app/test_ellipse_registry.cpp
   test/app/test_field_validation.cpp
-  test/app/test_collision_check.cpp)
+  test/app/test_collision_check.cpp
+  test/app/test_link_fitting.cpp)
 
 # ---- ROS layer units (test/ros): conversions, parameters, markers; no master -------------------
 ellipse_collision_add_gtest(test_ros_units LIBRARIES ellipse_collision_ros SOURCES
