@@ -47,3 +47,7 @@ target_include_directories(bench_service_roundtrip PRIVATE include ${catkin_INCL
 target_link_libraries(bench_service_roundtrip ${catkin_LIBRARIES})
 target_compile_options(bench_service_roundtrip PRIVATE ${ELLIPSE_COLLISION_WARNINGS})
 add_dependencies(bench_service_roundtrip ${PROJECT_NAME}_generate_messages_cpp)
+
+# scan_obstacles' path for one 720-beam LaserScan: us per scan and % of one core at 40 Hz.
+ellipse_collision_add_benchmark(bench_scan_obstacles bench/bench_scan_obstacles.cpp
+  LIBRARIES ellipse_collision_ros)

@@ -7,6 +7,7 @@ find_package(std_srvs REQUIRED)
 add_executable(demo_driver
   demo/src/demo_driver_node.cpp
   demo/src/demo_driver.cpp
+  demo/src/demo_scanner.cpp
   demo/src/demo_trajectory.cpp)
 target_include_directories(demo_driver PRIVATE
   demo/src ${sensor_msgs_INCLUDE_DIRS} ${std_srvs_INCLUDE_DIRS})

@@ -6,9 +6,12 @@ add_library(ellipse_collision_ros
   src/ros/collision_node.cpp
   src/ros/conversions.cpp
   src/ros/node_config.cpp
-  src/ros/tf_lookup.cpp)
+  src/ros/scan_obstacles.cpp
+  src/ros/tf_lookup.cpp
+  src/ros/urdf_links.cpp)
 target_include_directories(ellipse_collision_ros PUBLIC include ${catkin_INCLUDE_DIRS})
-target_link_libraries(ellipse_collision_ros PUBLIC ellipse_collision_app ${catkin_LIBRARIES})
+target_link_libraries(ellipse_collision_ros PUBLIC ellipse_collision_app ${catkin_LIBRARIES}
+  PRIVATE ${ASSIMP_LIBRARIES})
 target_compile_options(ellipse_collision_ros PRIVATE ${ELLIPSE_COLLISION_WARNINGS})
 add_dependencies(ellipse_collision_ros
   ${PROJECT_NAME}_generate_messages_cpp ${catkin_EXPORTED_TARGETS})
@@ -18,7 +21,18 @@ target_link_libraries(ellipse_collision_node ellipse_collision_ros)
 target_compile_options(ellipse_collision_node PRIVATE ${ELLIPSE_COLLISION_WARNINGS})
 add_dependencies(ellipse_collision_node ${PROJECT_NAME}_generate_messages_cpp)
 
-install(TARGETS ellipse_collision_ros ellipse_collision_node
+# scan_obstacles: obstacle ellipses from LaserScan and PointCloud2.
+add_executable(scan_obstacles src/nodes/scan_obstacles_node.cpp)
+target_link_libraries(scan_obstacles ellipse_collision_ros)
+target_compile_options(scan_obstacles PRIVATE ${ELLIPSE_COLLISION_WARNINGS})
+add_dependencies(scan_obstacles ${PROJECT_NAME}_generate_messages_cpp)
+
+# fit_link_ellipses: a URDF's link ellipses as a `links:` block for the configuration.
+add_executable(fit_link_ellipses src/tools/fit_link_ellipses.cpp)
+target_link_libraries(fit_link_ellipses ellipse_collision_ros)
+target_compile_options(fit_link_ellipses PRIVATE ${ELLIPSE_COLLISION_WARNINGS})
+
+install(TARGETS ellipse_collision_ros ellipse_collision_node scan_obstacles fit_link_ellipses
   ARCHIVE DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION}
   LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION}
   RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})

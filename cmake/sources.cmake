@@ -26,6 +26,8 @@ set(ELLIPSE_COLLISION_APP_SOURCES
   src/app/ellipse_registry.cpp
   src/app/ellipse_spec.cpp
   src/app/field_error.cpp
-  src/app/scene_placement.cpp
+  src/app/link_fitting.cpp
   src/app/obstacle_store.cpp
+  src/app/scan_obstacles.cpp
+  src/app/scene_placement.cpp
   src/app/transform_lookup.cpp)

@@ -62,13 +62,23 @@ ellipse_collision_add_gtest(test_app LIBRARIES ellipse_collision_app SOURCES
   test/app/test_ellipse_registry.cpp
   test/app/test_field_validation.cpp
   test/app/test_collision_check.cpp
-  test/app/test_obstacle_store.cpp)
+  test/app/test_obstacle_store.cpp
+  test/app/test_link_fitting.cpp)
 
 # ---- ROS layer units (test/ros): conversions, parameters, markers; no master -------------------
 ellipse_collision_add_gtest(test_ros_units LIBRARIES ellipse_collision_ros SOURCES
   test/ros/test_conversions.cpp
   test/ros/test_node_config.cpp
-  test/ros/test_collision_markers.cpp)
+  test/ros/test_collision_markers.cpp
+  test/ros/test_scan_obstacles_units.cpp)
+
+# URDF links to ellipses (test/fixtures/), fit_link_ellipses' YAML read back by the node's parser.
+ellipse_collision_add_gtest(test_urdf_links LIBRARIES ellipse_collision_ros SOURCES
+  test/ros/test_urdf_links.cpp)
+target_compile_definitions(test_urdf_links PRIVATE
+  ELLIPSE_COLLISION_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
+  FIT_LINK_ELLIPSES_BIN="$<TARGET_FILE:fit_link_ellipses>")
+add_dependencies(test_urdf_links fit_link_ellipses)
 
 # ---- rostests: roscore, the real node, a tf helper and a gtest client --------------------------
 # Helper node broadcasting the test frames; built with the tests only.
@@ -103,8 +113,13 @@ ellipse_collision_add_rostest(test_respawn test/ros/respawn.test
   test/ros/test_respawn.cpp)
 ellipse_collision_add_rostest(test_node_cli test/ros/node_cli.test
   test/ros/test_node_cli.cpp)
+add_dependencies(test_node_cli fit_link_ellipses)
 ellipse_collision_add_rostest(test_bad_config test/ros/bad_config.test
   test/ros/test_bad_config.cpp)
+# A synthetic LaserScan through scan_obstacles into the node's ~obstacles.
+ellipse_collision_add_rostest(test_scan_obstacles test/ros/scan_obstacles.test
+  test/ros/test_scan_obstacles.cpp)
+add_dependencies(test_scan_obstacles scan_obstacles)
 
 # The rospy example client against the example configuration (a Python rostest).
 add_rostest(test/ros/python_client.test
@@ -160,6 +175,7 @@ ellipse_collision_add_gtest(test_demo_units LIBRARIES ellipse_collision_core ${X
   test/demo/test_demo_units.cpp
   test/demo/rviz_top_down_view.cpp
   test/demo/screen_image.cpp
+  demo/src/demo_scanner.cpp
   demo/src/demo_trajectory.cpp)
 target_include_directories(test_demo_units PRIVATE demo/src ${X11_INCLUDE_DIR})
 target_compile_definitions(test_demo_units PRIVATE

@@ -3,7 +3,7 @@
 # prints one table: per pair mix (scene-like, near, near-tangent) each method's ns per pair, its
 # speed relative to FCL 0.7 and its misclassifications against the quad-precision oracle; the
 # polygonal iteration-cap study; then scene checks of 50 links against 100 to 100,000 obstacles
-# (us per cycle, pair tests done, growth with N). Times are CPU times, medians of repetitions
+# (us per cycle, pair tests done, growth with N); scan_obstacles' cost per 720-beam LaserScan. Times are CPU times, medians of repetitions
 # interleaved at random, so that the methods share the machine's noise within one run.
 # Last, the service round trip (issue 7): a roscore of its own on a free port, the node with
 # bench/service_roundtrip.yaml, and bench_service_roundtrip calling ~check_collisions 10,000 times
@@ -31,7 +31,8 @@ out="${repo}/build/benchmark"
 mkdir -p "${out}"
 echo "Building the benchmarks (log: build/benchmark/build.txt)"
 if ! bash "${repo}/scripts/build.sh" -DELLIPSE_COLLISION_BENCHMARKS=ON bench_pair_tests \
-    bench_scene_check bench_distance bench_first_contact bench_service_roundtrip ellipse_collision_node > "${out}/build.txt" 2>&1; then
+    bench_scene_check bench_distance bench_first_contact bench_scan_obstacles \
+    bench_service_roundtrip ellipse_collision_node > "${out}/build.txt" 2>&1; then
   cat "${out}/build.txt" >&2
   exit 1
 fi
@@ -41,6 +42,7 @@ if "${smoke}"; then
   scene_args=(--benchmark_min_time=0.01)
   distance_args=(--benchmark_min_time=0.01)
   contact_args=(--pairs=64 --benchmark_min_time=0.01)
+  scan_args=(--benchmark_min_time=0.01)
   roundtrip_calls=200
 else
   repeat=(--benchmark_repetitions=5 --benchmark_enable_random_interleaving=true
@@ -49,6 +51,7 @@ else
   scene_args=(--benchmark_min_time=0.3 "${repeat[@]}")
   distance_args=(--benchmark_min_time=0.3 "${repeat[@]}")
   contact_args=(--pairs=2000 --benchmark_min_time=0.3 "${repeat[@]}")
+  scan_args=(--benchmark_min_time=0.5 "${repeat[@]}")
   roundtrip_calls=10000
 fi
 
@@ -84,6 +87,12 @@ echo "Running bench_first_contact (us per pair; misclassifications and time erro
 run bench_first_contact "${contact_args[@]}"
 grep -vE '_(mean|stddev|cv)( |$)|^(Run on|CPU|  L[123]|Load Average|\*\*\*)' "${out}/bench_first_contact.txt" \
   | grep -v '^-*$' || true
+
+# ---- scan_obstacles: one 720-beam LaserScan through conversion, clustering and fitting ---------
+echo
+echo "Running bench_scan_obstacles (us per 720-beam scan, % of one core at 40 Hz; budget 5 %)"
+run bench_scan_obstacles "${scan_args[@]}"
+grep -E '^(Benchmark|BM_)' "${out}/bench_scan_obstacles.txt" | grep -vE '_(stddev|cv)( |$)' || true
 
 # ---- service round trip (issue 7) ---------------------------------------------------------------
 # Started here, stopped by the EXIT trap whatever ends the script: the node first, then roscore

@@ -58,6 +58,11 @@ DEBIAN_PACKAGES=(
   xauth
   imagemagick
   libx11-dev
+  # robot model in: URDF parsing (urdf::Model), meshes through assimp and package:// / file://
+  # URIs through resource_retriever (fit_link_ellipses, ~links_from_urdf)
+  liburdf-dev
+  libassimp-dev
+  libresource-retriever-dev
   # fuzzing: clang with libFuzzer and the sanitizer runtimes
   clang
   libclang-rt-14-dev

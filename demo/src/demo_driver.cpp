@@ -1,6 +1,9 @@
 #include "demo_driver.h"
 
 #include <sensor_msgs/JointState.h>
+#include <sensor_msgs/LaserScan.h>
+#include <tf2/utils.h>
+#include <tf2_geometry_msgs/tf2_geometry_msgs.h>
 
 #include <cmath>
 #include <set>
@@ -78,7 +81,8 @@ std::string frameOr(const ros::NodeHandle& nh, const std::string& key,
 DemoDriver::DemoDriver(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
     : nh_(nh), private_nh_(private_nh) {
   const ros::NodeHandle& p = private_nh_;
-  dictKeys(p, "", {"rate", "odom_frame", "base_frame", "base_path", "joints", "moving_obstacle"});
+  dictKeys(p, "", {"rate", "odom_frame", "base_frame", "base_path", "joints", "moving_obstacle",
+                   "scanner"});
   const double rate_hz = p.hasParam("rate") ? positive(p, "rate") : 30.0;
   odom_frame_ = frameOr(p, "odom_frame", "odom");
   base_frame_ = frameOr(p, "base_frame", "base_link");
@@ -116,8 +120,30 @@ DemoDriver::DemoDriver(const ros::NodeHandle& nh, const ros::NodeHandle& private
   trajectory_.obstacle.end = {number(p, o + "/end_x"), number(p, o + "/end_y")};
   trajectory_.obstacle.period_s = positive(p, o + "/period");
 
+  scanner_frame_ = "laser";
+  if (p.hasParam("scanner")) {
+    dictKeys(p, "scanner", {"frame", "beams", "range_min", "range_max"});
+    scanner_frame_ = frameOr(p, "scanner/frame", scanner_frame_);
+    if (p.hasParam("scanner/beams")) {
+      const double beams = positive(p, "scanner/beams");
+      if (beams != std::floor(beams) || beams < 2 || beams > 100000) {
+        throw DemoConfigError("parameter " + fullName(p, "scanner/beams") +
+                              ": expected an integer within [2, 100000], got " +
+                              core::formatNumber(beams));
+      }
+      scanner_.beams = static_cast<int>(beams);
+      scanner_.angle_increment = 2.0 * M_PI / scanner_.beams;
+    }
+    if (p.hasParam("scanner/range_min")) scanner_.range_min = positive(p, "scanner/range_min");
+    if (p.hasParam("scanner/range_max")) scanner_.range_max = positive(p, "scanner/range_max");
+    if (!(scanner_.range_max > scanner_.range_min)) {
+      throw DemoConfigError("parameter " + fullName(p, "scanner/range_max") +
+                            ": expected a number > range_min");
+    }
+  }
+
   joint_states_pub_ = nh_.advertise<sensor_msgs::JointState>("joint_states", 10);
-  obstacles_pub_ = nh_.advertise<EllipseArray>("obstacles", 10);
+  scan_pub_ = nh_.advertise<sensor_msgs::LaserScan>("scan", 10);
   pause_service_ = private_nh_.advertiseService("pause", &DemoDriver::onPause, this);
 
   started_ = ros::Time::now();
@@ -168,15 +194,49 @@ void DemoDriver::onTimer(const ros::TimerEvent&) {
   }
   joint_states_pub_.publish(joints);
 
-  app::EllipseSpec obstacle = obstacle_;
-  const Eigen::Vector2d position = trajectory_.obstacle.at(t);
-  obstacle.x = position.x();
-  obstacle.y = position.y();
-  EllipseArray obstacles;
-  obstacles.header.stamp = now;
-  obstacles.header.frame_id = odom_frame_;
-  obstacles.ellipses.push_back(toMsg(obstacle));
-  obstacles_pub_.publish(obstacles);
+  const core::Ellipse obstacle = app::paddedEllipse(
+      [&] {
+        app::EllipseSpec spec = obstacle_;
+        const Eigen::Vector2d position = trajectory_.obstacle.at(t);
+        spec.x = position.x();
+        spec.y = position.y();
+        return spec;
+      }(),
+      0.0);
+  publishScan(now, base, obstacle);
+}
+
+void DemoDriver::publishScan(const ros::Time& now, const Pose2D& base,
+                             const core::Ellipse& obstacle) {
+  // Where the scanner sits on the base: a static transform from robot_state_publisher.
+  geometry_msgs::TransformStamped mount;
+  try {
+    mount = tf_buffer_.lookupTransform(base_frame_, scanner_frame_, ros::Time(0));
+  } catch (const tf2::TransformException& error) {
+    ROS_WARN_STREAM_THROTTLE(5.0, "demo_driver: no scan yet: " << error.what());
+    return;
+  }
+  const double c = std::cos(base.yaw), s = std::sin(base.yaw);
+  const double mx = mount.transform.translation.x, my = mount.transform.translation.y;
+  Pose2D sensor;
+  sensor.position = base.position + Eigen::Vector2d(c * mx - s * my, s * mx + c * my);
+  sensor.yaw = base.yaw + tf2::getYaw(mount.transform.rotation);
+
+  sensor_msgs::LaserScan scan;
+  scan.header.stamp = now;
+  scan.header.frame_id = scanner_frame_;
+  scan.angle_min = static_cast<float>(scanner_.angle_min);
+  scan.angle_increment = static_cast<float>(scanner_.angle_increment);
+  scan.angle_max = static_cast<float>(scanner_.angle_min + (scanner_.beams - 1) * scanner_.angle_increment);
+  scan.range_min = static_cast<float>(scanner_.range_min);
+  scan.range_max = static_cast<float>(scanner_.range_max);
+  // Beam angles as the message gives them (float increment), so that the points scan_obstacles
+  // computes are where the rays went.
+  ScannerModel as_sent = scanner_;
+  as_sent.angle_min = scan.angle_min;
+  as_sent.angle_increment = scan.angle_increment;
+  scan.ranges = rayCastScan(sensor, {obstacle}, as_sent);
+  scan_pub_.publish(scan);
 }
 
 }  // namespace ellipse_collision

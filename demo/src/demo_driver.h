@@ -2,11 +2,14 @@
 
 #include <ros/ros.h>
 #include <std_srvs/SetBool.h>
+#include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_broadcaster.h>
+#include <tf2_ros/transform_listener.h>
 
 #include <stdexcept>
 #include <string>
 
+#include "demo_scanner.h"
 #include "demo_trajectory.h"
 #include "ellipse_collision/app/ellipse_spec.h"
 
@@ -19,8 +22,9 @@ class DemoConfigError : public std::runtime_error {
 };
 
 /// demo_driver: moves the demo robot and one obstacle along DemoTrajectory. Publishes joint_states
-/// (for robot_state_publisher), the odom -> base transform, and the moving obstacle as an
-/// EllipseArray on `obstacles` (remapped to the collision node's ~obstacles). The service ~pause
+/// (for robot_state_publisher), the odom -> base transform, and what a planar laser scanner at
+/// the scanner frame sees of the moving obstacle, as a sensor_msgs/LaserScan on `scan` (which
+/// scan_obstacles turns into the collision node's ~obstacles). The service ~pause
 /// (std_srvs/SetBool) stops and restarts the demo clock; while paused everything is still
 /// published, with fresh stamps, at the same pose, so tf stays current and the scene stays still.
 class DemoDriver {
@@ -30,6 +34,9 @@ class DemoDriver {
 
  private:
   void onTimer(const ros::TimerEvent& event);
+  /// Publishes the scan of the obstacle at `obstacle` seen from the base at `base` (both in the
+  /// odom frame), once tf knows where the scanner sits on the base.
+  void publishScan(const ros::Time& now, const Pose2D& base, const core::Ellipse& obstacle);
   bool onPause(std_srvs::SetBool::Request& request, std_srvs::SetBool::Response& response);
   /// The demo clock [s]: ROS time since start, minus the time spent paused.
   double demoTime(const ros::Time& now) const;
@@ -40,10 +47,14 @@ class DemoDriver {
   std::string base_frame_;
   DemoTrajectory trajectory_;
   app::EllipseSpec obstacle_;  ///< the moving obstacle's shape; x, y follow trajectory_.obstacle
+  std::string scanner_frame_;
+  ScannerModel scanner_;
 
   tf2_ros::TransformBroadcaster tf_broadcaster_;
+  tf2_ros::Buffer tf_buffer_;
+  tf2_ros::TransformListener tf_listener_{tf_buffer_};
   ros::Publisher joint_states_pub_;
-  ros::Publisher obstacles_pub_;
+  ros::Publisher scan_pub_;
   ros::ServiceServer pause_service_;
   ros::Timer timer_;
 

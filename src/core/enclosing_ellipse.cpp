@@ -537,6 +537,56 @@ EnclosingEllipse degenerateResult(const std::vector<Vec2>& points) {
   return result;
 }
 
+/// The band of `points` along the unit `direction`: the segment between the extreme projections,
+/// on the line through the middle of the band, and the band's half-width (rounded up, with the
+/// rounding of the ends, as degenerateResult()).
+EnclosingEllipse bandAlong(const std::vector<Vec2>& points, const Vec2& direction) {
+  const Vec2 a = points.front();
+  const long double ux = direction.x(), uy = direction.y();
+  long double lo = 0.0L, hi = 0.0L, across_lo = 0.0L, across_hi = 0.0L, extent = 0.0L;
+  for (const Vec2& p : points) {
+    const long double dx = static_cast<long double>(p.x()) - a.x();
+    const long double dy = static_cast<long double>(p.y()) - a.y();
+    const long double along = ux * dx + uy * dy, across = ux * dy - uy * dx;
+    lo = std::min(lo, along);
+    hi = std::max(hi, along);
+    across_lo = std::min(across_lo, across);
+    across_hi = std::max(across_hi, across);
+    extent = std::max(extent, std::abs(dx) + std::abs(dy));
+  }
+  const long double middle = 0.5L * (across_lo + across_hi);
+  const Vec2 normal(-direction.y(), direction.x());
+  EnclosingEllipse result;
+  result.status = EnclosingStatus::Degenerate;
+  result.segment_start = a + static_cast<double>(lo) * direction + static_cast<double>(middle) * normal;
+  result.segment_end = a + static_cast<double>(hi) * direction + static_cast<double>(middle) * normal;
+  result.half_width = roundedUp(0.5L * (across_hi - across_lo) + 8.0L * DBL_EPSILON * extent);
+  return result;
+}
+
+/// The ellipse around a Degenerate description's segment and half-width with both radii >=
+/// min_radius: the box of half-sizes (h, w) around the segment lies in the ellipse of radii
+/// (a, b) when h^2 / a^2 + w^2 / b^2 <= 1; b >= sqrt(2) w keeps a <= sqrt(2) h. Not certified.
+Ellipse segmentEllipse(const EnclosingEllipse& segment, double min_radius) {
+  const Vec2 along = segment.segment_end - segment.segment_start;
+  const double half_length = 0.5 * along.norm();
+  const double w = segment.half_width;
+  const double b = std::max(min_radius, std::sqrt(2.0) * w);
+  const double a = std::max(min_radius, half_length / std::sqrt(1.0 - (w / b) * (w / b)));
+  Ellipse e;
+  e.center = 0.5 * (segment.segment_start + segment.segment_end);
+  e.angle = half_length > 0.0 ? std::atan2(along.y(), along.x()) : 0.0;
+  if (e.angle > 0.5 * kPi) e.angle -= kPi;
+  if (e.angle <= -0.5 * kPi) e.angle += kPi;
+  e.radius_x = a;
+  e.radius_y = b;
+  if (b > a) {
+    std::swap(e.radius_x, e.radius_y);
+    e.angle += e.angle > 0.0 ? -0.5 * kPi : 0.5 * kPi;
+  }
+  return e;
+}
+
 std::string outOfRange(const Ellipse& e) {
   const std::string reason = invalidReason(e);
   return reason.empty() ? reason : "the enclosing ellipse is out of range: " + reason;
@@ -612,6 +662,7 @@ EnclosingEllipse enclosingEllipseWithMinRadius(const std::vector<Eigen::Vector2d
   EnclosingEllipse result = minimumAreaEllipse(points);
   if (result.status == EnclosingStatus::Error) return result;
   if (result.status == EnclosingStatus::Ok) {
+    const Ellipse minimum = result.ellipse;
     // A larger radius on the same axes gives an ellipse containing the old one.
     result.ellipse.radius_x = std::max(result.ellipse.radius_x, min_radius);
     result.ellipse.radius_y = std::max(result.ellipse.radius_y, min_radius);
@@ -619,25 +670,19 @@ EnclosingEllipse enclosingEllipseWithMinRadius(const std::vector<Eigen::Vector2d
       std::swap(result.ellipse.radius_x, result.ellipse.radius_y);
       result.ellipse.angle += result.ellipse.angle > 0.0 ? -0.5 * kPi : 0.5 * kPi;
     }
-  } else {
-    // The box of half-sizes (h, w) around the segment lies in the ellipse of radii (a, b) when
-    // h^2 / a^2 + w^2 / b^2 <= 1; b >= sqrt(2) w keeps a <= sqrt(2) h.
-    const Vec2 along = result.segment_end - result.segment_start;
-    const double half_length = 0.5 * along.norm();
-    const double w = result.half_width;
-    const double b = std::max(min_radius, std::sqrt(2.0) * w);
-    const double a = std::max(min_radius, half_length / std::sqrt(1.0 - (w / b) * (w / b)));
-    Ellipse e;
-    e.center = 0.5 * (result.segment_start + result.segment_end);
-    e.angle = half_length > 0.0 ? std::atan2(along.y(), along.x()) : 0.0;
-    if (e.angle > 0.5 * kPi) e.angle -= kPi;
-    if (e.angle <= -0.5 * kPi) e.angle += kPi;
-    e.radius_x = a;
-    e.radius_y = b;
-    if (b > a) {
-      std::swap(e.radius_x, e.radius_y);
-      e.angle += e.angle > 0.0 ? -0.5 * kPi : 0.5 * kPi;
+    if (minimum.radius_y < min_radius) {
+      // A thin set (a noisy wall): the minimum-area ellipse of a thin band is sqrt(2) times
+      // longer than the band, and raising its minor radius keeps that length. The band's own
+      // ellipse (as for collinear sets) along the major axis is then often much smaller.
+      const Vec2 direction(std::cos(minimum.angle), std::sin(minimum.angle));
+      Ellipse band = segmentEllipse(bandAlong(points, direction), min_radius);
+      if (certify(band, points) &&
+          band.radius_x * band.radius_y < result.ellipse.radius_x * result.ellipse.radius_y) {
+        result.ellipse = band;
+      }
     }
+  } else {
+    const Ellipse e = segmentEllipse(result, min_radius);
     result = EnclosingEllipse{};
     result.status = EnclosingStatus::Ok;
     result.ellipse = e;

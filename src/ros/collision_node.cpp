@@ -12,6 +12,7 @@
 #include "ellipse_collision/core/number_format.h"
 #include "ellipse_collision/ros/conversions.h"
 #include "ellipse_collision/ros/tf_lookup.h"
+#include "ellipse_collision/ros/urdf_links.h"
 
 namespace ellipse_collision {
 namespace {
@@ -42,7 +43,7 @@ diagnostic_msgs::KeyValue keyValue(const std::string& key, const std::string& va
 CollisionNode::CollisionNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
     : nh_(nh),
       private_nh_(private_nh),
-      config_(loadNodeConfig(private_nh)),
+      config_(loadNodeConfig(private_nh, fitUrdfLinksFromParam)),
       settings_(makeSettings(config_)),
       registry_(config_.links, config_.obstacles, config_.limits),
       tf_buffer_(),
@@ -71,6 +72,9 @@ CollisionNode::CollisionNode(const ros::NodeHandle& nh, const ros::NodeHandle& p
   diagnostics_timer_ =
       private_nh_.createTimer(ros::Duration(1.0), &CollisionNode::onDiagnosticsTimer, this);
 
+  for (const std::string& skipped : config_.urdf_links_skipped) {
+    ROS_INFO_STREAM("ellipse_collision: links_from_urdf skipped " << skipped);
+  }
   ROS_INFO_STREAM("ellipse_collision: "
                   << config_.links.size() << " links, " << config_.obstacles.size()
                   << " obstacles in '" << config_.fixed_frame << "', "

@@ -199,9 +199,48 @@ std::vector<std::pair<std::string, std::string>> readAllowedPairs(
   return pairs;
 }
 
+/// `links_from_urdf: {param, links, padding}` -> the fitted link ellipses.
+app::LinkFitResult readLinksFromUrdf(const XmlRpcValue& value, const UrdfLinkFitter& fit_urdf_links) {
+  const std::string where = "parameter ~links_from_urdf";
+  if (value.getType() != XmlRpcValue::TypeStruct) {
+    throw ConfigError(where + ": expected a dict {param, links, padding}, got " +
+                      describeValue(value));
+  }
+  for (auto it = value.begin(); it != value.end(); ++it) {
+    if (it->first != "param" && it->first != "links" && it->first != "padding") {
+      throw ConfigError(where + ": unknown key '" + it->first +
+                        "' (expected one of param, links, padding)");
+    }
+  }
+  std::string param = "robot_description";
+  if (value.hasMember("param")) {
+    param = readString(value["param"], where, "param");
+    if (param.empty()) fail(where, "param", "a parameter name", "''");
+  }
+  app::LinkFitOptions options;
+  if (value.hasMember("links")) {
+    const XmlRpcValue& links = value["links"];
+    if (links.getType() != XmlRpcValue::TypeArray) {
+      fail(where, "links", "a list of link names", describeValue(links));
+    }
+    for (int i = 0; i < links.size(); ++i) {
+      options.links.push_back(readString(links[i], where, app::entryName("links", i)));
+    }
+  }
+  if (value.hasMember("padding")) {
+    options.padding = readInRange(value["padding"], where, "padding", 0.0, core::kMaxRadius);
+  }
+  if (!fit_urdf_links) throw ConfigError(where + ": no URDF reader in this program");
+  try {
+    return fit_urdf_links(param, options);
+  } catch (const std::runtime_error& error) {
+    throw ConfigError(where + ": " + error.what());
+  }
+}
+
 }  // namespace
 
-NodeConfig parseNodeConfig(const XmlRpcValue& params) {
+NodeConfig parseNodeConfig(const XmlRpcValue& params, const UrdfLinkFitter& fit_urdf_links) {
   XmlRpcValue root = params;
   if (root.getType() == XmlRpcValue::TypeInvalid) root = XmlRpcValue();
   if (root.getType() != XmlRpcValue::TypeInvalid && root.getType() != XmlRpcValue::TypeStruct) {
@@ -210,18 +249,18 @@ NodeConfig parseNodeConfig(const XmlRpcValue& params) {
   }
 
   const std::set<std::string> known = {
-      "fixed_frame",    "rate",             "tf_timeout",        "padding",
-      "links",          "obstacles",        "allowed_pairs",     "self_collision",
-      "warning_distance", "max_transform_age", "obstacle_timeout", "max_obstacles",
-      "max_name_length", "obstacle_store"};
+      "fixed_frame",      "rate",              "tf_timeout",       "padding",
+      "links",            "links_from_urdf",   "obstacles",        "allowed_pairs",
+      "self_collision",   "warning_distance",  "max_transform_age", "obstacle_timeout",
+      "max_obstacles",    "max_name_length",   "obstacle_store"};
   if (root.getType() == XmlRpcValue::TypeStruct) {
     for (auto it = root.begin(); it != root.end(); ++it) {
       if (!known.count(it->first)) {
         throw ConfigError("parameter ~" + it->first +
                           ": unknown key (expected one of fixed_frame, rate, tf_timeout, padding, "
-                          "links, obstacles, allowed_pairs, self_collision, warning_distance, "
-                          "max_transform_age, obstacle_timeout, max_obstacles, max_name_length, "
-                          "obstacle_store)");
+                          "links, links_from_urdf, obstacles, allowed_pairs, self_collision, "
+                          "warning_distance, max_transform_age, obstacle_timeout, max_obstacles, "
+                          "max_name_length, obstacle_store)");
       }
     }
   }
@@ -272,12 +311,24 @@ NodeConfig parseNodeConfig(const XmlRpcValue& params) {
   if (has("obstacle_store")) {
     config.obstacle_store = readString(root["obstacle_store"], "parameter ~obstacle_store", "obstacle_store");
   }
-  if (!has("links")) {
+  if (!has("links") && !has("links_from_urdf")) {
     throw ConfigError(
-        "parameter ~links, key 'links': expected a list of ellipses (required; may be []), got "
-        "nothing (is the YAML loaded into the node's private namespace?)");
+        "parameter ~links, key 'links': expected a list of ellipses (required unless "
+        "links_from_urdf is given; may be []), got nothing (is the YAML loaded into the node's "
+        "private namespace?)");
   }
-  config.links = readEllipseList(root["links"], "links", config.padding_m);
+  if (has("links")) config.links = readEllipseList(root["links"], "links", config.padding_m);
+  if (has("links_from_urdf")) {
+    const app::LinkFitResult fitted = readLinksFromUrdf(root["links_from_urdf"], fit_urdf_links);
+    for (const app::EllipseSpec& spec : fitted.links) {
+      if (const auto invalid = app::findInvalidPaddedField(spec, config.padding_m, "frame")) {
+        fail("parameter ~links_from_urdf (link '" + spec.name + "')", invalid->key,
+             invalid->expected, invalid->actual);
+      }
+      config.links.push_back(spec);
+    }
+    config.urdf_links_skipped = fitted.skipped;
+  }
   if (has("obstacles")) {
     config.obstacles = readEllipseList(root["obstacles"], "obstacles", config.padding_m);
   }
@@ -314,11 +365,58 @@ std::string defaultObstacleStore(const std::string& node_name) {
   return directory + "/ellipse_collision/" + file + ".obstacles";
 }
 
-NodeConfig loadNodeConfig(const ros::NodeHandle& private_nh) {
+NodeConfig loadNodeConfig(const ros::NodeHandle& private_nh, const UrdfLinkFitter& fit_urdf_links) {
   XmlRpcValue params;
   // Absent namespace: no parameters at all, which parseNodeConfig reports as a missing ~links.
   if (!ros::param::get(private_nh.getNamespace(), params)) params = XmlRpcValue();
-  return parseNodeConfig(params);
+  return parseNodeConfig(params, fit_urdf_links);
+}
+
+app::ScanObstacleSettings parseScanObstacleSettings(const XmlRpcValue& params) {
+  XmlRpcValue root = params;
+  if (root.getType() == XmlRpcValue::TypeInvalid) return {};
+  if (root.getType() != XmlRpcValue::TypeStruct) {
+    throw ConfigError("private namespace: expected a dict of parameters, got " +
+                      describeValue(root));
+  }
+  const std::set<std::string> known = {"cluster_distance", "min_cluster_points", "min_radius",
+                                       "z_min",            "z_max",              "name_prefix"};
+  for (auto it = root.begin(); it != root.end(); ++it) {
+    if (!known.count(it->first)) {
+      throw ConfigError("parameter ~" + it->first +
+                        ": unknown key (expected one of cluster_distance, min_cluster_points, "
+                        "min_radius, z_min, z_max, name_prefix)");
+    }
+  }
+  app::ScanObstacleSettings settings;
+  for (const auto& [key, field] :
+       {std::pair<const char*, double*>{"cluster_distance", &settings.cluster_distance},
+        {"min_radius", &settings.min_radius},
+        {"z_min", &settings.z_min},
+        {"z_max", &settings.z_max}}) {
+    if (root.hasMember(key)) *field = readNumber(root[key], std::string("parameter ~") + key, key);
+  }
+  if (root.hasMember("min_cluster_points")) {
+    XmlRpcValue value = root["min_cluster_points"];
+    if (value.getType() != XmlRpcValue::TypeInt) {
+      fail("parameter ~min_cluster_points", "min_cluster_points", "an integer",
+           describeValue(value));
+    }
+    settings.min_cluster_points = static_cast<int&>(value);
+  }
+  if (root.hasMember("name_prefix")) {
+    settings.name_prefix = readString(root["name_prefix"], "parameter ~name_prefix", "name_prefix");
+  }
+  if (const auto invalid = app::findInvalidSetting(settings)) {
+    fail("parameter ~" + invalid->key, invalid->key, invalid->expected, invalid->actual);
+  }
+  return settings;
+}
+
+app::ScanObstacleSettings loadScanObstacleSettings(const ros::NodeHandle& private_nh) {
+  XmlRpcValue params;
+  if (!ros::param::get(private_nh.getNamespace(), params)) params = XmlRpcValue();
+  return parseScanObstacleSettings(params);
 }
 
 }  // namespace ellipse_collision

@@ -103,6 +103,57 @@ TEST(ClusterPoints, NoWrapAroundTheScanStart) {
   EXPECT_EQ(clusterPoints(p, 0.1, 1).size(), 3u);
 }
 
+/// Brute-force single linkage: flood fill over all pairs closer than d, clusters in the order of
+/// their first point.
+std::vector<Points> bruteForceClusters(const Points& points, double d) {
+  std::vector<int> label(points.size(), -1);
+  std::vector<Points> clusters;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (label[i] >= 0) continue;
+    label[i] = static_cast<int>(clusters.size());
+    std::vector<std::size_t> stack = {i}, members = {i};
+    while (!stack.empty()) {
+      const std::size_t k = stack.back();
+      stack.pop_back();
+      for (std::size_t j = 0; j < points.size(); ++j) {
+        if (label[j] < 0 && (points[j] - points[k]).norm() < d) {
+          label[j] = label[i];
+          stack.push_back(j);
+          members.push_back(j);
+        }
+      }
+    }
+    std::sort(members.begin(), members.end());
+    clusters.emplace_back();
+    for (const std::size_t m : members) clusters.back().push_back(points[m]);
+  }
+  return clusters;
+}
+
+TEST(ClusterUnorderedPoints, MatchesBruteForceSingleLinkageOnShuffledBlobs) {
+  std::mt19937_64 random(15);
+  std::uniform_real_distribution<double> centre(-5.0, 5.0), offset(-0.3, 0.3);
+  for (int round = 0; round < 20; ++round) {
+    Points points;
+    for (int blob = 0; blob < 12; ++blob) {
+      const Vec2 c(centre(random), centre(random));
+      for (int k = 0; k < 30; ++k) points.push_back(c + Vec2(offset(random), offset(random)));
+    }
+    std::shuffle(points.begin(), points.end(), random);
+    EXPECT_EQ(clusterUnorderedPoints(points, 0.12, 1), bruteForceClusters(points, 0.12));
+  }
+}
+
+TEST(ClusterUnorderedPoints, DropsSmallClustersNonFinitePointsAndHandlesBadDistances) {
+  const Points p = {{0.0, 0.0}, {0.05, 0.0}, {Vec2(kNanF, 0.0)}, {3.0, 3.0}, {0.1, 0.0}};
+  const auto clusters = clusterUnorderedPoints(p, 0.06, 2);
+  ASSERT_EQ(clusters.size(), 1u);
+  EXPECT_EQ(clusters[0].size(), 3u);
+  EXPECT_EQ(clusterUnorderedPoints(p, 0.0, 1).size(), 4u);
+  EXPECT_EQ(clusterUnorderedPoints(p, std::numeric_limits<double>::quiet_NaN(), 1).size(), 4u);
+  EXPECT_EQ(clusterUnorderedPoints(p, 1e-300, 1).size(), 4u);  // cells beyond 2^52: alone
+}
+
 /// Every cluster point inside its ellipse (quad), radii >= min_radius.
 void expectClustersEnclosed(const std::vector<Points>& clusters, const ClusterEllipses& fit,
                             double min_radius, int& violations) {
@@ -120,6 +171,22 @@ void expectClustersEnclosed(const std::vector<Points>& clusters, const ClusterEl
       }
     }
   }
+}
+
+TEST(ClusterEllipses, NoisyWallGetsAnEllipseAsLongAsTheWall) {
+  // A 2 m wall with 1e-4 m of noise across: the minimum-area ellipse of such a band is sqrt(2)
+  // times longer than the band; with min_radius 0.05 the ellipse must hug the wall's ends.
+  std::mt19937_64 random(7);
+  std::uniform_real_distribution<double> noise(-1e-4, 1e-4);
+  Points wall;
+  for (int i = 0; i <= 100; ++i) wall.emplace_back(-1.0 + 0.02 * i, -2.0 + noise(random));
+  const ClusterEllipses fit = clusterEllipses(wall, 0.1, 1, 0.05);
+  int violations = 0;
+  expectClustersEnclosed({wall}, fit, 0.05, violations);
+  ASSERT_EQ(fit.ellipses.size(), 1u);
+  EXPECT_LT(fit.ellipses[0].radius_x, 1.0 + 1e-3);
+  EXPECT_LT(fit.ellipses[0].radius_y, 0.05 + 1e-3);
+  EXPECT_NEAR(fit.ellipses[0].center.x(), 0.0, 1e-3);
 }
 
 TEST(ClusterEllipses, OneAndTwoPointClustersGetMinRadiusEllipses) {

@@ -2,7 +2,9 @@
 // until the demo has been both in collision and clear, freezes it (demo_driver/pause) at a moment
 // with a collision (and, if the demo offers one soon, a warning pair), grabs the screen and checks
 // that rviz draws every colliding ellipse red, every other one in a warning pair yellow and every
-// clear one green, at the pixels the view in demo/rviz/demo.rviz maps it to.
+// clear one green, at the pixels the view in demo/rviz/demo.rviz maps it to. The links come from
+// the URDF (as the node fits them), the moving obstacle only through the simulated scanner and
+// scan_obstacles (the ellipses on the node's ~obstacles).
 #include <std_srvs/SetBool.h>
 #include <tf2_ros/transform_listener.h>
 
@@ -19,6 +21,7 @@
 #include "ellipse_collision/ros/conversions.h"
 #include "ellipse_collision/ros/node_config.h"
 #include "ellipse_collision/ros/tf_lookup.h"
+#include "ellipse_collision/ros/urdf_links.h"
 #include "node_test_utils.h"
 #include "rviz_top_down_view.h"
 #include "screen_image.h"
@@ -226,7 +229,10 @@ TEST(DemoInRviz, CollidingEllipsesAreRedNearOnesYellowAndClearOnesGreen) {
   ASSERT_TRUE(private_nh.getParam("rviz_config", rviz_config)) << "~rviz_config not set";
   const std::string screenshot = private_nh.param<std::string>("screenshot", "");
   const TopDownView view = readTopDownView(rviz_config);
-  const NodeConfig config = loadNodeConfig(ros::NodeHandle("/ellipse_collision"));
+  // The link ellipses as the node fits them from the URDF (~links_from_urdf).
+  const NodeConfig config =
+      loadNodeConfig(ros::NodeHandle("/ellipse_collision"), fitUrdfLinksFromParam);
+  ASSERT_FALSE(config.links.empty()) << "no link ellipses from the demo's URDF";
 
   Recorder<CollisionState> states(nh, nodeTopic("collisions"));
   Recorder<EllipseArray> topic_obstacles(nh, nodeTopic("obstacles"));
@@ -274,7 +280,7 @@ TEST(DemoInRviz, CollidingEllipsesAreRedNearOnesYellowAndClearOnesGreen) {
   const std::set<std::string> colliding = namesIn(frozen, false);
   const std::set<std::string> warned = namesIn(frozen, true);
 
-  // Where every ellipse is now, from tf, the configuration and the driver's last obstacle message.
+  // Where every ellipse is now, from tf, the configuration and scan_obstacles' last message.
   app::ScenePlacement placement(
       tfLookup(tf_buffer, config.fixed_frame, ros::Time(0), ros::Duration(1.0)), config.padding_m);
   std::vector<core::NamedEllipse> placed;

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "demo_scanner.h"
 #include "demo_trajectory.h"
 #include "rviz_top_down_view.h"
 #include "screen_image.h"
@@ -16,6 +17,48 @@
 namespace ellipse_collision {
 namespace test {
 namespace {
+
+TEST(DemoScanner, RayHitsTheNearRimOfTiltedEllipsesAndMissesBehind) {
+  core::Ellipse circle;
+  circle.center = {2.0, 0.0};
+  circle.radius_x = circle.radius_y = 0.5;
+  EXPECT_NEAR(rayHit({0.0, 0.0}, {1.0, 0.0}, circle), 1.5, 1e-12);
+  EXPECT_TRUE(std::isinf(rayHit({0.0, 0.0}, {-1.0, 0.0}, circle)));  // behind
+  EXPECT_TRUE(std::isinf(rayHit({0.0, 0.0}, {0.0, 1.0}, circle)));   // beside
+  EXPECT_TRUE(std::isinf(rayHit({2.0, 0.0}, {1.0, 0.0}, circle)));   // from inside
+  // An ellipse 1 x 0.2 turned a quarter turn, centred at (0, 3): its near rim is at y = 2.
+  core::Ellipse tall;
+  tall.center = {0.0, 3.0};
+  tall.radius_x = 1.0;
+  tall.radius_y = 0.2;
+  tall.angle = 1.5707963267948966;
+  EXPECT_NEAR(rayHit({0.0, 0.0}, {0.0, 1.0}, tall), 2.0, 1e-9);
+  // Oracle for a slanted beam: the hit lies on the rim.
+  const Eigen::Vector2d d = Eigen::Vector2d(0.02, 1.0).normalized();
+  const Eigen::Vector2d p = rayHit({0.0, 0.0}, d, tall) * d;
+  EXPECT_NEAR(std::pow((p.y() - 3.0) / 1.0, 2) + std::pow(p.x() / 0.2, 2), 1.0, 1e-9);
+}
+
+TEST(DemoScanner, ScanSeesTheNearestEllipseInTheSensorsFrame) {
+  core::Ellipse near_one, far_one;
+  near_one.center = {1.0, 1.0};
+  near_one.radius_x = near_one.radius_y = 0.25;
+  far_one.center = {1.0, 4.0};
+  far_one.radius_x = far_one.radius_y = 0.5;
+  ScannerModel model;
+  model.beams = 4;
+  model.angle_min = 0.0;
+  model.angle_increment = 1.5707963267948966;
+  model.range_max = 8.0;
+  Pose2D sensor;
+  sensor.position = {1.0, 0.0};
+  sensor.yaw = 1.5707963267948966;  // beam 0 points along the world's y
+  const std::vector<float> ranges = rayCastScan(sensor, {near_one, far_one}, model);
+  ASSERT_EQ(ranges.size(), 4u);
+  EXPECT_NEAR(ranges[0], 0.75, 1e-6);  // the near one hides the far one
+  EXPECT_TRUE(std::isinf(ranges[1]));
+  EXPECT_TRUE(std::isinf(ranges[2]));
+}
 
 TEST(DemoTrajectory, LoopStartsOnTheXAxisAndGoesCounterClockwise) {
   LoopPath path;

@@ -79,7 +79,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadFile{"self_collision_not_bool", {"parameter ~self_collision", "1 (an int)"}},
         BadFile{"frame_with_slash", {"links[0] (name 'body'), key 'frame'", "'/base_link'"}},
         BadFile{"unknown_entry_key", {"obstacles[0] (name 'crate')", "unknown key 'radius'"}},
-        BadFile{"empty", {"parameter ~links"}}),
+        BadFile{"empty", {"parameter ~links"}},
+        BadFile{"urdf_param_missing",
+                {"parameter ~links_from_urdf", "parameter 'no_such_robot_description'"}}),
     [](const ::testing::TestParamInfo<BadFile>& info) { return std::string(info.param.file); });
 
 }  // namespace

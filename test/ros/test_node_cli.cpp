@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <map>
 #include <sstream>
 
@@ -171,6 +172,29 @@ TEST_F(NodeCli, CheckCollisionsAnswersOnTheCommandLine) {
   EXPECT_NEAR(std::stod(pair->at("contact_scale")), 0.25 / 0.3, 1e-9);
   EXPECT_EQ(answer.unavailable_frames, std::vector<std::string>{"camera_link"});
   EXPECT_CONTAINS(answer.fields.at("message"), "camera_link");
+}
+
+TEST_F(NodeCli, FitLinkEllipsesReadsTheUrdfFromTheParameterServer) {
+  const CommandRun package = runCommand("rospack find ellipse_collision", 30);
+  ASSERT_EQ(package.exit_status, 0) << package.output;
+  const std::string dir = package.output.substr(0, package.output.find_last_not_of('\n') + 1);
+  std::ifstream file(dir + "/test/fixtures/every_geometry.urdf");
+  std::stringstream xml;
+  xml << file.rdbuf();
+  ASSERT_FALSE(xml.str().empty()) << dir;
+  ros::param::set("/fit_test_robot_description", xml.str());
+  const CommandRun run = runCommand(
+      "rosrun ellipse_collision fit_link_ellipses --param /fit_test_robot_description "
+      "--links sphere_link,box_link --padding 0.01",
+      30);
+  EXPECT_EQ(run.exit_status, 0) << run.output;
+  EXPECT_CONTAINS(run.output, "links:\n  - {name: 'sphere_link', frame: 'sphere_link', x: ");
+  EXPECT_CONTAINS(run.output, "  - {name: 'box_link', frame: 'box_link', x: ");
+  EXPECT_CONTAINS(run.output, "padding: 0.01}");
+  const CommandRun missing =
+      runCommand("rosrun ellipse_collision fit_link_ellipses --param /no_such_description", 30);
+  EXPECT_EQ(missing.exit_status, 1) << missing.output;
+  EXPECT_CONTAINS(missing.output, "parameter '/no_such_description'");
 }
 
 TEST_F(NodeCli, QueryWithNameFilterOnTheCommandLine) {

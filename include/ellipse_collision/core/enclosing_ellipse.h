@@ -83,8 +83,9 @@ EnclosingEllipse minimumAreaEllipse(const std::vector<Eigen::Vector2d>& points);
 
 /// An ellipse containing every point [m] with both radii >= `min_radius` [m], for clusters that
 /// may be one point, two points or a line (sensor returns). The minimum-area ellipse when both of
-/// its radii already reach `min_radius`; a too-small radius is raised to `min_radius` (same axes);
-/// for Degenerate sets, the ellipse along the segment with radius_y = max(min_radius,
+/// its radii already reach `min_radius`; a too-small radius is raised to `min_radius` (same axes),
+/// or, when smaller, the band ellipse below along its major axis (a noisy wall: the raised
+/// minimum-area ellipse would be sqrt(2) times longer than the wall); for Degenerate sets, the ellipse along the segment with radius_y = max(min_radius,
 /// sqrt(2) half_width) and the smallest radius_x >= min_radius that contains the points. Always
 /// certified like minimumAreaEllipse(). Status Ok or Error (the errors of minimumAreaEllipse(), or
 /// `min_radius` not finite or outside [kMinRadius, kMaxRadius]); never Degenerate.

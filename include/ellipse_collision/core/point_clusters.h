@@ -28,6 +28,18 @@ std::vector<std::vector<Eigen::Vector2d>> clusterPoints(
     const std::vector<Eigen::Vector2d>& ordered_points, double cluster_distance,
     std::size_t min_cluster_points);
 
+/// Splits unordered points (a point cloud's, projected) into clusters by single linkage: two
+/// points closer than `cluster_distance` [m] (strictly) are in the same cluster, and so are
+/// chains of such points. Clusters come in the order of their first point, each keeping the
+/// input order. Points not finite or beyond kMaxCoordinate are dropped; a `cluster_distance` that
+/// is not > 0 and finite makes every point its own cluster (so do points more than 2^52 cluster
+/// distances from the origin). Clusters with fewer than `min_cluster_points` points are dropped
+/// (0 counts as 1). Cost: O(n) expected through a grid of cells of side `cluster_distance`, plus
+/// the pairs of points in neighbouring cells.
+std::vector<std::vector<Eigen::Vector2d>> clusterUnorderedPoints(
+    const std::vector<Eigen::Vector2d>& points, double cluster_distance,
+    std::size_t min_cluster_points);
+
 /// One ellipse per cluster, each from enclosingEllipseWithMinRadius().
 struct ClusterEllipses {
   std::vector<Ellipse> ellipses;  ///< in the points' frame, in cluster order
@@ -44,5 +56,10 @@ struct ClusterEllipses {
 ClusterEllipses clusterEllipses(const std::vector<Eigen::Vector2d>& ordered_points,
                                 double cluster_distance, std::size_t min_cluster_points,
                                 double min_radius);
+
+/// The second half of clusterEllipses() for clusters formed otherwise (clusterUnorderedPoints()):
+/// per cluster the enclosing ellipse with both radii >= `min_radius` [m].
+ClusterEllipses fitClusters(const std::vector<std::vector<Eigen::Vector2d>>& clusters,
+                            double min_radius);
 
 }  // namespace ellipse_collision::core

@@ -3,6 +3,7 @@
 #include <ros/node_handle.h>
 #include <xmlrpcpp/XmlRpcValue.h>
 
+#include <functional>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -11,6 +12,8 @@
 
 #include "ellipse_collision/app/ellipse_registry.h"
 #include "ellipse_collision/app/ellipse_spec.h"
+#include "ellipse_collision/app/link_fitting.h"
+#include "ellipse_collision/app/scan_obstacles.h"
 
 namespace ellipse_collision {
 
@@ -45,23 +48,44 @@ struct NodeConfig {
   /// File that keeps the runtime obstacles across a crash; unset = defaultObstacleStore(),
   /// "" = off.
   std::optional<std::string> obstacle_store;
-  std::vector<app::EllipseSpec> links;
+  std::vector<app::EllipseSpec> links;  ///< `links` entries, then those of `links_from_urdf`
+  /// Links of `links_from_urdf` that were skipped, and why ("base_footprint: no collision
+  /// geometry"); the node logs them at start-up.
+  std::vector<std::string> urdf_links_skipped;
   std::vector<app::EllipseSpec> obstacles;
   std::vector<std::pair<std::string, std::string>> allowed_pairs;
 };
 
+/// Fits the link ellipses of `links_from_urdf`: the URDF in parameter `param`, the links and
+/// padding of `options`. Throws a std::runtime_error naming the parameter (or link, mesh URI) on
+/// failure. The node passes ros/urdf_links.h's reader (urdfLinkFitter()); tests pass their own.
+using UrdfLinkFitter =
+    std::function<app::LinkFitResult(const std::string& param, const app::LinkFitOptions& options)>;
+
 /// Parses and validates the node's private namespace given as one XmlRpc struct. `links` is
-/// required (an empty list is fine), every other key optional; unknown keys are errors, so that a
-/// typo cannot silently fall back to a default. Integers are accepted where a double is expected.
-/// Values out of their documented range are refused, never clamped; every ellipse must pass
-/// findInvalidPaddedField() with the global padding. Throws ConfigError.
-NodeConfig parseNodeConfig(const XmlRpc::XmlRpcValue& params);
+/// required (an empty list is fine) unless `links_from_urdf` is given, every other key optional;
+/// unknown keys are errors, so that a typo cannot silently fall back to a default. Integers are
+/// accepted where a double is expected. Values out of their documented range are refused, never
+/// clamped; every ellipse must pass findInvalidPaddedField() with the global padding.
+/// `links_from_urdf: {param, links, padding}` appends the ellipses `fit_urdf_links` fits to
+/// `links` (an empty `fit_urdf_links` makes it an error). Throws ConfigError.
+NodeConfig parseNodeConfig(const XmlRpc::XmlRpcValue& params,
+                           const UrdfLinkFitter& fit_urdf_links = {});
 
 /// $ROS_HOME (else ~/.ros)/ellipse_collision/<node name, '/' -> '_'>.obstacles.
 std::string defaultObstacleStore(const std::string& node_name);
 
 /// Reads the whole private namespace of `private_nh` from the parameter server and parses it.
 /// Throws ConfigError.
-NodeConfig loadNodeConfig(const ros::NodeHandle& private_nh);
+NodeConfig loadNodeConfig(const ros::NodeHandle& private_nh,
+                          const UrdfLinkFitter& fit_urdf_links = {});
+
+/// Parses scan_obstacles' private namespace (every key optional, documented defaults in
+/// app::ScanObstacleSettings; unknown keys and wrong types are errors; ranges from
+/// app::findInvalidSetting()). Throws ConfigError naming the key.
+app::ScanObstacleSettings parseScanObstacleSettings(const XmlRpc::XmlRpcValue& params);
+
+/// Reads scan_obstacles' private namespace from the parameter server and parses it.
+app::ScanObstacleSettings loadScanObstacleSettings(const ros::NodeHandle& private_nh);
 
 }  // namespace ellipse_collision

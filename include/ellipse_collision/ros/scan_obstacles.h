@@ -1,0 +1,47 @@
+#pragma once
+
+#include <ros/ros.h>
+#include <sensor_msgs/LaserScan.h>
+#include <sensor_msgs/PointCloud2.h>
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "ellipse_collision/app/scan_obstacles.h"
+#include "ellipse_collision/ros/messages.h"
+
+namespace ellipse_collision {
+
+/// The x, y, z fields of every point of `cloud` [m], in the cloud's frame (any layout
+/// sensor_msgs::PointCloud2ConstIterator reads). Throws std::runtime_error when a field is missing.
+std::vector<Eigen::Vector3f> cloudPoints(const sensor_msgs::PointCloud2& cloud);
+
+/// The obstacles of one sensor message as an EllipseArray with the sensor's header.
+EllipseArray toMsg(const app::SensorObstacles& obstacles, const std_msgs::Header& header);
+
+/// The ellipses of one LaserScan (its header's frame).
+app::SensorObstacles scanObstacles(const sensor_msgs::LaserScan& scan,
+                                   const app::ScanObstacleSettings& settings);
+
+/// scan_obstacles: turns `scan` (sensor_msgs/LaserScan) and `cloud` (sensor_msgs/PointCloud2,
+/// points within a z band) into obstacle ellipses on `obstacles` (EllipseArray, header = the
+/// sensor's frame and stamp), one per cluster of points, every point inside its ellipse
+/// (README: scan_obstacles).
+class ScanObstaclesNode {
+ public:
+  /// Reads and validates the private parameters first; throws ConfigError naming the key.
+  ScanObstaclesNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh);
+
+ private:
+  void onScan(const sensor_msgs::LaserScan::ConstPtr& scan);
+  void onCloud(const sensor_msgs::PointCloud2::ConstPtr& cloud);
+  void publish(const app::SensorObstacles& obstacles, const std_msgs::Header& header);
+
+  ros::NodeHandle nh_;
+  app::ScanObstacleSettings settings_;
+  ros::Publisher obstacles_pub_;
+  ros::Subscriber scan_sub_;
+  ros::Subscriber cloud_sub_;
+};
+
+}  // namespace ellipse_collision

@@ -1,0 +1,84 @@
+#include "ellipse_collision/app/scan_obstacles.h"
+
+#include <cmath>
+
+#include "ellipse_collision/core/number_format.h"
+#include "ellipse_collision/core/point_clusters.h"
+
+namespace ellipse_collision::app {
+namespace {
+
+std::optional<FieldError> outside(const std::string& key, double value, double min, double max) {
+  if (value >= min && value <= max) return std::nullopt;
+  return FieldError{key,
+                    "a number within [" + core::formatNumber(min) + ", " + core::formatNumber(max) + "]",
+                    core::formatNumber(value)};
+}
+
+SensorObstacles toSpecs(const core::ClusterEllipses& fit, const std::string& frame_id,
+                        const ScanObstacleSettings& settings) {
+  SensorObstacles result;
+  result.skipped = fit.skipped;
+  if (!fit.error.empty()) result.skipped.push_back(fit.error);
+  result.ellipses.reserve(fit.ellipses.size());
+  for (std::size_t i = 0; i < fit.ellipses.size(); ++i) {
+    const core::Ellipse& e = fit.ellipses[i];
+    EllipseSpec spec;
+    spec.name = settings.name_prefix + std::to_string(i);
+    spec.frame_id = frame_id;
+    spec.x = e.center.x();
+    spec.y = e.center.y();
+    spec.angle = e.angle;
+    spec.radius_x = e.radius_x;
+    spec.radius_y = e.radius_y;
+    result.ellipses.push_back(spec);
+  }
+  return result;
+}
+
+}  // namespace
+
+std::optional<FieldError> findInvalidSetting(const ScanObstacleSettings& s) {
+  if (auto e = outside("cluster_distance", s.cluster_distance, kMinClusterDistance,
+                       kMaxClusterDistance)) {
+    return e;
+  }
+  if (s.min_cluster_points < 1 || s.min_cluster_points > kMaxClusterPoints) {
+    return FieldError{"min_cluster_points",
+                      "an integer within [1, " + std::to_string(kMaxClusterPoints) + "]",
+                      std::to_string(s.min_cluster_points)};
+  }
+  if (auto e = outside("min_radius", s.min_radius, core::kMinRadius, core::kMaxRadius)) return e;
+  if (!std::isfinite(s.z_min)) return FieldError{"z_min", "a finite number", core::formatNumber(s.z_min)};
+  if (!std::isfinite(s.z_max)) return FieldError{"z_max", "a finite number", core::formatNumber(s.z_max)};
+  if (s.z_max < s.z_min) {
+    return FieldError{"z_max", "a number >= z_min = " + core::formatNumber(s.z_min),
+                      core::formatNumber(s.z_max)};
+  }
+  if (s.name_prefix.empty()) return FieldError{"name_prefix", "a non-empty string", "''"};
+  return std::nullopt;
+}
+
+SensorObstacles scanObstacles(const std::vector<float>& ranges, double angle_min,
+                              double angle_increment, double range_min, double range_max,
+                              const std::string& frame_id, const ScanObstacleSettings& settings) {
+  const auto points = core::scanPoints(ranges, angle_min, angle_increment, range_min, range_max);
+  const auto clusters = core::clusterPoints(points, settings.cluster_distance,
+                                            static_cast<std::size_t>(settings.min_cluster_points));
+  return toSpecs(core::fitClusters(clusters, settings.min_radius), frame_id, settings);
+}
+
+SensorObstacles cloudObstacles(const std::vector<Eigen::Vector3f>& points,
+                               const std::string& frame_id, const ScanObstacleSettings& settings) {
+  std::vector<Eigen::Vector2d> band;
+  band.reserve(points.size());
+  for (const Eigen::Vector3f& p : points) {
+    // NaN z fails both comparisons: dropped, like NaN x or y later.
+    if (p.z() >= settings.z_min && p.z() <= settings.z_max) band.emplace_back(p.x(), p.y());
+  }
+  const auto clusters = core::clusterUnorderedPoints(
+      band, settings.cluster_distance, static_cast<std::size_t>(settings.min_cluster_points));
+  return toSpecs(core::fitClusters(clusters, settings.min_radius), frame_id, settings);
+}
+
+}  // namespace ellipse_collision::app

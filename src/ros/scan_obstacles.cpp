@@ -1,0 +1,69 @@
+#include "ellipse_collision/ros/scan_obstacles.h"
+
+#include <sensor_msgs/point_cloud2_iterator.h>
+
+#include <stdexcept>
+
+#include "ellipse_collision/app/collision_check.h"
+#include "ellipse_collision/ros/conversions.h"
+#include "ellipse_collision/ros/node_config.h"
+
+namespace ellipse_collision {
+
+std::vector<Eigen::Vector3f> cloudPoints(const sensor_msgs::PointCloud2& cloud) {
+  std::vector<Eigen::Vector3f> points;
+  points.reserve(static_cast<std::size_t>(cloud.width) * cloud.height);
+  // The iterator throws std::runtime_error for a missing field.
+  sensor_msgs::PointCloud2ConstIterator<float> x(cloud, "x"), y(cloud, "y"), z(cloud, "z");
+  for (; x != x.end(); ++x, ++y, ++z) points.emplace_back(*x, *y, *z);
+  return points;
+}
+
+EllipseArray toMsg(const app::SensorObstacles& obstacles, const std_msgs::Header& header) {
+  EllipseArray msg;
+  msg.header = header;
+  msg.ellipses.reserve(obstacles.ellipses.size());
+  for (const app::EllipseSpec& spec : obstacles.ellipses) msg.ellipses.push_back(toMsg(spec));
+  return msg;
+}
+
+app::SensorObstacles scanObstacles(const sensor_msgs::LaserScan& scan,
+                                   const app::ScanObstacleSettings& settings) {
+  return app::scanObstacles(scan.ranges, scan.angle_min, scan.angle_increment, scan.range_min,
+                            scan.range_max, scan.header.frame_id, settings);
+}
+
+ScanObstaclesNode::ScanObstaclesNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
+    : nh_(nh), settings_(loadScanObstacleSettings(private_nh)) {
+  obstacles_pub_ = nh_.advertise<EllipseArray>("obstacles", 1);
+  scan_sub_ = nh_.subscribe<sensor_msgs::LaserScan>("scan", 1, &ScanObstaclesNode::onScan, this);
+  cloud_sub_ =
+      nh_.subscribe<sensor_msgs::PointCloud2>("cloud", 1, &ScanObstaclesNode::onCloud, this);
+  ROS_INFO_STREAM("scan_obstacles: clusters of >= " << settings_.min_cluster_points
+                  << " points closer than " << settings_.cluster_distance
+                  << " m, min_radius " << settings_.min_radius << " m, cloud z within ["
+                  << settings_.z_min << ", " << settings_.z_max << "] m");
+}
+
+void ScanObstaclesNode::onScan(const sensor_msgs::LaserScan::ConstPtr& scan) {
+  publish(scanObstacles(*scan, settings_), scan->header);
+}
+
+void ScanObstaclesNode::onCloud(const sensor_msgs::PointCloud2::ConstPtr& cloud) {
+  try {
+    publish(app::cloudObstacles(cloudPoints(*cloud), cloud->header.frame_id, settings_),
+            cloud->header);
+  } catch (const std::runtime_error& error) {
+    ROS_WARN_STREAM_THROTTLE(5.0, "scan_obstacles: refused a cloud: " << error.what());
+  }
+}
+
+void ScanObstaclesNode::publish(const app::SensorObstacles& obstacles,
+                                const std_msgs::Header& header) {
+  if (!obstacles.skipped.empty()) {
+    ROS_WARN_STREAM_THROTTLE(5.0, "scan_obstacles: skipped " << app::joinText(obstacles.skipped, "; "));
+  }
+  obstacles_pub_.publish(toMsg(obstacles, header));
+}
+
+}  // namespace ellipse_collision

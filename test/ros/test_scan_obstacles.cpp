@@ -1,0 +1,158 @@
+// scan_obstacles in a running system (test/ros/scan_obstacles.test): a synthetic 720-beam
+// LaserScan of a circle and a wall, with NaN, inf and out-of-range beams; the ellipses that reach
+// the collision node's ~obstacles (every hit point inside, sizes close to the shapes, the
+// sensor's header, stable names) and the collisions they cause with the configured links.
+#include <gtest/gtest.h>
+#include <ros/ros.h>
+#include <sensor_msgs/LaserScan.h>
+
+#include <cmath>
+#include <limits>
+#include <mutex>
+#include <optional>
+#include <vector>
+
+#include "ellipse_collision/ros/messages.h"
+#include "node_test_utils.h"
+
+namespace ellipse_collision {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kCircleX = 1.5, kCircleR = 0.3;        // circle centre (1.5, 0) in laser [m]
+constexpr double kWallY = -2.0, kWallHalfLength = 1.0;  // wall y = -2, |x| <= 1 in laser [m]
+constexpr double kRangeMax = 8.0;
+
+/// Distance along the beam at `angle` to the first hit of the circle or the wall, or nothing.
+std::optional<double> rayCast(double angle) {
+  const double dx = std::cos(angle), dy = std::sin(angle);
+  std::optional<double> best;
+  // Circle: |t d - c|^2 = r^2, nearest root.
+  const double b = dx * kCircleX, disc = b * b - (kCircleX * kCircleX - kCircleR * kCircleR);
+  if (disc >= 0.0 && b - std::sqrt(disc) > 0.0) best = b - std::sqrt(disc);
+  if (dy < 0.0) {
+    const double t = kWallY / dy;
+    if (std::abs(t * dx) <= kWallHalfLength && (!best || t < *best)) best = t;
+  }
+  return best;
+}
+
+sensor_msgs::LaserScan syntheticScan(const ros::Time& stamp) {
+  sensor_msgs::LaserScan scan;
+  scan.header.frame_id = "laser";
+  scan.header.stamp = stamp;
+  scan.angle_min = -kPi;
+  scan.angle_increment = 2.0 * kPi / 720.0;
+  scan.angle_max = scan.angle_min + 719 * scan.angle_increment;
+  scan.range_min = 0.05;
+  scan.range_max = kRangeMax;
+  for (int i = 0; i < 720; ++i) {
+    const auto hit = rayCast(scan.angle_min + i * scan.angle_increment);
+    scan.ranges.push_back(hit ? static_cast<float>(*hit) : std::numeric_limits<float>::infinity());
+  }
+  // Hostile beams where nothing is (behind the scanner): NaN, -inf, below range_min, above
+  // range_max. They must be skipped, not become obstacles, not crash the node.
+  scan.ranges[10] = std::numeric_limits<float>::quiet_NaN();
+  scan.ranges[11] = -std::numeric_limits<float>::infinity();
+  scan.ranges[12] = 0.01f;
+  scan.ranges[13] = 20.0f;
+  return scan;
+}
+
+/// The beam end points of `scan` that hit something, in the laser frame (float ranges, as sent).
+std::vector<std::pair<double, double>> hitPoints(const sensor_msgs::LaserScan& scan) {
+  std::vector<std::pair<double, double>> points;
+  for (std::size_t i = 0; i < scan.ranges.size(); ++i) {
+    const double r = scan.ranges[i];
+    if (!(r >= scan.range_min && r <= scan.range_max)) continue;
+    const double a = scan.angle_min + i * static_cast<double>(scan.angle_increment);
+    points.emplace_back(r * std::cos(a), r * std::sin(a));
+  }
+  return points;
+}
+
+double quadraticForm(const Ellipse& e, double px, double py) {
+  const double dx = px - e.x, dy = py - e.y, c = std::cos(e.angle), s = std::sin(e.angle);
+  const double u = (c * dx + s * dy) / e.radius_x, v = (-s * dx + c * dy) / e.radius_y;
+  return u * u + v * v;
+}
+
+bool collides(const CollisionState& state, const std::string& a, const std::string& b) {
+  return test::findPair(state.collisions, a, b) || test::findPair(state.collisions, b, a);
+}
+
+TEST(ScanObstacles, ScannedShapesReachTheCollisionNodeAsEnclosingEllipses) {
+  ros::NodeHandle nh;
+  std::mutex mutex;
+  std::optional<EllipseArray> obstacles;
+  std::optional<CollisionState> state;
+  auto obstacles_sub = nh.subscribe<EllipseArray>(
+      test::nodeTopic("obstacles"), 10, [&](const EllipseArray::ConstPtr& msg) {
+        std::lock_guard<std::mutex> lock(mutex);
+        obstacles = *msg;
+      });
+  auto state_sub = nh.subscribe<CollisionState>(
+      test::nodeTopic("collisions"), 10, [&](const CollisionState::ConstPtr& msg) {
+        std::lock_guard<std::mutex> lock(mutex);
+        state = *msg;
+      });
+  ros::Publisher scan_pub = nh.advertise<sensor_msgs::LaserScan>("/scan", 1);
+  ros::AsyncSpinner spinner(2);
+  spinner.start();
+
+  const sensor_msgs::LaserScan scan = syntheticScan(ros::Time(1234, 5678));
+  const bool arrived = test::waitUntil(
+      [&] {
+        scan_pub.publish(scan);
+        std::lock_guard<std::mutex> lock(mutex);
+        return obstacles && state && collides(*state, "arm", "scan_1") &&
+               collides(*state, "side", "scan_0");
+      },
+      40.0);
+  std::lock_guard<std::mutex> lock(mutex);
+  ASSERT_TRUE(obstacles.has_value()) << "no EllipseArray reached the collision node's ~obstacles";
+  ASSERT_TRUE(state.has_value()) << "no ~collisions from the collision node";
+  EXPECT_TRUE(arrived) << "expected collisions (arm, scan_1) and (side, scan_0); got "
+                       << state->collisions.size() << " collisions";
+
+  // The sensor's header; beam order from -pi: the wall (around -pi/2) first, then the circle.
+  EXPECT_EQ(obstacles->header.frame_id, "laser");
+  EXPECT_EQ(obstacles->header.stamp, ros::Time(1234, 5678));
+  ASSERT_EQ(obstacles->ellipses.size(), 2u);
+  const Ellipse& wall = obstacles->ellipses[0];
+  const Ellipse& circle = obstacles->ellipses[1];
+  EXPECT_EQ(wall.name, "scan_0");
+  EXPECT_EQ(circle.name, "scan_1");
+  EXPECT_EQ(circle.frame_id, "laser");
+
+  // Every hit point inside the ellipse of its shape.
+  for (const auto& [x, y] : hitPoints(scan)) {
+    const Ellipse& e = std::abs(y - kWallY) < 1e-3 ? wall : circle;
+    EXPECT_LE(quadraticForm(e, x, y), 1.0 + 1e-9) << "(" << x << ", " << y << ") outside " << e.name;
+  }
+  // The wall: a thin ellipse along it, grown to min_radius (0.05) across.
+  EXPECT_NEAR(wall.x, 0.0, 0.02);
+  EXPECT_NEAR(wall.y, kWallY, 1e-3);
+  EXPECT_NEAR(std::sin(wall.angle), 0.0, 1e-3);
+  EXPECT_NEAR(wall.radius_x, kWallHalfLength, 0.03);
+  EXPECT_NEAR(wall.radius_y, 0.05, 1e-3);
+  // The circle's visible arc (the near half): at most the circle's radius along the arc's chord,
+  // the ellipse within the circle's neighbourhood.
+  EXPECT_NEAR(circle.y, 0.0, 1e-3);
+  EXPECT_GT(circle.x, kCircleX - kCircleR);
+  EXPECT_LT(circle.x, kCircleX);
+  EXPECT_GE(std::max(circle.radius_x, circle.radius_y), 0.27);
+  EXPECT_LE(std::max(circle.radius_x, circle.radius_y), 0.4);
+
+  // Nothing where nothing was scanned; the hostile beams made no obstacle.
+  EXPECT_FALSE(test::mentions(state->collisions, "far"));
+}
+
+}  // namespace
+}  // namespace ellipse_collision
+
+int main(int argc, char** argv) {
+  testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "test_scan_obstacles");
+  return RUN_ALL_TESTS();
+}

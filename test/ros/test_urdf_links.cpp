@@ -1,0 +1,296 @@
+// URDF links to ellipses (ros/urdf_links.h, app/link_fitting.h) on test/fixtures/: every
+// geometry type with origin offsets and a mesh, checked for containment of the true geometry's
+// sampled points and for area against closed forms; the errors; the `links:` YAML of
+// fit_link_ellipses read back by the node's configuration parser; ~links_from_urdf. No master.
+#include <gtest/gtest.h>
+#include <xmlrpcpp/XmlRpcValue.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "ellipse_collision/ros/node_config.h"
+#include "ellipse_collision/ros/urdf_links.h"
+
+namespace ellipse_collision {
+namespace {
+
+const std::string kFixtures = std::string(ELLIPSE_COLLISION_SOURCE_DIR) + "/test/fixtures/";
+const std::string kEveryGeometry = kFixtures + "every_geometry.urdf";
+constexpr double kPi = 3.14159265358979323846;
+
+std::map<std::string, app::EllipseSpec> fitFile(const std::string& path,
+                                                const app::LinkFitOptions& options = {}) {
+  std::map<std::string, app::EllipseSpec> by_name;
+  for (const auto& spec : fitUrdfLinks(readUrdfFile(path), "file '" + path + "'", options).links) {
+    by_name[spec.name] = spec;
+  }
+  return by_name;
+}
+
+/// The ellipse's normalised quadratic form at p: <= 1 inside.
+double quadraticForm(const app::EllipseSpec& e, double px, double py) {
+  const double dx = px - e.x, dy = py - e.y;
+  const double c = std::cos(e.angle), s = std::sin(e.angle);
+  const double u = (c * dx + s * dy) / e.radius_x, v = (-s * dx + c * dy) / e.radius_y;
+  return u * u + v * v;
+}
+
+double area(const app::EllipseSpec& e) { return kPi * e.radius_x * e.radius_y; }
+
+/// Points on a circle of radius r about (cx, cy), densely sampled.
+std::vector<std::pair<double, double>> circle(double cx, double cy, double r, int n = 20000) {
+  std::vector<std::pair<double, double>> points;
+  for (int i = 0; i < n; ++i) {
+    const double a = 2.0 * kPi * i / n;
+    points.emplace_back(cx + r * std::cos(a), cy + r * std::sin(a));
+  }
+  return points;
+}
+
+void expectContains(const app::EllipseSpec& e, const std::vector<std::pair<double, double>>& points) {
+  double worst = 0.0;
+  for (const auto& [x, y] : points) worst = std::max(worst, quadraticForm(e, x, y));
+  EXPECT_LE(worst, 1.0 + 1e-12) << e.name << ": a point of the geometry lies outside";
+}
+
+TEST(UrdfLinks, BoxWithRotatedOffsetOriginIsItsRectangleEllipse) {
+  const auto e = fitFile(kEveryGeometry).at("box_link");
+  // Minimum-area ellipse of a w x h rectangle: its axes, radii w / sqrt(2), h / sqrt(2).
+  const double c = std::cos(0.3), s = std::sin(0.3);
+  std::vector<std::pair<double, double>> corners;
+  for (const double u : {-0.2, 0.2}) {
+    for (const double v : {-0.1, 0.1}) corners.emplace_back(0.1 + c * u - s * v, 0.05 + s * u + c * v);
+  }
+  expectContains(e, corners);
+  EXPECT_NEAR(area(e) / (kPi * 0.4 * 0.2 / 2.0) - 1.0, 0.0, 1e-6);
+  EXPECT_NEAR(e.x, 0.1, 1e-9);
+  EXPECT_NEAR(e.y, 0.05, 1e-9);
+  EXPECT_NEAR(e.angle, 0.3, 1e-6);
+  EXPECT_EQ(e.frame_id, "box_link");
+}
+
+TEST(UrdfLinks, UprightCylinderAndSphereAreTheirDiscs) {
+  const auto fits = fitFile(kEveryGeometry);
+  const auto& cylinder = fits.at("cylinder_link");
+  expectContains(cylinder, circle(0.0, 0.2, 0.15));
+  EXPECT_NEAR(area(cylinder) / (kPi * 0.15 * 0.15) - 1.0, 0.0, 1e-6);
+  const auto& sphere = fits.at("sphere_link");
+  expectContains(sphere, circle(0.3, -0.1, 0.2));
+  EXPECT_NEAR(area(sphere) / (kPi * 0.2 * 0.2) - 1.0, 0.0, 1e-6);
+  EXPECT_NEAR(sphere.x, 0.3, 1e-9);
+  EXPECT_NEAR(sphere.y, -0.1, 1e-9);
+}
+
+TEST(UrdfLinks, LyingCylinderIsItsRectangleEllipse) {
+  const auto e = fitFile(kEveryGeometry).at("lying_cylinder_link");
+  // Seen along z, a cylinder lying along x is the 0.6 x 0.2 rectangle (its end discs project to
+  // segments): radii 0.6 / sqrt(2), 0.2 / sqrt(2) about (-0.2, 0.1). Check the rim densely.
+  std::vector<std::pair<double, double>> rim;
+  for (const auto& [x, y] : circle(0.0, 0.0, 0.1)) {
+    rim.emplace_back(-0.2 + 0.3, 0.1 + y);
+    rim.emplace_back(-0.2 - 0.3, 0.1 + y);
+    rim.emplace_back(-0.2 + 3.0 * x, 0.1 + 0.1);
+    rim.emplace_back(-0.2 + 3.0 * x, 0.1 - 0.1);
+  }
+  expectContains(e, rim);
+  EXPECT_NEAR(area(e) / (kPi * 0.6 * 0.2 / 2.0) - 1.0, 0.0, 1e-6);
+  EXPECT_NEAR(e.x, -0.2, 1e-9);
+  EXPECT_NEAR(e.y, 0.1, 1e-9);
+}
+
+TEST(UrdfLinks, ScaledMeshIsItsTrianglesSteinerEllipse) {
+  const auto e = fitFile(kEveryGeometry).at("mesh_link");
+  // Triangle (0.05, 0) (0.25, 0) (0.05, 0.1): the Steiner circumellipse, centred at the centroid,
+  // of area 4 pi / (3 sqrt(3)) times the triangle's.
+  expectContains(e, {{0.05, 0.0}, {0.25, 0.0}, {0.05, 0.1}});
+  EXPECT_NEAR(area(e) / (4.0 * kPi / (3.0 * std::sqrt(3.0)) * 0.01) - 1.0, 0.0, 1e-6);
+  EXPECT_NEAR(e.x, 0.05 + 0.2 / 3.0, 1e-9);
+  EXPECT_NEAR(e.y, 0.1 / 3.0, 1e-9);
+}
+
+TEST(UrdfLinks, MeshThroughFileUri) {
+  std::string xml = readUrdfFile(kEveryGeometry);
+  const std::string package_uri = "package://ellipse_collision/test/fixtures/tetrahedron.stl";
+  xml.replace(xml.find(package_uri), package_uri.size(), "file://" + kFixtures + "tetrahedron.stl");
+  app::LinkFitOptions options;
+  options.links = {"mesh_link"};
+  const auto result = fitUrdfLinks(xml, "test", options);
+  ASSERT_EQ(result.links.size(), 1u);
+  EXPECT_NEAR(area(result.links[0]) / (4.0 * kPi / (3.0 * std::sqrt(3.0)) * 0.01) - 1.0, 0.0, 1e-6);
+}
+
+TEST(UrdfLinks, SeveralElementsOfOneLinkShareTheEllipse) {
+  const auto e = fitFile(kEveryGeometry).at("two_boxes_link");
+  std::vector<std::pair<double, double>> corners;
+  for (const double x : {-0.35, -0.25, 0.25, 0.35}) {
+    for (const double y : {-0.05, 0.05}) corners.emplace_back(x, y);
+  }
+  expectContains(e, corners);
+  // Axis-aligned by symmetry, held by the outer corners (p, q): radii p sqrt(2), q sqrt(2).
+  EXPECT_NEAR(area(e) / (2.0 * kPi * 0.35 * 0.05) - 1.0, 0.0, 1e-6);
+}
+
+TEST(UrdfLinks, LinksWithoutCollisionGeometryAreReportedAndSkipped) {
+  const std::string xml = readUrdfFile(kEveryGeometry);
+  const auto result = fitUrdfLinks(xml, "test", {});
+  EXPECT_EQ(result.links.size(), 6u);
+  ASSERT_EQ(result.skipped.size(), 1u);
+  EXPECT_EQ(result.skipped[0], "base_footprint: no collision geometry");
+}
+
+TEST(UrdfLinks, SelectionPaddingAndOrder) {
+  app::LinkFitOptions options;
+  options.links = {"sphere_link", "box_link"};
+  options.padding = 0.05;
+  const auto result = fitUrdfLinks(readUrdfFile(kEveryGeometry), "test", options);
+  ASSERT_EQ(result.links.size(), 2u);
+  EXPECT_EQ(result.links[0].name, "sphere_link");
+  EXPECT_EQ(result.links[1].name, "box_link");
+  EXPECT_EQ(result.links[0].padding, 0.05);
+}
+
+std::string errorOf(const std::function<void()>& action) {
+  try {
+    action();
+  } catch (const UrdfError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+TEST(UrdfLinks, ErrorsNameTheFileParameterLinkAndUri) {
+  const std::string broken = kFixtures + "broken.urdf";
+  EXPECT_NE(errorOf([&] { fitUrdfLinks(readUrdfFile(broken), "file '" + broken + "'", {}); })
+                .find("file '" + broken + "': not a valid URDF"),
+            std::string::npos);
+  EXPECT_NE(errorOf([] { readUrdfFile("/nonexistent/robot.urdf"); }).find("'/nonexistent/robot.urdf'"),
+            std::string::npos);
+  const std::string mesh_error = errorOf(
+      [] { fitUrdfLinks(readUrdfFile(kFixtures + "missing_mesh.urdf"), "file 'm.urdf'", {}); });
+  EXPECT_NE(mesh_error.find("link 'arm'"), std::string::npos) << mesh_error;
+  EXPECT_NE(mesh_error.find("package://ellipse_collision/test/fixtures/no_such_mesh.stl"),
+            std::string::npos)
+      << mesh_error;
+  app::LinkFitOptions options;
+  options.links = {"box_link", "gripper"};
+  EXPECT_EQ(errorOf([&] { fitUrdfLinks(readUrdfFile(kEveryGeometry), "file 'r.urdf'", options); }),
+            "file 'r.urdf': links[1] = 'gripper': not a link of the robot model");
+  options.links = {"box_link", "box_link"};
+  EXPECT_EQ(errorOf([&] { fitUrdfLinks(readUrdfFile(kEveryGeometry), "file 'r.urdf'", options); }),
+            "file 'r.urdf': links[1] = 'box_link': named twice");
+}
+
+std::string runCommand(const std::string& command) {
+  std::string output;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (pipe == nullptr) return output;
+  char buffer[4096];
+  for (std::size_t n; (n = fread(buffer, 1, sizeof buffer, pipe)) > 0;) output.append(buffer, n);
+  pclose(pipe);
+  return output;
+}
+
+/// `yaml_text` as rosparam loads it: PyYAML, then XML-RPC (what reaches the parameter server).
+XmlRpc::XmlRpcValue asRosparamLoadsIt(const std::string& yaml_text) {
+  const std::string path = testing::TempDir() + "fit_link_ellipses_output.yaml";
+  std::ofstream(path) << yaml_text;
+  const std::string xml = runCommand(
+      "python3 -c 'import sys, yaml, xmlrpc.client; "
+      "print(xmlrpc.client.dumps((yaml.safe_load(open(sys.argv[1])),)))' " + path);
+  int offset = static_cast<int>(xml.find("<value>"));
+  XmlRpc::XmlRpcValue value;
+  if (offset >= 0) value.fromXml(xml, &offset);
+  return value;
+}
+
+TEST(FitLinkEllipsesTool, PrintsALinksBlockTheNodeConfigurationReadsBackExactly) {
+  const std::string yaml = runCommand(std::string(FIT_LINK_ELLIPSES_BIN) + " " + kEveryGeometry +
+                                      " --padding 0.00001 2>/dev/null");
+  ASSERT_NE(yaml.find("links:"), std::string::npos) << yaml;
+  const NodeConfig config = parseNodeConfig(asRosparamLoadsIt(yaml));
+  app::LinkFitOptions options;
+  options.padding = 0.00001;
+  const auto expected = fitUrdfLinks(readUrdfFile(kEveryGeometry), "test", options).links;
+  ASSERT_EQ(config.links.size(), expected.size()) << yaml;
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    SCOPED_TRACE(expected[i].name);
+    EXPECT_EQ(config.links[i].name, expected[i].name);
+    EXPECT_EQ(config.links[i].frame_id, expected[i].frame_id);
+    EXPECT_EQ(config.links[i].x, expected[i].x);  // bit for bit
+    EXPECT_EQ(config.links[i].y, expected[i].y);
+    EXPECT_EQ(config.links[i].angle, expected[i].angle);
+    EXPECT_EQ(config.links[i].radius_x, expected[i].radius_x);
+    EXPECT_EQ(config.links[i].radius_y, expected[i].radius_y);
+    EXPECT_EQ(config.links[i].padding, expected[i].padding);
+  }
+}
+
+TEST(FitLinkEllipsesTool, BadUrdfExitsOneNamingTheFile) {
+  const std::string broken = kFixtures + "broken.urdf";
+  const std::string output =
+      runCommand(std::string(FIT_LINK_ELLIPSES_BIN) + " " + broken + " 2>&1; echo \"exit $?\"");
+  EXPECT_NE(output.find("file '" + broken + "'"), std::string::npos) << output;
+  EXPECT_NE(output.find("exit 1"), std::string::npos) << output;
+}
+
+/// The node's reader with the parameter server replaced by fixture files named by `param`.
+app::LinkFitResult fitFixture(const std::string& param, const app::LinkFitOptions& options) {
+  return fitUrdfLinks(readUrdfFile(kFixtures + param), "parameter '" + param + "'", options);
+}
+
+TEST(LinksFromUrdf, AppendsFittedLinksToConfiguredOnes) {
+  XmlRpc::XmlRpcValue params;
+  params["links"][0]["name"] = "tool";
+  params["links"][0]["frame"] = "tool0";
+  for (const char* key : {"x", "y", "angle"}) params["links"][0][key] = 0.0;
+  params["links"][0]["radius_x"] = 0.1;
+  params["links"][0]["radius_y"] = 0.1;
+  params["links_from_urdf"]["param"] = "every_geometry.urdf";
+  params["links_from_urdf"]["links"][0] = "sphere_link";
+  params["links_from_urdf"]["links"][1] = "base_footprint";
+  params["links_from_urdf"]["padding"] = 0.02;
+  params["allowed_pairs"][0][0] = "tool";
+  params["allowed_pairs"][0][1] = "sphere_link";
+  const NodeConfig config = parseNodeConfig(params, fitFixture);
+  ASSERT_EQ(config.links.size(), 2u);
+  EXPECT_EQ(config.links[1].name, "sphere_link");
+  EXPECT_EQ(config.links[1].padding, 0.02);
+  EXPECT_EQ(config.urdf_links_skipped,
+            std::vector<std::string>{"base_footprint: no collision geometry"});
+  EXPECT_EQ(config.allowed_pairs.size(), 1u);
+}
+
+std::string configErrorOf(const XmlRpc::XmlRpcValue& params) {
+  try {
+    parseNodeConfig(params, fitFixture);
+  } catch (const ConfigError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+TEST(LinksFromUrdf, ErrorsNameTheParameter) {
+  XmlRpc::XmlRpcValue params;
+  params["links_from_urdf"]["param"] = "broken.urdf";
+  EXPECT_EQ(configErrorOf(params).find("parameter ~links_from_urdf: parameter 'broken.urdf': not a "
+                                       "valid URDF"),
+            0u)
+      << configErrorOf(params);
+  params["links_from_urdf"]["param"] = "every_geometry.urdf";
+  params["links_from_urdf"]["padding"] = -1.0;
+  EXPECT_NE(configErrorOf(params).find("key 'padding'"), std::string::npos);
+  params["links_from_urdf"]["padding"] = 0.0;
+  params["links_from_urdf"]["link"] = "typo";
+  EXPECT_NE(configErrorOf(params).find("unknown key 'link'"), std::string::npos);
+  XmlRpc::XmlRpcValue no_reader;
+  no_reader["links_from_urdf"]["param"] = "robot_description";
+  EXPECT_THROW(parseNodeConfig(no_reader), ConfigError);
+}
+
+}  // namespace
+}  // namespace ellipse_collision
