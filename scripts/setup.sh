@@ -62,6 +62,9 @@ DEBIAN_PACKAGES=(
   # URIs through resource_retriever (fit_link_ellipses, ~links_from_urdf)
   liburdf-dev
   libassimp-dev
+  # assimp's CMake targets link /usr/lib/x86_64-linux-gnu/libz.so, which libassimp-dev does not pull
+  # in (found by scripts/fresh_machine.sh: "No rule to make target .../libz.so")
+  zlib1g-dev
   libresource-retriever-dev
   # fuzzing: clang with libFuzzer and the sanitizer runtimes
   clang
