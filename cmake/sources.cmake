@@ -10,6 +10,7 @@ set(ELLIPSE_COLLISION_CORE_SOURCES
   src/core/first_contact.cpp
   src/core/frame_projection.cpp
   src/core/motion_line_parser.cpp
+  src/core/number_fields.cpp
   src/core/number_format.cpp
   src/core/overlap.cpp
   src/core/pair_line_parser.cpp

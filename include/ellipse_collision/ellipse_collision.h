@@ -11,6 +11,7 @@
 #include "ellipse_collision/core/first_contact.h"
 #include "ellipse_collision/core/frame_projection.h"
 #include "ellipse_collision/core/motion_line_parser.h"
+#include "ellipse_collision/core/number_fields.h"
 #include "ellipse_collision/core/number_format.h"
 #include "ellipse_collision/core/overlap.h"
 #include "ellipse_collision/core/pair_line_parser.h"
