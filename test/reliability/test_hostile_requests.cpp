@@ -69,10 +69,7 @@ const std::vector<OutOfRange>& outOfRangeCases() {
 class HostileRequests : public ::testing::Test, protected NodeServiceClient {
  protected:
   void SetUp() override {
-    ASSERT_TRUE(ros::service::waitForService(nodeTopic("check_collisions"), ros::Duration(30)));
-    connectServices(nh_);
-    obstacles_ = nh_.advertise<EllipseArray>(nodeTopic("obstacles"), 10);
-    ASSERT_TRUE(waitUntil([this] { return obstacles_.getNumSubscribers() > 0; }, 30.0));
+    ASSERT_TRUE(connectServicesAndObstacles(nh_, obstacles_, 10));
     expectNormalAnswer("before the test");
   }
 

@@ -21,10 +21,7 @@ constexpr long kMaxGrowthKiB = 2048;
 class Storm : public ::testing::Test, protected NodeServiceClient {
  protected:
   void SetUp() override {
-    ASSERT_TRUE(ros::service::waitForService(nodeTopic("check_collisions"), ros::Duration(30)));
-    connectServices(nh_);
-    obstacles_ = nh_.advertise<EllipseArray>(nodeTopic("obstacles"), 100);
-    ASSERT_TRUE(waitUntil([this] { return obstacles_.getNumSubscribers() > 0; }, 30.0));
+    ASSERT_TRUE(connectServicesAndObstacles(nh_, obstacles_, 100));
   }
   ros::NodeHandle nh_;
   ros::Publisher obstacles_;

@@ -9,6 +9,7 @@
 #include <array>
 #include <chrono>
 #include <cstdio>
+#include <cstdint>
 #include <functional>
 #include <mutex>
 #include <string>
@@ -78,6 +79,19 @@ class NodeServiceClient {
     check_ = nh.serviceClient<CheckCollisions>(nodeTopic("check_collisions"));
     add_ = nh.serviceClient<AddObstacles>(nodeTopic("add_obstacles"));
     remove_ = nh.serviceClient<RemoveObstacles>(nodeTopic("remove_obstacles"));
+  }
+
+  /// What a test that drives the node through services and the ~obstacles topic needs first:
+  /// the services up and connected, and `obstacles` advertised and subscribed to by the node.
+  /// False if either took longer than 30 s.
+  bool connectServicesAndObstacles(ros::NodeHandle& nh, ros::Publisher& obstacles,
+                                   std::uint32_t queue_size) {
+    if (!ros::service::waitForService(nodeTopic("check_collisions"), ros::Duration(30))) {
+      return false;
+    }
+    connectServices(nh);
+    obstacles = nh.advertise<EllipseArray>(nodeTopic("obstacles"), queue_size);
+    return waitUntil([&obstacles] { return obstacles.getNumSubscribers() > 0; }, 30.0);
   }
 
   CheckCollisions::Response check(const std::vector<std::string>& names = {},

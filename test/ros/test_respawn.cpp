@@ -16,10 +16,7 @@ namespace {
 class Respawn : public ::testing::Test, protected NodeServiceClient {
  protected:
   void SetUp() override {
-    ASSERT_TRUE(ros::service::waitForService(nodeTopic("check_collisions"), ros::Duration(30)));
-    connectServices(nh_);
-    obstacles_ = nh_.advertise<EllipseArray>(nodeTopic("obstacles"), 10);
-    ASSERT_TRUE(waitUntil([this] { return obstacles_.getNumSubscribers() > 0; }, 30.0));
+    ASSERT_TRUE(connectServicesAndObstacles(nh_, obstacles_, 10));
   }
 
   /// SIGKILL, then wait for the respawned node to serve again; returns the seconds it took.

@@ -39,10 +39,7 @@ bool isOurs(const diagnostic_msgs::DiagnosticArray& a) {
 class StaleData : public ::testing::Test, protected NodeServiceClient {
  protected:
   void SetUp() override {
-    ASSERT_TRUE(ros::service::waitForService(nodeTopic("check_collisions"), ros::Duration(30)));
-    connectServices(nh_);
-    obstacles_ = nh_.advertise<EllipseArray>(nodeTopic("obstacles"), 10);
-    ASSERT_TRUE(waitUntil([this] { return obstacles_.getNumSubscribers() > 0; }, 30.0));
+    ASSERT_TRUE(connectServicesAndObstacles(nh_, obstacles_, 10));
   }
 
   ros::NodeHandle nh_;
