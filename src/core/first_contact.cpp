@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -264,11 +265,20 @@ FirstContact firstContact(const Ellipse& a, const Motion& motion_a, const Ellips
   // A spinning circle sweeps nothing: such pairs translate, and the exact method applies.
   const bool a_turns = p.wa != 0.0 && p.a.radius_x != p.a.radius_y;
   const bool b_turns = p.wb != 0.0 && p.b.radius_x != p.b.radius_y;
+  FirstContact contact;
   if (!a_turns && !b_turns) {
     p.wa = p.wb = 0.0;
-    return translationContact(p, horizon);
+    contact = translationContact(p, horizon);
+  } else {
+    contact = rotationContact(p, horizon);
   }
-  return rotationContact(p, horizon);
+  // overlap() said they are apart at t = 0; a pair whose contact scale there is within rounding
+  // of 1 can still be found touching "at 0" by the gauge. Time 0 means overlapping now (the
+  // documented rule), so such a contact is reported at the first time after 0 (fuzzer finding).
+  if (contact.contact && contact.time == 0.0) {
+    contact.time = std::min(horizon, std::numeric_limits<double>::denorm_min());
+  }
+  return contact;
 }
 
 }  // namespace ellipse_collision::core

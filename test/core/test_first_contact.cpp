@@ -402,6 +402,22 @@ TEST(FirstContact, RefusesInvalidInputNamingTheField) {
             std::string::npos);
 }
 
+// Fuzzer finding: apart per overlap() at t = 0 with a contact scale within rounding of 1, so the
+// gauge finds them touching "at 0". Time 0 is reserved for pairs that overlap now.
+TEST(FirstContact, ContactAtTimeZeroOnlyWhenOverlappingNow) {
+  const double s = 1.8512501431811046e-07;
+  const Ellipse a{{s, s}, s, s, 4.5426628125788682e-08};
+  const Ellipse b{{s, -s}, 1.832623691688795e-07, s, s};
+  const Motion ma{{s, 1.8512500599143777e-07}, 0.0};
+  const Motion mb{{s, 1.4000001851250059}, 0.0};
+  ASSERT_FALSE(overlap(a, b));
+  for (const FirstContact& c : {firstContact(a, ma, b, mb, s), firstContact(b, mb, a, ma, s)}) {
+    EXPECT_TRUE(c.contact);
+    EXPECT_GT(c.time, 0.0);
+    EXPECT_LE(c.time, 1e-9 * s);
+  }
+}
+
 }  // namespace
 }  // namespace test
 }  // namespace ellipse_collision::core
