@@ -22,10 +22,13 @@ ellipse_collision_add_gtest(test_core LIBRARIES ellipse_collision_core quadmath 
   test/core/test_eigenvalue_test.cpp
   test/core/test_polygonal_test.cpp
   test/core/test_overlap_accuracy.cpp
+  test/core/test_early_outs.cpp
   test/core/test_pair_line_parser.cpp
   test/core/test_motion_line_parser.cpp
   test/core/test_unique_names.cpp
   test/support/contact_scale_oracle.cpp)
+# The early-out stages are internal to overlap(): their test reads src/core's detail headers.
+target_include_directories(test_core PRIVATE ${PROJECT_SOURCE_DIR}/src/core)
 ellipse_collision_add_gtest(test_scene_core LIBRARIES ellipse_collision_core SOURCES
   test/core/test_frame_projection.cpp
   test/core/test_scene_check.cpp

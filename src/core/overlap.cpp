@@ -2,7 +2,9 @@
 
 #include <Eigen/Core>
 
+#include "centre_line_test.h"
 #include "eigenvalue_test_detail.h"
+#include "one_point_test.h"
 #include "ellipse_collision/core/polygonal_test.h"
 #include "ellipse_collision/core/prepared_ellipse.h"
 #include "overlap_detail.h"
@@ -12,15 +14,26 @@
 namespace ellipse_collision::core {
 namespace {
 
-/// Past the bounding circles: the inscribed circles meeting prove overlap, cheaply and free of
-/// trigonometry; then the polygonal early-out, and the eigenvalue test when it cannot decide, in
-/// the canonical frame of the pair.
+/// Past the bounding circles: the centre-line test decides most pairs cheaply, and the
+/// Perram-Wertheim function at one point most of the rest (both with the coarse sines and
+/// cosines and margins that cover them); then the inscribed circles meeting prove overlap, free
+/// of any more work; then the polygonal early-out,
+/// and the eigenvalue test when it cannot decide, in the canonical frame of the pair.
 template <typename AnyEllipse>
 bool exactStages(const AnyEllipse& a, const AnyEllipse& b, double inscribed_sum,
                  int max_iterations) {
-  const Eigen::Vector2d& center_a = detail::ellipseOf(a).center;
-  const Eigen::Vector2d& center_b = detail::ellipseOf(b).center;
-  if ((center_b - center_a).squaredNorm() <
+  const Ellipse& ellipse_a = detail::ellipseOf(a);
+  const Ellipse& ellipse_b = detail::ellipseOf(b);
+  const detail::SinCosPair trig = detail::coarseSinCosPairOf(a, b);
+  const detail::CentreLineResult centre_line =
+      detail::centreLineTest(ellipse_a, trig.first, ellipse_b, trig.second);
+  if (centre_line.result != PolygonalResult::Unknown) {
+    return centre_line.result == PolygonalResult::Overlap;
+  }
+  const PolygonalResult one_point = detail::onePointTest(ellipse_a, trig.first, ellipse_b,
+                                                         trig.second, centre_line.circle_guess);
+  if (one_point != PolygonalResult::Unknown) return one_point == PolygonalResult::Overlap;
+  if ((ellipse_b.center - ellipse_a.center).squaredNorm() <
       inscribed_sum * inscribed_sum * (1.0 - detail::kCircleMargin)) {
     return true;
   }

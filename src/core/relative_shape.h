@@ -24,6 +24,15 @@ inline FrameFactors frameFactors(const Ellipse& e) { return frameFactors(e, sinC
 inline const Ellipse& ellipseOf(const Ellipse& e) { return e; }
 inline const Ellipse& ellipseOf(const PreparedEllipse& e) { return e.ellipse(); }
 
+/// sin and cos of both angles within kCoarseSinCosError, for the centre-line test: the coarse
+/// series for plain ellipses, the stored values (closer still) for prepared ones.
+inline SinCosPair coarseSinCosPairOf(const Ellipse& a, const Ellipse& b) {
+  return sinCosPairCoarse(a.angle, b.angle);
+}
+inline SinCosPair coarseSinCosPairOf(const PreparedEllipse& a, const PreparedEllipse& b) {
+  return {{a.sinAngle(), a.cosAngle()}, {b.sinAngle(), b.cosAngle()}};
+}
+
 inline FrameFactors frameFactors(const PreparedEllipse& e) {
   return {e.cosAngle(), e.sinAngle(), e.inverseRadiusX(), e.inverseRadiusY()};
 }
