@@ -39,7 +39,7 @@ inline constexpr double kCentreLineCoverMargin = 1e-7;
 struct CentreLineResult {
   PolygonalResult result;
   /// h_a / (h_a + h_b) from the supports along d: the maximiser of the Perram-Wertheim function for
-  /// two circles of those radii, a starting guess for onePointTest(); NaN for coincident centres.
+  /// two circles of those radii, a starting guess for onePointTest(); 1/2 for coincident centres.
   double circle_guess;
 };
 
@@ -71,7 +71,8 @@ inline CentreLineResult centreLineTest(const Ellipse& a, const SinCos& trig_a, c
   const bool covered =
       ratios_ok & (area[0] * t[1] + area[1] * t[0] >= t[0] * t[1] * (1.0 + kCentreLineCoverMargin));
 
-  const double circle_guess = support[0] / (support[0] + support[1]);
+  const double support_sum = support[0] + support[1];
+  const double circle_guess = support_sum > 0.0 ? support[0] / support_sum : 0.5;
   if (apart) return {PolygonalResult::Separate, circle_guess};
   if (covered) return {PolygonalResult::Overlap, circle_guess};
   return {PolygonalResult::Unknown, circle_guess};

@@ -14,16 +14,20 @@
 namespace ellipse_collision::core {
 namespace {
 
-/// Past the bounding circles: the centre-line test decides most pairs cheaply, and the
-/// Perram-Wertheim function at one point most of the rest (both with the coarse sines and
-/// cosines and margins that cover them); then the inscribed circles meeting prove overlap, free
-/// of any more work; then the polygonal early-out,
+/// Past the bounding circles: the inscribed circles meeting prove overlap, free of
+/// trigonometry; the centre-line test decides most other pairs cheaply, and the Perram-Wertheim
+/// function at one point most of the rest (both with the coarse sines and cosines and margins
+/// that cover them); then the polygonal early-out,
 /// and the eigenvalue test when it cannot decide, in the canonical frame of the pair.
 template <typename AnyEllipse>
 bool exactStages(const AnyEllipse& a, const AnyEllipse& b, double inscribed_sum,
                  int max_iterations) {
   const Ellipse& ellipse_a = detail::ellipseOf(a);
   const Ellipse& ellipse_b = detail::ellipseOf(b);
+  if ((ellipse_b.center - ellipse_a.center).squaredNorm() <
+      inscribed_sum * inscribed_sum * (1.0 - detail::kCircleMargin)) {
+    return true;
+  }
   const detail::SinCosPair trig = detail::coarseSinCosPairOf(a, b);
   const detail::CentreLineResult centre_line =
       detail::centreLineTest(ellipse_a, trig.first, ellipse_b, trig.second);
@@ -33,10 +37,6 @@ bool exactStages(const AnyEllipse& a, const AnyEllipse& b, double inscribed_sum,
   const PolygonalResult one_point = detail::onePointTest(ellipse_a, trig.first, ellipse_b,
                                                          trig.second, centre_line.circle_guess);
   if (one_point != PolygonalResult::Unknown) return one_point == PolygonalResult::Overlap;
-  if ((ellipse_b.center - ellipse_a.center).squaredNorm() <
-      inscribed_sum * inscribed_sum * (1.0 - detail::kCircleMargin)) {
-    return true;
-  }
   const detail::RelativeShape relative = detail::canonicalRelativeShape(a, b);
   switch (detail::polygonalTestRelative(relative, max_iterations)) {
     case PolygonalResult::Overlap:
