@@ -25,10 +25,6 @@ namespace sin_cos_detail {
 using Doubles = double __attribute__((vector_size(16)));
 using Bits = std::uint64_t __attribute__((vector_size(16)));
 
-/// A constant in both lanes. Spelled out as a vector, GCC loads it from memory in one instruction;
-/// a scalar constant in a vector expression is broadcast anew at each use (two instructions).
-constexpr Doubles both(double value) { return Doubles{value, value}; }
-
 /// angle = k pi/2 + r with |r| <= pi/4. pi/2 is split into three parts (Cody and Waite): the
 /// first two have 33 significant bits, so k times them is exact for |k| < 2^20, and the first
 /// subtraction is exact too. Adding 1.5 * 2^52 rounds to an integer and leaves k mod 4 in the
@@ -45,10 +41,9 @@ inline Reduced reduce(double angle_a, double angle_b) {
   constexpr double kHalfPiLow = 0x1.3198a2e037073p-69;
   constexpr double kRoundingShift = 0x1.8p52;
   const Doubles angle = {angle_a, angle_b};
-  const Doubles shifted = angle * both(kTwoOverPi) + both(kRoundingShift);
-  const Doubles k = shifted - both(kRoundingShift);
-  return {((angle - k * both(kHalfPiHigh)) - k * both(kHalfPiMiddle)) - k * both(kHalfPiLow),
-          shifted};
+  const Doubles shifted = angle * kTwoOverPi + kRoundingShift;
+  const Doubles k = shifted - kRoundingShift;
+  return {((angle - k * kHalfPiHigh) - k * kHalfPiMiddle) - k * kHalfPiLow, shifted};
 }
 
 /// Quadrant k mod 4: (sin, cos) = (s, c), (c, -s), (-s, -c), (-c, s), selected and negated on
@@ -79,23 +74,21 @@ inline SinCosPair unfold(const Reduced& reduced, Doubles sin_r, Doubles cos_r, d
 /// was its largest single cost: here both angles share each SSE2 instruction (GCC/Clang vector
 /// extensions), the dependency chain is short, and nothing branches on the quadrant.
 inline SinCosPair sinCosPair(double angle_a, double angle_b) {
-  using sin_cos_detail::both;
   using sin_cos_detail::Doubles;
   const sin_cos_detail::Reduced reduced = sin_cos_detail::reduce(angle_a, angle_b);
   const Doubles r = reduced.r;
   // Taylor series to r^17 and r^16: the next terms are below 1e-19 for |r| <= pi/4. Estrin's
   // scheme rather than Horner's halves the dependency chain.
   const Doubles z = r * r, z2 = z * z, z4 = z2 * z2;
-  const Doubles sin_tail = ((both(-0x1.5555555555555p-3) + both(0x1.1111111111111p-7) * z) +
-                            z2 * (both(-0x1.a01a01a01a01ap-13) + both(0x1.71de3a556c734p-19) * z)) +
-                           z4 * ((both(-0x1.ae64567f544e4p-26) + both(0x1.6124613a86d09p-33) * z) +
-                                 z2 * (both(-0x1.ae7f3e733b81fp-41) + both(0x1.952c77030ad4ap-49) * z));
+  const Doubles sin_tail = ((-0x1.5555555555555p-3 + 0x1.1111111111111p-7 * z) +
+                            z2 * (-0x1.a01a01a01a01ap-13 + 0x1.71de3a556c734p-19 * z)) +
+                           z4 * ((-0x1.ae64567f544e4p-26 + 0x1.6124613a86d09p-33 * z) +
+                                 z2 * (-0x1.ae7f3e733b81fp-41 + 0x1.952c77030ad4ap-49 * z));
   const Doubles cos_tail =
-      ((both(0x1.5555555555555p-5) - both(0x1.6c16c16c16c17p-10) * z) +
-       z2 * (both(0x1.a01a01a01a01ap-16) - both(0x1.27e4fb7789f5cp-22) * z)) +
-      z4 * ((both(0x1.1eed8eff8d898p-29) - both(0x1.93974a8c07c9dp-37) * z) + z2 * both(0x1.ae7f3e733b81fp-45));
-  return sin_cos_detail::unfold(reduced, r + r * z * sin_tail,
-                                both(1.0) - both(0.5) * z + z2 * cos_tail,
+      ((0x1.5555555555555p-5 - 0x1.6c16c16c16c17p-10 * z) +
+       z2 * (0x1.a01a01a01a01ap-16 - 0x1.27e4fb7789f5cp-22 * z)) +
+      z4 * ((0x1.1eed8eff8d898p-29 - 0x1.93974a8c07c9dp-37 * z) + z2 * 0x1.ae7f3e733b81fp-45);
+  return sin_cos_detail::unfold(reduced, r + r * z * sin_tail, 1.0 - 0.5 * z + z2 * cos_tail,
                                 angle_a, angle_b);
 }
 
@@ -106,19 +99,17 @@ inline constexpr double kCoarseSinCosError = 1e-11;
 /// sinCosPair() with shorter series (to r^11 and r^12), for filters whose margins allow
 /// kCoarseSinCosError: about two thirds of the polynomial work.
 inline SinCosPair sinCosPairCoarse(double angle_a, double angle_b) {
-  using sin_cos_detail::both;
   using sin_cos_detail::Doubles;
   const sin_cos_detail::Reduced reduced = sin_cos_detail::reduce(angle_a, angle_b);
   const Doubles r = reduced.r;
   const Doubles z = r * r, z2 = z * z;
-  const Doubles sin_tail = (both(-0x1.5555555555555p-3) + both(0x1.1111111111111p-7) * z) +
-                           z2 * ((both(-0x1.a01a01a01a01ap-13) + both(0x1.71de3a556c734p-19) * z) +
-                                 z2 * (both(-0x1.ae64567f544e4p-26)));
-  const Doubles cos_tail = (both(0x1.5555555555555p-5) - both(0x1.6c16c16c16c17p-10) * z) +
-                           z2 * ((both(0x1.a01a01a01a01ap-16) - both(0x1.27e4fb7789f5cp-22) * z) +
-                                 z2 * both(0x1.1eed8eff8d898p-29));
-  return sin_cos_detail::unfold(reduced, r + r * z * sin_tail,
-                                both(1.0) - both(0.5) * z + z2 * cos_tail,
+  const Doubles sin_tail = (-0x1.5555555555555p-3 + 0x1.1111111111111p-7 * z) +
+                           z2 * ((-0x1.a01a01a01a01ap-13 + 0x1.71de3a556c734p-19 * z) +
+                                 z2 * -0x1.ae64567f544e4p-26);
+  const Doubles cos_tail = (0x1.5555555555555p-5 - 0x1.6c16c16c16c17p-10 * z) +
+                           z2 * ((0x1.a01a01a01a01ap-16 - 0x1.27e4fb7789f5cp-22 * z) +
+                                 z2 * 0x1.1eed8eff8d898p-29);
+  return sin_cos_detail::unfold(reduced, r + r * z * sin_tail, 1.0 - 0.5 * z + z2 * cos_tail,
                                 angle_a, angle_b);
 }
 
