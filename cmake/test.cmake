@@ -25,6 +25,7 @@ ellipse_collision_add_gtest(test_core LIBRARIES ellipse_collision_core quadmath 
   test/core/test_pair_line_parser.cpp
   test/core/test_motion_line_parser.cpp
   test/core/test_unique_names.cpp
+  test/core/test_ellipse_polygon.cpp
   test/support/contact_scale_oracle.cpp)
 ellipse_collision_add_gtest(test_scene_core LIBRARIES ellipse_collision_core SOURCES
   test/core/test_frame_projection.cpp
