@@ -211,8 +211,11 @@ void CollisionNode::publishState() {
 void CollisionNode::publishMarkers() {
   // Nobody listening: skip the work. onMarkerSubscriber() publishes for the next subscriber.
   if (!state_.valid || markers_pub_.getNumSubscribers() == 0) return;
-  markers_pub_.publish(markers_.update(state_.outcome.placed, state_.outcome.collisions,
-                                       state_.outcome.warnings, config_.fixed_frame, state_.stamp));
+  // Only what changed since the last array: an unchanged scene publishes nothing.
+  const visualization_msgs::MarkerArray changes =
+      markers_.update(state_.outcome.placed, state_.outcome.collisions, state_.outcome.warnings,
+                      config_.fixed_frame, state_.stamp);
+  if (!changes.markers.empty()) markers_pub_.publish(changes);
 }
 
 void CollisionNode::onTimer(const ros::TimerEvent& /*event*/) {
@@ -220,9 +223,11 @@ void CollisionNode::onTimer(const ros::TimerEvent& /*event*/) {
   runFullCheck(ros::Duration(0));
 }
 
-void CollisionNode::onMarkerSubscriber(const ros::SingleSubscriberPublisher& /*subscriber*/) {
-  // The latched array may predate checks that were skipped while nobody listened: refresh it.
+void CollisionNode::onMarkerSubscriber(const ros::SingleSubscriberPublisher& subscriber) {
+  // The arrays only carry changes, so the latched one is not the whole view: bring everyone up to
+  // date (checks were skipped while nobody listened), then send the newcomer alone everything.
   publishMarkers();
+  if (state_.valid) subscriber.publish(markers_.fullArray());
 }
 
 void CollisionNode::onObstacles(const EllipseArray::ConstPtr& msg) {
