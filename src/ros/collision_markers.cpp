@@ -12,7 +12,7 @@ using visualization_msgs::Marker;
 
 constexpr std::uint32_t kIdMask = 0x7fffffffu;  // marker ids are int32; keep them >= 0
 constexpr std::size_t kStateCount = kMarkerStates.size();
-// B's ceiling: 4096 buckets hold 1,048,576 ellipses at kEllipsesPerMarker each.
+// B's ceiling: beyond 4096 x kEllipsesPerMarker = 131,072 ellipses the buckets grow instead.
 constexpr std::uint32_t kMaxBuckets = 4096;
 static_assert(kMaxBuckets <= static_cast<std::uint32_t>(CollisionMarkers::kIdsPerState));
 

@@ -60,7 +60,7 @@ class CollisionMarkers {
   static constexpr double kLineWidth = 0.02;     ///< clearance lines [m]
   static constexpr double kLineHeight = 0.01;    ///< z of the clearance lines, above the fill [m]
   static constexpr float kEllipseAlpha = 0.6f;   ///< translucent: overlaps stay visible
-  static constexpr std::size_t kEllipsesPerMarker = 256;
+  static constexpr std::size_t kEllipsesPerMarker = 32;
   static constexpr std::int32_t kIdsPerState = 1 << 16;  ///< more than B can reach
   static constexpr const char* kClearanceNamespace = "clearance";
 
