@@ -81,6 +81,7 @@ def main():
     parser.add_argument("--warmup", type=float, default=20.0)
     parser.add_argument("--window", type=float, default=30.0)
     parser.add_argument("--stats", required=True)
+    parser.add_argument("--still", action="store_true", help="links stand still: no marker changes")
     args = parser.parse_args(rospy.myargv()[1:])
     rospy.init_node("rviz_fps_scene")
     tf_pub = rospy.Publisher("/tf", tf2_msgs.msg.TFMessage, queue_size=10)
@@ -93,7 +94,7 @@ def main():
     while not rospy.is_shutdown():
         now = time.monotonic() - start
         stamp = rospy.Time.now()
-        transforms = link_transforms(now, args.obstacles)
+        transforms = link_transforms(0.0 if args.still else now, args.obstacles)
         for tf in transforms:
             tf.header.stamp = stamp
         tf_pub.publish(tf2_msgs.msg.TFMessage(transforms))

@@ -10,7 +10,9 @@
 # they share the machine's noise; medians per build at the end. Not part of CI.
 #
 #   scripts/rviz_fps.sh [--obstacles N] [--runs R] [--warmup S] [--window S] [--display :97]
-#                       [--scale PX_PER_M] [--screenshot PATH] LABEL=PATH/TO/ellipse_collision_node...
+#                       [--scale PX_PER_M] [--screenshot PATH] [--still] LABEL=PATH/TO/ellipse_collision_node...
+#
+# --still parks the links (the scene never changes): rviz's drawing ceiling without marker traffic.
 #
 # A build's libraries are taken from the node's RUNPATH, or from a `lib` directory beside the
 # binary if there is one (a saved copy of an older build). Without LABEL=... it measures this
@@ -26,6 +28,7 @@ window=30
 display=":97"
 scale=""
 screenshot=""
+scene_args=()
 builds=()
 while (($#)); do
   case "$1" in
@@ -36,6 +39,7 @@ while (($#)); do
     --display) display="$2"; shift 2 ;;
     --scale) scale="$2"; shift 2 ;;
     --screenshot) screenshot="$2"; shift 2 ;;
+    --still) scene_args+=(--still); shift ;;
     *=*) builds+=("$1"); shift ;;
     *) sed -n '2,20p' "$0" >&2; exit 2 ;;
   esac
@@ -113,7 +117,7 @@ for run in $(seq "${runs}"); do
     node_pid=$!
     pids+=(${node_pid})
     /usr/bin/python3 "${repo}/bench/rviz_fps_scene.py" --obstacles "${obstacles}" --warmup "${warmup}" \
-      --window "${window}" --stats "${out}/scene_${tag}.json" > "${out}/scene_${tag}.txt" 2>&1 &
+      --window "${window}" --stats "${out}/scene_${tag}.json" ${scene_args[@]+"${scene_args[@]}"} > "${out}/scene_${tag}.txt" 2>&1 &
     pids+=($!)
     DISPLAY="${display}" LIBGL_ALWAYS_SOFTWARE=1 FRAME_LOG="${out}/frames_${tag}.log" \
       LD_PRELOAD="${out}/glx_frame_log.so" rviz -d "${out}/view.rviz" > "${out}/rviz_${tag}.txt" 2>&1 &
