@@ -26,7 +26,8 @@ std::vector<Eigen::Vector2d> ellipsePolygon(const Ellipse& ellipse, int segments
   return vertices;
 }
 
-std::size_t appendEllipseTriangles(const Ellipse& ellipse, std::vector<Eigen::Vector2d>& triangles) {
+std::size_t appendEllipseTriangles(const Ellipse& ellipse,
+                                   std::vector<Eigen::Vector2d>& triangles) {
   const std::vector<Eigen::Vector2d> vertices = ellipsePolygon(ellipse, drawSegments(ellipse));
   const std::size_t before = triangles.size();
   for (std::size_t i = 1; i + 1 < vertices.size(); ++i) {

@@ -46,7 +46,8 @@ geometry_msgs::Point point(const Eigen::Vector2d& xy, double z) {
   return p;
 }
 
-bool samePoints(const std::vector<geometry_msgs::Point>& a, const std::vector<geometry_msgs::Point>& b) {
+bool samePoints(const std::vector<geometry_msgs::Point>& a,
+                const std::vector<geometry_msgs::Point>& b) {
   return std::equal(a.begin(), a.end(), b.begin(), b.end(),
                     [](const geometry_msgs::Point& p, const geometry_msgs::Point& q) {
                       return p.x == q.x && p.y == q.y && p.z == q.z;
@@ -113,7 +114,8 @@ Marker CollisionMarkers::emptyMarker(const std::string& ns, std::int32_t id) con
   return marker;
 }
 
-std::vector<Marker> CollisionMarkers::fills(std::size_t layer, const std::vector<char>& wanted) const {
+std::vector<Marker> CollisionMarkers::fills(std::size_t layer,
+                                            const std::vector<char>& wanted) const {
   const Layer& l = layers_[layer];
   std::vector<std::vector<Eigen::Vector2d>> triangles(wanted.size());
   for (const auto& [name, entry] : l.entries) {
@@ -139,8 +141,9 @@ std::vector<Marker> CollisionMarkers::fills(std::size_t layer, const std::vector
 }
 
 visualization_msgs::MarkerArray CollisionMarkers::update(
-    const std::vector<core::NamedEllipse>& placed, const std::vector<core::CollidingPair>& collisions,
-    const std::vector<core::NearPair>& warnings, const std::string& fixed_frame, const ros::Time& stamp) {
+    const std::vector<core::NamedEllipse>& placed,
+    const std::vector<core::CollidingPair>& collisions, const std::vector<core::NearPair>& warnings,
+    const std::string& fixed_frame, const ros::Time& stamp) {
   ++generation_;
   fixed_frame_ = fixed_frame;
   stamp_ = stamp;
@@ -154,7 +157,9 @@ visualization_msgs::MarkerArray CollisionMarkers::update(
     if (warned.count(name)) return MarkerState::Warning;
     return MarkerState::Free;
   };
-  const auto layerOf = [](core::EllipseRole role) { return role == core::EllipseRole::Link ? 0u : 1u; };
+  const auto layerOf = [](core::EllipseRole role) {
+    return role == core::EllipseRole::Link ? 0u : 1u;
+  };
 
   std::array<std::size_t, kLayers> counts{};
   for (const core::NamedEllipse& named : placed) {

@@ -29,13 +29,15 @@ double implicitForm(const Ellipse& e, const Eigen::Vector2d& p) {
   return (u / e.radius_x) * (u / e.radius_x) + (v / e.radius_y) * (v / e.radius_y);
 }
 
-double distanceToSegment(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+double distanceToSegment(const Eigen::Vector2d& p, const Eigen::Vector2d& a,
+                         const Eigen::Vector2d& b) {
   const Eigen::Vector2d ab = b - a;
   const double t = std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
   return (p - (a + t * ab)).norm();
 }
 
-/// Largest distance from densely sampled rim points (by arc, 20,000 samples) to the polygon's edges.
+/// Largest distance from densely sampled rim points (by arc, 20,000 samples) to the polygon's
+/// edges.
 double largestGap(const Ellipse& e, const std::vector<Eigen::Vector2d>& polygon) {
   double largest = 0.0;
   const int samples = 20000;
@@ -47,14 +49,17 @@ double largestGap(const Ellipse& e, const std::vector<Eigen::Vector2d>& polygon)
                                    std::sin(e.angle) * local.x() + std::cos(e.angle) * local.y());
     double nearest = INFINITY;
     for (std::size_t i = 0; i < polygon.size(); ++i) {
-      nearest = std::min(nearest, distanceToSegment(p, polygon[i], polygon[(i + 1) % polygon.size()]));
+      nearest =
+          std::min(nearest, distanceToSegment(p, polygon[i], polygon[(i + 1) % polygon.size()]));
     }
     largest = std::max(largest, nearest);
   }
   return largest;
 }
 
-double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
+double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  return a.x() * b.y() - a.y() * b.x();
+}
 
 TEST(EllipsePolygon, VerticesLieOnTheRimCounterClockwiseFromTheEllipsesOwnXAxis) {
   const Ellipse e = makeEllipse(3.0, -2.0, 0.7, 0.2, 0.9);
@@ -81,7 +86,8 @@ TEST(EllipsePolygon, SegmentCountIsTheSmallestWithinTheGapBetweenItsBounds) {
   EXPECT_EQ(drawSegments(makeEllipse(0, 0, 1.0, 1.0, 0)), 50);
   EXPECT_EQ(drawSegments(makeEllipse(0, 0, 100.0, 100.0, 0)), 64);
   // The larger radius decides, whichever axis it is on.
-  EXPECT_EQ(drawSegments(makeEllipse(0, 0, 1.0, 0.01, 0)), drawSegments(makeEllipse(0, 0, 0.01, 1.0, 2)));
+  EXPECT_EQ(drawSegments(makeEllipse(0, 0, 1.0, 0.01, 0)),
+            drawSegments(makeEllipse(0, 0, 0.01, 1.0, 2)));
 }
 
 TEST(EllipsePolygon, DrawnRimStaysWithinTheDocumentedGapOfTheTrueRim) {

@@ -47,7 +47,8 @@ class MarkerView {
   std::map<MarkerKey, visualization_msgs::Marker> shown_;
 };
 
-inline core::Ellipse makeEllipse(double x, double y, double radius_x, double radius_y, double angle = 0.0) {
+inline core::Ellipse makeEllipse(double x, double y, double radius_x, double radius_y,
+                                 double angle = 0.0) {
   core::Ellipse e;
   e.center = Eigen::Vector2d(x, y);
   e.radius_x = radius_x;
@@ -85,7 +86,8 @@ inline double areaOnRim(const visualization_msgs::Marker& m, const core::Ellipse
 /// The shown TRIANGLE_LIST markers of `ns` that draw `e` filled: their triangles on its rim cover
 /// at least 95 % of its area (an inscribed 16-gon covers 97.4 %) and at most all of it (an
 /// ellipse drawn twice in one marker fails), flat at z = 0 with an unscaled identity pose.
-inline std::vector<const visualization_msgs::Marker*> fillsOf(const MarkerView& view, const std::string& ns,
+inline std::vector<const visualization_msgs::Marker*> fillsOf(const MarkerView& view,
+                                                              const std::string& ns,
                                                               const core::Ellipse& e) {
   const double full = M_PI * e.radius_x * e.radius_y;
   std::vector<const visualization_msgs::Marker*> fills;
@@ -93,9 +95,11 @@ inline std::vector<const visualization_msgs::Marker*> fillsOf(const MarkerView& 
     if (key.first != ns || m.type != visualization_msgs::Marker::TRIANGLE_LIST) continue;
     const double area = areaOnRim(m, e);
     if (area < 0.95 * full || area > full * (1 + 1e-6)) continue;
-    const bool flat = std::all_of(m.points.begin(), m.points.end(), [](const auto& p) { return p.z == 0.0; });
+    const bool flat =
+        std::all_of(m.points.begin(), m.points.end(), [](const auto& p) { return p.z == 0.0; });
     const bool plain = m.pose.position.x == 0 && m.pose.position.y == 0 && m.pose.position.z == 0 &&
-                       m.pose.orientation.w == 1.0 && m.scale.x == 1.0 && m.scale.y == 1.0 && m.scale.z == 1.0;
+                       m.pose.orientation.w == 1.0 && m.scale.x == 1.0 && m.scale.y == 1.0 &&
+                       m.scale.z == 1.0;
     if (flat && plain) fills.push_back(&m);
   }
   return fills;
@@ -108,8 +112,12 @@ inline const visualization_msgs::Marker* fillOf(const MarkerView& view, const st
   return fills.size() == 1 ? fills[0] : nullptr;
 }
 
-inline bool isRed(const visualization_msgs::Marker& m) { return m.color.r > 0.5f && m.color.g < 0.5f; }
-inline bool isGreen(const visualization_msgs::Marker& m) { return m.color.g > 0.5f && m.color.r < 0.5f; }
+inline bool isRed(const visualization_msgs::Marker& m) {
+  return m.color.r > 0.5f && m.color.g < 0.5f;
+}
+inline bool isGreen(const visualization_msgs::Marker& m) {
+  return m.color.g > 0.5f && m.color.r < 0.5f;
+}
 inline bool isYellow(const visualization_msgs::Marker& m) {
   return m.color.r > 0.5f && m.color.g > 0.5f && m.color.b < 0.5f;
 }

@@ -24,7 +24,8 @@ using test::MarkerView;
 using visualization_msgs::Marker;
 using visualization_msgs::MarkerArray;
 
-core::NamedEllipse named(const std::string& name, core::EllipseRole role, double x = 0.0, double y = 0.0) {
+core::NamedEllipse named(const std::string& name, core::EllipseRole role, double x = 0.0,
+                         double y = 0.0) {
   core::NamedEllipse e;
   e.name = name;
   e.role = role;
@@ -57,7 +58,8 @@ std::vector<std::array<double, 6>> drawnTriangles(const MarkerView& view, const 
                                                   {m.points[i + 1].x, m.points[i + 1].y},
                                                   {m.points[i + 2].x, m.points[i + 2].y}}};
       std::sort(v.begin(), v.end());
-      triangles.push_back({v[0].first, v[0].second, v[1].first, v[1].second, v[2].first, v[2].second});
+      triangles.push_back(
+          {v[0].first, v[0].second, v[1].first, v[1].second, v[2].first, v[2].second});
     }
   }
   std::sort(triangles.begin(), triangles.end());
@@ -93,13 +95,14 @@ TEST(CollisionMarkers, EachEllipseIsDrawnAsFilledTrianglesOnItsRimInTheFixedFram
 
 TEST(CollisionMarkers, RedInCollisionYellowInAWarningPairGreenOtherwise) {
   CollisionMarkers markers;
-  const std::vector<core::NamedEllipse> placed = {named("arm", kLink, 0, 0), named("hand", kLink, 0, 1),
-                                                  named("box", kObstacle, 0, 2), named("cup", kObstacle, 0, 3),
-                                                  named("far", kObstacle, 0, 4)};
+  const std::vector<core::NamedEllipse> placed = {
+      named("arm", kLink, 0, 0), named("hand", kLink, 0, 1), named("box", kObstacle, 0, 2),
+      named("cup", kObstacle, 0, 3), named("far", kObstacle, 0, 4)};
   MarkerView view;
   view.apply(markers.update(
       placed, {{"arm", "box", 0.5}},
-      {nearPair("arm", "cup", {0, 0}, {1, 0}), nearPair("hand", "cup", {0, 0}, {0, 1})}, "m", kStamp));
+      {nearPair("arm", "cup", {0, 0}, {1, 0}), nearPair("hand", "cup", {0, 0}, {0, 1})}, "m",
+      kStamp));
   EXPECT_TRUE(isRed(fillOf(view, "links", placed[0].ellipse))) << "a collision outranks a warning";
   EXPECT_TRUE(isYellow(fillOf(view, "links", placed[1].ellipse)));
   EXPECT_TRUE(isRed(fillOf(view, "obstacles", placed[2].ellipse)));
@@ -109,7 +112,8 @@ TEST(CollisionMarkers, RedInCollisionYellowInAWarningPairGreenOtherwise) {
   EXPECT_EQ(view.shown().size(), 5u + 2u);  // and two clearance lines
   EXPECT_EQ(fillOf(view, "links", placed[0].ellipse)->id,
             CollisionMarkers::fillId(MarkerState::Collision, 0));
-  EXPECT_EQ(fillOf(view, "obstacles", placed[4].ellipse)->id, CollisionMarkers::fillId(MarkerState::Free, 0));
+  EXPECT_EQ(fillOf(view, "obstacles", placed[4].ellipse)->id,
+            CollisionMarkers::fillId(MarkerState::Free, 0));
 }
 
 TEST(CollisionMarkers, StateTableIsInRankOrderWithDistinctCodesAndColours) {
@@ -132,8 +136,8 @@ TEST(CollisionMarkers, StateTableIsInRankOrderWithDistinctCodesAndColours) {
 TEST(CollisionMarkers, LinksAndObstaclesHaveTheirOwnNamespacesAndQueriesAreNotDrawn) {
   CollisionMarkers markers;
   core::NamedEllipse probe = named("probe", core::EllipseRole::Query, 5, 5);
-  const MarkerArray array =
-      markers.update({named("arm", kLink), probe, named("box", kObstacle, 0, 3)}, {}, {}, "m", kStamp);
+  const MarkerArray array = markers.update(
+      {named("arm", kLink), probe, named("box", kObstacle, 0, 3)}, {}, {}, "m", kStamp);
   ASSERT_EQ(array.markers.size(), 2u);
   EXPECT_EQ(array.markers[0].ns, "links");
   EXPECT_EQ(array.markers[1].ns, "obstacles");
@@ -146,7 +150,8 @@ TEST(CollisionMarkers, LinksAndObstaclesHaveTheirOwnNamespacesAndQueriesAreNotDr
 TEST(CollisionMarkers, SameNameInBothNamespacesIsDrawnInEach) {
   CollisionMarkers markers;
   MarkerView view;
-  view.apply(markers.update({named("x", kObstacle, 0, 0), named("x", kLink, 0, 1)}, {}, {}, "m", kStamp));
+  view.apply(
+      markers.update({named("x", kObstacle, 0, 0), named("x", kLink, 0, 1)}, {}, {}, "m", kStamp));
   EXPECT_TRUE(isGreen(fillOf(view, "obstacles", makeEllipse(0, 0, 0.5, 0.2))));
   EXPECT_TRUE(isGreen(fillOf(view, "links", makeEllipse(0, 1, 0.5, 0.2))));
 }
@@ -189,7 +194,8 @@ TEST(CollisionMarkers, UnchangedSceneSendsNothingAndAChangeOnlyTheMarkersItTouch
 TEST(CollisionMarkers, VanishedEllipseIsRemovedFromItsMarkerAndAnEmptiedMarkerDeletedOnce) {
   CollisionMarkers markers;
   MarkerView view;
-  view.apply(markers.update({named("a", kObstacle, 0, 0), named("b", kObstacle, 0, 1)}, {}, {}, "m", kStamp));
+  view.apply(markers.update({named("a", kObstacle, 0, 0), named("b", kObstacle, 0, 1)}, {}, {}, "m",
+                            kStamp));
   ASSERT_TRUE(fillOf(view, "obstacles", makeEllipse(0, 0, 0.5, 0.2)));
   const int id = fillOf(view, "obstacles", makeEllipse(0, 0, 0.5, 0.2))->id;
 
@@ -216,7 +222,8 @@ TEST(CollisionMarkers, VanishedEllipseIsRemovedFromItsMarkerAndAnEmptiedMarkerDe
 
 TEST(CollisionMarkers, AStateThatEmptiesIsDeletedAndTheEllipseShownInItsNewColour) {
   CollisionMarkers markers;
-  const std::vector<core::NamedEllipse> placed = {named("arm", kLink, 0, 0), named("box", kObstacle, 0, 1)};
+  const std::vector<core::NamedEllipse> placed = {named("arm", kLink, 0, 0),
+                                                  named("box", kObstacle, 0, 1)};
   MarkerView view;
   view.apply(markers.update(placed, {{"arm", "box", 0.5}}, {}, "m", kStamp));
   const MarkerArray clear = markers.update(placed, {}, {}, "m", kStamp);
@@ -270,12 +277,14 @@ TEST(CollisionMarkers, ManyEllipsesAreSplitIntoBoundedMarkersThatRegroupWhenTheC
   std::size_t points = 0;
   for (const auto& [key, m] : view.shown()) {
     // A hash bucket holds at most twice its mean share here (about 20 of each 10,000 / 512).
-    EXPECT_LE(m.points.size(), 2 * CollisionMarkers::kEllipsesPerMarker * 3 * (core::drawSegments(placed[0].ellipse) - 2))
+    EXPECT_LE(m.points.size(), 2 * CollisionMarkers::kEllipsesPerMarker * 3 *
+                                   (core::drawSegments(placed[0].ellipse) - 2))
         << "bucket " << key.second;
     points += m.points.size();
   }
   EXPECT_EQ(points, 10000u * 3 * (core::drawSegments(placed[0].ellipse) - 2));  // each ellipse once
-  for (const int i : {0, 1234, 9999}) EXPECT_TRUE(isGreen(fillOf(view, "obstacles", placed[i].ellipse)));
+  for (const int i : {0, 1234, 9999})
+    EXPECT_TRUE(isGreen(fillOf(view, "obstacles", placed[i].ellipse)));
 
   // Down to 7 (fewer than a quarter of 32 per bucket even at B = 2): one bucket; the other 511
   // markers are deleted, the rest drawn again.
@@ -283,7 +292,8 @@ TEST(CollisionMarkers, ManyEllipsesAreSplitIntoBoundedMarkersThatRegroupWhenTheC
   view.apply(markers.update(placed, {}, {}, "m", kStamp));
   ASSERT_EQ(view.shown().size(), 1u);
   EXPECT_EQ(view.shown().begin()->second.id, CollisionMarkers::fillId(MarkerState::Free, 0));
-  EXPECT_EQ(view.shown().begin()->second.points.size(), 7u * 3 * (core::drawSegments(placed[0].ellipse) - 2));
+  EXPECT_EQ(view.shown().begin()->second.points.size(),
+            7u * 3 * (core::drawSegments(placed[0].ellipse) - 2));
   EXPECT_TRUE(isGreen(fillOf(view, "obstacles", placed[6].ellipse)));
 }
 
@@ -309,12 +319,14 @@ TEST(CollisionMarkers, ChangesAppliedInOrderShowWhatTheFullArrayShows) {
       if (scene.count(name) && k % 4 == 0) {
         scene.erase(name);
       } else {
-        core::NamedEllipse e = named(name, i < 10 ? kLink : kObstacle, i % 30 + shift(random), i / 30);
+        core::NamedEllipse e =
+            named(name, i < 10 ? kLink : kObstacle, i % 30 + shift(random), i / 30);
         scene[name] = e;
       }
     }
     if (cycle == 20) {  // a crowd arrives: the obstacles are regrouped into more buckets
-      for (int i = 0; i < 3000; ++i) scene["c" + std::to_string(i)] = named("c" + std::to_string(i), kObstacle, i, 50);
+      for (int i = 0; i < 3000; ++i)
+        scene["c" + std::to_string(i)] = named("c" + std::to_string(i), kObstacle, i, 50);
     }
     for (const auto& [name, e] : scene) placed.push_back(e);
     std::vector<core::CollidingPair> collisions;
@@ -326,7 +338,8 @@ TEST(CollisionMarkers, ChangesAppliedInOrderShowWhatTheFullArrayShows) {
       if (k % 2) {
         collisions.push_back({"l" + std::to_string(i % 10), other, 0.5});
       } else {
-        warnings.push_back(nearPair("l" + std::to_string(i % 10), other, {0, 0}, {shift(random), 1}));
+        warnings.push_back(
+            nearPair("l" + std::to_string(i % 10), other, {0, 0}, {shift(random), 1}));
       }
     }
     changes.apply(markers.update(placed, collisions, warnings, "m", kStamp));
@@ -378,14 +391,16 @@ TEST(CollisionMarkers, PreferredIdIsTheFnv1aHashOfTheNameInThirtyOneBits) {
 
 TEST(CollisionMarkers, ClearanceHashClashGivesTheLaterPairTheNextFreeIdForGood) {
   // ("arm", "o398824") and ("arm", "o768140") clash in 31-bit FNV-1a (found by search).
-  ASSERT_EQ(CollisionMarkers::preferredId("arm", "o398824"), CollisionMarkers::preferredId("arm", "o768140"));
+  ASSERT_EQ(CollisionMarkers::preferredId("arm", "o398824"),
+            CollisionMarkers::preferredId("arm", "o768140"));
   const int preferred = CollisionMarkers::preferredId("arm", "o398824");
-  const std::vector<core::NamedEllipse> placed = {named("arm", kLink), named("o398824", kObstacle, 0, 2),
-                                                  named("o768140", kObstacle, 0, 4)};
+  const std::vector<core::NamedEllipse> placed = {
+      named("arm", kLink), named("o398824", kObstacle, 0, 2), named("o768140", kObstacle, 0, 4)};
   CollisionMarkers markers;
   const MarkerArray both = markers.update(
-      placed, {}, {nearPair("arm", "o398824", {0, 0}, {0, 1}), nearPair("arm", "o768140", {0, 0}, {0, 2})},
-      "m", kStamp);
+      placed, {},
+      {nearPair("arm", "o398824", {0, 0}, {0, 1}), nearPair("arm", "o768140", {0, 0}, {0, 2})}, "m",
+      kStamp);
   ASSERT_TRUE(find(both, "clearance", preferred));
   ASSERT_TRUE(find(both, "clearance", preferred + 1));
   EXPECT_EQ(find(both, "clearance", preferred)->points[1].y, 1.0);
@@ -403,7 +418,8 @@ TEST(CollisionMarkers, WarningPairIsALineBetweenItsWitnessPointsAboveTheEllipses
   const MarkerArray array =
       markers.update({named("arm", kLink), named("cup", kObstacle, 3.0, 0.0)}, {},
                      {nearPair("arm", "cup", {0.5, 0.25}, {2.5, -0.25})}, "odom", kStamp);
-  const Marker* line = find(array, CollisionMarkers::kClearanceNamespace, CollisionMarkers::preferredId("arm", "cup"));
+  const Marker* line = find(array, CollisionMarkers::kClearanceNamespace,
+                            CollisionMarkers::preferredId("arm", "cup"));
   ASSERT_TRUE(line);
   EXPECT_EQ(std::string(CollisionMarkers::kClearanceNamespace), "clearance");
   EXPECT_EQ(line->type, Marker::LINE_LIST);
@@ -426,20 +442,22 @@ TEST(CollisionMarkers, WarningPairIsALineBetweenItsWitnessPointsAboveTheEllipses
 
 TEST(CollisionMarkers, ClearanceLineIsResentWhenItMovesAndDeletedOnceWhenThePairGoesAway) {
   CollisionMarkers markers;
-  const std::vector<core::NamedEllipse> placed = {named("arm", kLink), named("cup", kObstacle, 0, 2),
-                                                  named("box", kObstacle, 0, 4)};
+  const std::vector<core::NamedEllipse> placed = {
+      named("arm", kLink), named("cup", kObstacle, 0, 2), named("box", kObstacle, 0, 4)};
   const int arm_cup = CollisionMarkers::preferredId("arm", "cup");
   const int arm_box = CollisionMarkers::preferredId("arm", "box");
   MarkerView view;
   view.apply(markers.update(placed, {}, {nearPair("arm", "cup", {0, 0}, {1, 0})}, "m", kStamp));
   const MarkerArray moved = markers.update(
-      placed, {}, {nearPair("arm", "box", {0, 0}, {0, 1}), nearPair("arm", "cup", {0, 0}, {2, 0})}, "m", kStamp);
+      placed, {}, {nearPair("arm", "box", {0, 0}, {0, 1}), nearPair("arm", "cup", {0, 0}, {2, 0})},
+      "m", kStamp);
   ASSERT_TRUE(find(moved, "clearance", arm_cup));
   EXPECT_EQ(find(moved, "clearance", arm_cup)->points[1].x, 2.0);
   ASSERT_TRUE(find(moved, "clearance", arm_box));
   view.apply(moved);
 
-  const MarkerArray gone = markers.update(placed, {}, {nearPair("arm", "box", {0, 0}, {0, 1})}, "m", kStamp);
+  const MarkerArray gone =
+      markers.update(placed, {}, {nearPair("arm", "box", {0, 0}, {0, 1})}, "m", kStamp);
   ASSERT_TRUE(find(gone, "clearance", arm_cup));
   EXPECT_EQ(find(gone, "clearance", arm_cup)->action, Marker::DELETE);
   EXPECT_FALSE(find(gone, "clearance", arm_box)) << "unchanged: not sent again";

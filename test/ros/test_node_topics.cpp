@@ -19,12 +19,12 @@ namespace ellipse_collision {
 namespace test {
 namespace {
 
-using visualization_msgs::Marker;
-using visualization_msgs::MarkerArray;
 using test::isGreen;
 using test::isRed;
 using test::isYellow;
 using test::MarkerView;
+using visualization_msgs::Marker;
+using visualization_msgs::MarkerArray;
 
 #define EXPECT_CONTAINS(text, part) \
   EXPECT_NE(std::string(text).find(part), std::string::npos) << "in: " << (text)
@@ -65,7 +65,6 @@ const Marker* markerNamed(const MarkerView& view, const std::string& name) {
 const Marker* lineOf(const MarkerView& view, const std::string& a, const std::string& b) {
   return view.find("clearance", CollisionMarkers::preferredId(a, b));
 }
-
 
 class NodeTopics : public ::testing::Test {
  protected:
@@ -180,7 +179,8 @@ TEST_F(NodeTopics, MarkersShowEveryPlacedEllipseInTheFixedFrame) {
   // Every placed link and obstacle is drawn exactly once where test_scene.yaml puts it
   // (markerNamed: one marker's triangles on its rim cover it), and nothing else is drawn.
   std::vector<core::Ellipse> placed;
-  for (const char* name : {"arm", "body", "bumper", "plate", "crate", "post", "post_near", "spare"}) {
+  for (const char* name :
+       {"arm", "body", "bumper", "plate", "crate", "post", "post_near", "spare"}) {
     EXPECT_TRUE(markerNamed(a, name)) << name << " is not drawn exactly once where it is";
     placed.push_back(shapeOf(name));
   }
@@ -193,7 +193,8 @@ TEST_F(NodeTopics, MarkersShowEveryPlacedEllipseInTheFixedFrame) {
     for (std::size_t i = 0; i + 2 < m.points.size(); i += 3, ++triangles) {
       const bool on_a_rim = std::any_of(placed.begin(), placed.end(), [&](const core::Ellipse& e) {
         for (std::size_t k = i; k < i + 3; ++k) {
-          if (std::abs(test::implicitForm(e, m.points[k].x, m.points[k].y) - 1.0) > 1e-6) return false;
+          if (std::abs(test::implicitForm(e, m.points[k].x, m.points[k].y) - 1.0) > 1e-6)
+            return false;
         }
         return true;
       });
@@ -213,7 +214,8 @@ TEST_F(NodeTopics, MarkersShowEveryPlacedEllipseInTheFixedFrame) {
 
 TEST_F(NodeTopics, UnchangedSceneSendsNoMarkersAndANewSubscriberSeesTheSameView) {
   MarkerView first;
-  ASSERT_TRUE(waitForView([](const MarkerView& m) { return markerNamed(m, "crate"); }, 10.0, &first));
+  ASSERT_TRUE(
+      waitForView([](const MarkerView& m) { return markerNamed(m, "crate"); }, 10.0, &first));
   // The scene stands still (arm parked, static frames): checks go on at 20 Hz, markers do not.
   const std::size_t arrays = markers_.count();
   const std::size_t states = collisions_.count();
@@ -222,7 +224,8 @@ TEST_F(NodeTopics, UnchangedSceneSendsNoMarkersAndANewSubscriberSeesTheSameView)
   EXPECT_EQ(markers_.count(), arrays) << "an unchanged scene re-sent markers";
   // A late subscriber builds the same view from its full array.
   Recorder<MarkerArray> late(nh_, nodeTopic("markers"));
-  ASSERT_TRUE(waitUntil([&] { return MarkerView(late.all()).shown().size() == first.shown().size(); }, 10.0));
+  ASSERT_TRUE(waitUntil(
+      [&] { return MarkerView(late.all()).shown().size() == first.shown().size(); }, 10.0));
   const MarkerView second(late.all());
   std::set<std::pair<std::string, int>> keys_first;
   std::set<std::pair<std::string, int>> keys_second;
@@ -271,8 +274,8 @@ TEST_F(NodeTopics, LinkNearAnObstacleTurnsBothYellowWithALineThatIsDeletedWhenIt
   EXPECT_FALSE(mentions(state.collisions, "arm"));
 
   MarkerView markers;
-  ASSERT_TRUE(waitForView(
-      [](const MarkerView& a) { return lineOf(a, "arm", "crate") != nullptr; }, 10.0, &markers));
+  ASSERT_TRUE(waitForView([](const MarkerView& a) { return lineOf(a, "arm", "crate") != nullptr; },
+                          10.0, &markers));
   ASSERT_TRUE(markerNamed(markers, "arm") && markerNamed(markers, "crate"));
   EXPECT_TRUE(isYellow(markerNamed(markers, "arm")));
   EXPECT_TRUE(isYellow(markerNamed(markers, "crate")));
@@ -318,8 +321,8 @@ TEST_F(NodeTopics, RemovedObstacleIsDeletedAndGetsItsIdBackWhenReAdded) {
   add.request.obstacles = {ellipseMsg("barrel", "base_link", 5.0, 5.0, 0.2, 0.2)};
   ASSERT_TRUE(call("add_obstacles", add) && add.response.success) << add.response.message;
   MarkerView with_barrel;
-  ASSERT_TRUE(waitForView([](const MarkerView& m) { return markerNamed(m, "barrel"); },
-                                     10.0, &with_barrel));
+  ASSERT_TRUE(waitForView([](const MarkerView& m) { return markerNamed(m, "barrel"); }, 10.0,
+                          &with_barrel));
   const Marker barrel = *markerNamed(with_barrel, "barrel");
   EXPECT_EQ(barrel.ns, "obstacles");
 
@@ -338,14 +341,15 @@ TEST_F(NodeTopics, RemovedObstacleIsDeletedAndGetsItsIdBackWhenReAdded) {
       10.0, before));
   EXPECT_TRUE(waitForView(
       [](const MarkerView& m) {
-        return test::fillsOf(m, "obstacles", shapeOf("barrel")).empty() && isGreen(markerNamed(m, "crate"));
+        return test::fillsOf(m, "obstacles", shapeOf("barrel")).empty() &&
+               isGreen(markerNamed(m, "crate"));
       },
       10.0));
 
   ASSERT_TRUE(call("add_obstacles", add) && add.response.success);
   MarkerView again;
-  ASSERT_TRUE(waitForView([](const MarkerView& m) { return markerNamed(m, "barrel"); },
-                                     10.0, &again));
+  ASSERT_TRUE(
+      waitForView([](const MarkerView& m) { return markerNamed(m, "barrel"); }, 10.0, &again));
   EXPECT_EQ(markerNamed(again, "barrel")->id, barrel.id);
   ASSERT_TRUE(ros::service::call(nodeTopic("remove_obstacles"), remove) && remove.response.success);
 }
@@ -372,10 +376,12 @@ TEST_F(NodeTopics, ObstacleStreamReplacesThePreviousTopicObstacles) {
       },
       10.0));
   // rock3 has rock2's shape and place: exactly one red circle there means rock2 was removed
-  // (two would be two fills, or one marker covering the circle twice, and markerNamed() finds none).
+  // (two would be two fills, or one marker covering the circle twice, and markerNamed() finds
+  // none).
   EXPECT_TRUE(waitForView(
       [](const MarkerView& m) {
-        return isRed(markerNamed(m, "rock3")) && test::fillsOf(m, "obstacles", shapeOf("rock1")).empty();
+        return isRed(markerNamed(m, "rock3")) &&
+               test::fillsOf(m, "obstacles", shapeOf("rock1")).empty();
       },
       10.0));
 
@@ -415,7 +421,8 @@ TEST_F(NodeTopics, DiagnosticsReportCountsUnavailableFramesAndCheckDuration) {
   // than 1 s (issue 12; before it, a frame missing for good stayed WARN).
   ASSERT_TRUE(diagnostics.waitForLatest(
       [](const diagnostic_msgs::DiagnosticArray& a) {
-        return !a.status.empty() && a.status[0].name.find("ellipse_collision") != std::string::npos &&
+        return !a.status.empty() &&
+               a.status[0].name.find("ellipse_collision") != std::string::npos &&
                a.status[0].level == diagnostic_msgs::DiagnosticStatus::ERROR;
       },
       10.0, &array));

@@ -57,9 +57,9 @@ inline constexpr std::array<MarkerStateStyle, 3> kMarkerStates{{
 /// text on other marker types; names are in ~collisions.
 class CollisionMarkers {
  public:
-  static constexpr double kLineWidth = 0.02;     ///< clearance lines [m]
-  static constexpr double kLineHeight = 0.01;    ///< z of the clearance lines, above the fill [m]
-  static constexpr float kEllipseAlpha = 0.6f;   ///< translucent: overlaps stay visible
+  static constexpr double kLineWidth = 0.02;    ///< clearance lines [m]
+  static constexpr double kLineHeight = 0.01;   ///< z of the clearance lines, above the fill [m]
+  static constexpr float kEllipseAlpha = 0.6f;  ///< translucent: overlaps stay visible
   static constexpr std::size_t kEllipsesPerMarker = 32;
   static constexpr std::int32_t kIdsPerState = 1 << 16;  ///< more than B can reach
   static constexpr const char* kClearanceNamespace = "clearance";
@@ -102,8 +102,8 @@ class CollisionMarkers {
   struct Layer {
     std::unordered_map<std::string, Entry> entries;
     std::vector<Entry*> by_position;  ///< entry at each index of the last `placed` (a fast path)
-    std::uint32_t buckets{1};          ///< B
-    std::set<std::int32_t> shown;      ///< ids of its markers rviz holds
+    std::uint32_t buckets{1};         ///< B
+    std::set<std::int32_t> shown;     ///< ids of its markers rviz holds
   };
   static constexpr std::size_t kLayers = 2;  // links, obstacles
 
