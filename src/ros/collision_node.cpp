@@ -28,6 +28,9 @@ app::CheckSettings makeSettings(const NodeConfig& config) {
   return settings;
 }
 
+/// Marker arrays queued per ~markers subscriber: some seconds of checks at any useful rate.
+constexpr std::uint32_t kMarkerQueue = 100;
+
 /// A frame unavailable or stale for longer than this [s] makes /diagnostics ERROR.
 constexpr double kMaxMissingS = 1.0;
 
@@ -52,8 +55,11 @@ CollisionNode::CollisionNode(const ros::NodeHandle& nh, const ros::NodeHandle& p
                                            : defaultObstacleStore(ros::this_node::getName());
   restoreObstacles();
   collisions_pub_ = private_nh_.advertise<CollisionState>("collisions", 1, /*latch=*/true);
+  // The arrays carry changes, so none may be dropped: a queue of kMarkerQueue arrays per
+  // subscriber (roscpp drops the oldest beyond it; with 1, the full view sent to a new subscriber
+  // was lost whenever the next check's changes followed it before it was written out).
   markers_pub_ = private_nh_.advertise<visualization_msgs::MarkerArray>(
-      "markers", 1,
+      "markers", kMarkerQueue,
       [this](const ros::SingleSubscriberPublisher& subscriber) { onMarkerSubscriber(subscriber); },
       ros::SubscriberStatusCallback(), ros::VoidConstPtr(), /*latch=*/true);
   diagnostics_pub_ = nh_.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 1);
