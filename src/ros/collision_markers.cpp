@@ -118,9 +118,11 @@ std::vector<Marker> CollisionMarkers::fills(std::size_t layer,
                                             const std::vector<char>& wanted) const {
   const Layer& l = layers_[layer];
   std::vector<std::vector<Eigen::Vector2d>> triangles(wanted.size());
-  for (const auto& [name, entry] : l.entries) {
-    const std::size_t index = stateIndex(entry.state) * l.buckets + entry.hash % l.buckets;
-    if (wanted[index]) core::appendEllipseTriangles(entry.ellipse, triangles[index]);
+  for (std::size_t index = 0; index < wanted.size(); ++index) {
+    if (!wanted[index]) continue;
+    for (const Entry* entry : l.members[index]) {
+      core::appendEllipseTriangles(entry->ellipse, triangles[index]);
+    }
   }
   const char* ns = nameSpace(layer == 0 ? core::EllipseRole::Link : core::EllipseRole::Obstacle);
   std::vector<Marker> markers;
@@ -170,13 +172,32 @@ visualization_msgs::MarkerArray CollisionMarkers::update(
   for (std::size_t layer = 0; layer < kLayers; ++layer) {
     Layer& l = layers_[layer];
     const std::uint32_t buckets = bucketsFor(counts[layer], l.buckets);
-    rebuild[layer] = buckets != l.buckets;  // every bucket changes: send all anew
+    // Every bucket changes (or, at the first update, none exists yet): regroup, send all anew.
+    rebuild[layer] = buckets != l.buckets || l.members.size() != kStateCount * buckets;
     l.buckets = buckets;
     dirty[layer].assign(kStateCount * buckets, rebuild[layer] ? 1 : 0);
   }
-  const auto markDirty = [&](std::size_t layer, MarkerState state, std::uint32_t hash) {
-    dirty[layer][stateIndex(state) * layers_[layer].buckets + hash % layers_[layer].buckets] = 1;
+  const auto indexOf = [&](std::size_t layer, MarkerState state, std::uint32_t hash) {
+    return stateIndex(state) * layers_[layer].buckets + hash % layers_[layer].buckets;
   };
+  const auto markDirty = [&](std::size_t layer, MarkerState state, std::uint32_t hash) {
+    dirty[layer][indexOf(layer, state, hash)] = 1;
+  };
+  // Membership is kept up to date entry by entry, except in a layer whose B changed: that one is
+  // regrouped as a whole below.
+  const auto join = [&](std::size_t layer, Entry* entry) {
+    if (rebuild[layer]) return;
+    layers_[layer].members[indexOf(layer, entry->state, entry->hash)].push_back(entry);
+  };
+  const auto leave = [&](std::size_t layer, Entry* entry) {
+    if (rebuild[layer]) return;
+    std::vector<Entry*>& members =
+        layers_[layer].members[indexOf(layer, entry->state, entry->hash)];
+    const auto it = std::find(members.begin(), members.end(), entry);
+    *it = members.back();
+    members.pop_back();
+  };
+  std::array<std::size_t, kLayers> seen{};  // distinct entries met in this update
 
   std::array<std::vector<Entry*>, kLayers> positions;
   for (std::size_t layer = 0; layer < kLayers; ++layer) positions[layer].reserve(counts[layer]);
@@ -202,12 +223,18 @@ visualization_msgs::MarkerArray CollisionMarkers::update(
       entry->ellipse = named.ellipse;
       entry->state = state;
       markDirty(layer, state, entry->hash);
+      join(layer, entry);
     } else if (entry->state != state || !sameEllipse(entry->ellipse, named.ellipse)) {
       markDirty(layer, entry->state, entry->hash);
       markDirty(layer, state, entry->hash);
-      entry->state = state;
+      if (entry->state != state) {
+        leave(layer, entry);
+        entry->state = state;
+        join(layer, entry);
+      }
       entry->ellipse = named.ellipse;
     }
+    if (entry->generation != generation_) ++seen[layer];
     entry->generation = generation_;
     positions[layer].push_back(entry);
   }
@@ -215,15 +242,23 @@ visualization_msgs::MarkerArray CollisionMarkers::update(
   visualization_msgs::MarkerArray array;
   for (std::size_t layer = 0; layer < kLayers; ++layer) {
     Layer& l = layers_[layer];
-    for (auto it = l.entries.begin(); it != l.entries.end();) {
+    // When every entry was met in this update nothing went away: no pass over the namespace.
+    for (auto it = l.entries.begin(); seen[layer] != l.entries.size() && it != l.entries.end();) {
       if (it->second.generation == generation_) {
         ++it;
         continue;
       }
       markDirty(layer, it->second.state, it->second.hash);
+      leave(layer, &it->second);
       it = l.entries.erase(it);
     }
     l.by_position = std::move(positions[layer]);
+    if (rebuild[layer]) {
+      l.members.assign(kStateCount * l.buckets, {});
+      for (auto& [name, entry] : l.entries) {
+        l.members[indexOf(layer, entry.state, entry.hash)].push_back(&entry);
+      }
+    }
 
     std::set<std::int32_t> sent;
     for (Marker& marker : fills(layer, dirty[layer])) {

@@ -104,6 +104,9 @@ class CollisionMarkers {
     std::vector<Entry*> by_position;  ///< entry at each index of the last `placed` (a fast path)
     std::uint32_t buckets{1};         ///< B
     std::set<std::int32_t> shown;     ///< ids of its markers rviz holds
+    /// The entries of each marker, by state index * B + bucket: a changed marker is rebuilt from
+    /// its own ellipses, not by a pass over the whole namespace.
+    std::vector<std::vector<Entry*>> members;
   };
   static constexpr std::size_t kLayers = 2;  // links, obstacles
 
