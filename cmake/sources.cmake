@@ -4,6 +4,7 @@
 set(ELLIPSE_COLLISION_CORE_SOURCES
   src/core/broadphase.cpp
   src/core/distance.cpp
+  src/core/ellipse_polygon.cpp
   src/core/eigenvalue_test.cpp
   src/core/ellipse.cpp
   src/core/enclosing_ellipse.cpp

@@ -26,6 +26,7 @@ ellipse_collision_add_gtest(test_core LIBRARIES ellipse_collision_core quadmath 
   test/core/test_pair_line_parser.cpp
   test/core/test_motion_line_parser.cpp
   test/core/test_unique_names.cpp
+  test/core/test_ellipse_polygon.cpp
   test/support/contact_scale_oracle.cpp)
 # The early-out stages are internal to overlap(): their test reads src/core's detail headers.
 target_include_directories(test_core PRIVATE ${PROJECT_SOURCE_DIR}/src/core)

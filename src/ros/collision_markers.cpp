@@ -1,6 +1,9 @@
 #include "ellipse_collision/ros/collision_markers.h"
 
-#include <cmath>
+#include <algorithm>
+#include <unordered_set>
+
+#include "ellipse_collision/core/ellipse_polygon.h"
 
 namespace ellipse_collision {
 namespace {
@@ -8,6 +11,10 @@ namespace {
 using visualization_msgs::Marker;
 
 constexpr std::uint32_t kIdMask = 0x7fffffffu;  // marker ids are int32; keep them >= 0
+constexpr std::size_t kStateCount = kMarkerStates.size();
+// B's ceiling: beyond 4096 x kEllipsesPerMarker = 131,072 ellipses the buckets grow instead.
+constexpr std::uint32_t kMaxBuckets = 4096;
+static_assert(kMaxBuckets <= static_cast<std::uint32_t>(CollisionMarkers::kIdsPerState));
 
 std::uint32_t fnv1a(const std::string& bytes, std::uint32_t hash = 2166136261u) {
   for (const char c : bytes) {
@@ -22,31 +29,13 @@ std::string pairKey(const std::string& name_a, const std::string& name_b) {
   return std::to_string(name_a.size()) + ":" + name_a + name_b;
 }
 
-/// A colour of the view (r, g, b in [0, 1]).
-struct Colour {
-  float r, g, b;
-};
-constexpr Colour kRed{0.9f, 0.1f, 0.1f};
-constexpr Colour kYellow{0.9f, 0.85f, 0.1f};
-constexpr Colour kGreen{0.1f, 0.8f, 0.1f};
-constexpr float kEllipseAlpha = 0.6f;
+std::size_t stateIndex(MarkerState state) { return static_cast<std::size_t>(state); }
 
-void setColour(Marker& marker, const Colour& colour, float alpha) {
-  marker.color.r = colour.r;
-  marker.color.g = colour.g;
-  marker.color.b = colour.b;
+void setColour(Marker& marker, float r, float g, float b, float alpha) {
+  marker.color.r = r;
+  marker.color.g = g;
+  marker.color.b = b;
   marker.color.a = alpha;
-}
-
-Marker emptyMarker(const std::string& fixed_frame, const ros::Time& stamp, const std::string& ns,
-                   std::int32_t id) {
-  Marker marker;
-  marker.header.frame_id = fixed_frame;
-  marker.header.stamp = stamp;
-  marker.ns = ns;
-  marker.id = id;
-  marker.pose.orientation.w = 1.0;
-  return marker;
 }
 
 geometry_msgs::Point point(const Eigen::Vector2d& xy, double z) {
@@ -57,10 +46,41 @@ geometry_msgs::Point point(const Eigen::Vector2d& xy, double z) {
   return p;
 }
 
+bool samePoints(const std::vector<geometry_msgs::Point>& a,
+                const std::vector<geometry_msgs::Point>& b) {
+  return std::equal(a.begin(), a.end(), b.begin(), b.end(),
+                    [](const geometry_msgs::Point& p, const geometry_msgs::Point& q) {
+                      return p.x == q.x && p.y == q.y && p.z == q.z;
+                    });
+}
+
+bool sameEllipse(const core::Ellipse& a, const core::Ellipse& b) {
+  return a.center == b.center && a.radius_x == b.radius_x && a.radius_y == b.radius_y &&
+         a.angle == b.angle;
+}
+
+/// B for `count` ellipses, starting from the current `buckets`: doubled while a bucket would hold
+/// more than kEllipsesPerMarker on average, halved while it would hold fewer than a quarter of
+/// that (the gap keeps a count near a threshold from re-bucketing every cycle).
+std::uint32_t bucketsFor(std::size_t count, std::uint32_t buckets) {
+  const std::size_t per = CollisionMarkers::kEllipsesPerMarker;
+  while (count > per * buckets && buckets < kMaxBuckets) buckets *= 2;
+  while (buckets > 1 && count < per / 4 * buckets) buckets /= 2;
+  return buckets;
+}
+
 }  // namespace
 
 const char* CollisionMarkers::nameSpace(core::EllipseRole role) {
   return role == core::EllipseRole::Link ? "links" : "obstacles";
+}
+
+const MarkerStateStyle& CollisionMarkers::style(MarkerState state) {
+  return kMarkerStates[stateIndex(state)];
+}
+
+std::int32_t CollisionMarkers::fillId(MarkerState state, std::uint32_t bucket) {
+  return style(state).code * kIdsPerState + static_cast<std::int32_t>(bucket);
 }
 
 std::int32_t CollisionMarkers::preferredId(const std::string& name) {
@@ -71,74 +91,243 @@ std::int32_t CollisionMarkers::preferredId(const std::string& name_a, const std:
   return static_cast<std::int32_t>(fnv1a(pairKey(name_a, name_b)) & kIdMask);
 }
 
-std::int32_t CollisionMarkers::idFor(const std::string& ns, const std::string& key,
-                                     std::int32_t preferred) {
-  Ids& ids = ids_[ns];
-  const auto known = ids.by_key.find(key);
-  if (known != ids.by_key.end()) return known->second;
+std::int32_t CollisionMarkers::lineId(const std::string& key, std::int32_t preferred) {
+  const auto known = line_ids_.find(key);
+  if (known != line_ids_.end()) return known->second;
   // Never reused: a key that comes back finds its old id above, a clash takes the next free one.
   std::int32_t id = preferred;
-  while (ids.taken.count(id)) {
+  while (line_ids_taken_.count(id)) {
     id = static_cast<std::int32_t>((static_cast<std::uint32_t>(id) + 1) & kIdMask);
   }
-  ids.taken.insert(id);
-  ids.by_key.emplace(key, id);
+  line_ids_taken_.insert(id);
+  line_ids_.emplace(key, id);
   return id;
 }
 
-visualization_msgs::MarkerArray CollisionMarkers::update(
-    const std::vector<core::NamedEllipse>& placed, const std::vector<core::CollidingPair>& collisions,
-    const std::vector<core::NearPair>& warnings, const std::string& fixed_frame, const ros::Time& stamp) {
-  std::set<std::string> colliding;
-  for (const core::CollidingPair& pair : collisions) colliding.insert({pair.name_a, pair.name_b});
-  std::set<std::string> warned;
-  for (const core::NearPair& pair : warnings) warned.insert({pair.name_a, pair.name_b});
+Marker CollisionMarkers::emptyMarker(const std::string& ns, std::int32_t id) const {
+  Marker marker;
+  marker.header.frame_id = fixed_frame_;
+  marker.header.stamp = stamp_;
+  marker.ns = ns;
+  marker.id = id;
+  marker.pose.orientation.w = 1.0;
+  return marker;
+}
 
-  visualization_msgs::MarkerArray array;
-  std::set<Key> shown_now;
+std::vector<Marker> CollisionMarkers::fills(std::size_t layer,
+                                            const std::vector<char>& wanted) const {
+  const Layer& l = layers_[layer];
+  std::vector<std::vector<Eigen::Vector2d>> triangles(wanted.size());
+  for (std::size_t index = 0; index < wanted.size(); ++index) {
+    if (!wanted[index]) continue;
+    for (const Entry* entry : l.members[index]) {
+      core::appendEllipseTriangles(entry->ellipse, triangles[index]);
+    }
+  }
+  const char* ns = nameSpace(layer == 0 ? core::EllipseRole::Link : core::EllipseRole::Obstacle);
+  std::vector<Marker> markers;
+  for (std::size_t index = 0; index < triangles.size(); ++index) {
+    if (triangles[index].empty()) continue;
+    const MarkerStateStyle& s = kMarkerStates[index / l.buckets];
+    Marker marker = emptyMarker(ns, fillId(s.state, static_cast<std::uint32_t>(index % l.buckets)));
+    marker.type = Marker::TRIANGLE_LIST;
+    marker.action = Marker::ADD;
+    // rviz scales a triangle list's vertices by `scale`.
+    marker.scale.x = marker.scale.y = marker.scale.z = 1.0;
+    setColour(marker, s.r, s.g, s.b, kEllipseAlpha);
+    marker.points.reserve(triangles[index].size());
+    for (const Eigen::Vector2d& p : triangles[index]) marker.points.push_back(point(p, 0.0));
+    markers.push_back(std::move(marker));
+  }
+  return markers;
+}
+
+visualization_msgs::MarkerArray CollisionMarkers::update(
+    const std::vector<core::NamedEllipse>& placed,
+    const std::vector<core::CollidingPair>& collisions, const std::vector<core::NearPair>& warnings,
+    const std::string& fixed_frame, const ros::Time& stamp) {
+  ++generation_;
+  fixed_frame_ = fixed_frame;
+  stamp_ = stamp;
+  std::unordered_set<std::string> colliding;
+  for (const core::CollidingPair& pair : collisions) colliding.insert({pair.name_a, pair.name_b});
+  std::unordered_set<std::string> warned;
+  for (const core::NearPair& pair : warnings) warned.insert({pair.name_a, pair.name_b});
+  // The highest-ranked state the ellipse qualifies for.
+  const auto stateOf = [&](const std::string& name) {
+    if (colliding.count(name)) return MarkerState::Collision;
+    if (warned.count(name)) return MarkerState::Warning;
+    return MarkerState::Free;
+  };
+  const auto layerOf = [](core::EllipseRole role) {
+    return role == core::EllipseRole::Link ? 0u : 1u;
+  };
+
+  std::array<std::size_t, kLayers> counts{};
+  for (const core::NamedEllipse& named : placed) {
+    if (named.role != core::EllipseRole::Query) ++counts[layerOf(named.role)];
+  }
+  std::array<bool, kLayers> rebuild{};
+  std::array<std::vector<char>, kLayers> dirty;  // by state index * B + bucket
+  for (std::size_t layer = 0; layer < kLayers; ++layer) {
+    Layer& l = layers_[layer];
+    const std::uint32_t buckets = bucketsFor(counts[layer], l.buckets);
+    // Every bucket changes (or, at the first update, none exists yet): regroup, send all anew.
+    rebuild[layer] = buckets != l.buckets || l.members.size() != kStateCount * buckets;
+    l.buckets = buckets;
+    dirty[layer].assign(kStateCount * buckets, rebuild[layer] ? 1 : 0);
+  }
+  const auto indexOf = [&](std::size_t layer, MarkerState state, std::uint32_t hash) {
+    return stateIndex(state) * layers_[layer].buckets + hash % layers_[layer].buckets;
+  };
+  const auto markDirty = [&](std::size_t layer, MarkerState state, std::uint32_t hash) {
+    dirty[layer][indexOf(layer, state, hash)] = 1;
+  };
+  // Membership is kept up to date entry by entry, except in a layer whose B changed: that one is
+  // regrouped as a whole below.
+  const auto join = [&](std::size_t layer, Entry* entry) {
+    if (rebuild[layer]) return;
+    layers_[layer].members[indexOf(layer, entry->state, entry->hash)].push_back(entry);
+  };
+  const auto leave = [&](std::size_t layer, Entry* entry) {
+    if (rebuild[layer]) return;
+    std::vector<Entry*>& members =
+        layers_[layer].members[indexOf(layer, entry->state, entry->hash)];
+    const auto it = std::find(members.begin(), members.end(), entry);
+    *it = members.back();
+    members.pop_back();
+  };
+  std::array<std::size_t, kLayers> seen{};  // distinct entries met in this update
+
+  std::array<std::vector<Entry*>, kLayers> positions;
+  for (std::size_t layer = 0; layer < kLayers; ++layer) positions[layer].reserve(counts[layer]);
   for (const core::NamedEllipse& named : placed) {
     if (named.role == core::EllipseRole::Query) continue;
-    const std::string ns = nameSpace(named.role);
-    Marker marker =
-        emptyMarker(fixed_frame, stamp, ns, idFor(ns, named.name, preferredId(named.name)));
-    marker.type = Marker::CYLINDER;
-    marker.action = Marker::ADD;
-    marker.pose.position.x = named.ellipse.center.x();
-    marker.pose.position.y = named.ellipse.center.y();
-    marker.pose.position.z = 0.0;
-    marker.pose.orientation.z = std::sin(named.ellipse.angle / 2);
-    marker.pose.orientation.w = std::cos(named.ellipse.angle / 2);
-    marker.scale.x = 2 * named.ellipse.radius_x;
-    marker.scale.y = 2 * named.ellipse.radius_y;
-    marker.scale.z = kThickness;
-    // A collision outranks a warning: an ellipse in both kinds of pair is red.
-    const Colour& colour = colliding.count(named.name) ? kRed
-                           : warned.count(named.name)  ? kYellow
-                                                       : kGreen;
-    setColour(marker, colour, kEllipseAlpha);
-    shown_now.insert({marker.ns, marker.id});
-    array.markers.push_back(marker);
+    const std::size_t layer = layerOf(named.role);
+    Layer& l = layers_[layer];
+    const std::size_t position = positions[layer].size();
+    // Scenes mostly list the same names in the same order: try last cycle's entry at this place
+    // before the hash lookup.
+    Entry* entry = position < l.by_position.size() && l.by_position[position]->name == named.name
+                       ? l.by_position[position]
+                       : nullptr;
+    if (!entry) {
+      const auto found = l.entries.find(named.name);
+      if (found != l.entries.end()) entry = &found->second;
+    }
+    const MarkerState state = stateOf(named.name);
+    if (!entry) {
+      entry = &l.entries[named.name];
+      entry->name = named.name;
+      entry->hash = fnv1a(named.name) & kIdMask;
+      entry->ellipse = named.ellipse;
+      entry->state = state;
+      markDirty(layer, state, entry->hash);
+      join(layer, entry);
+    } else if (entry->state != state || !sameEllipse(entry->ellipse, named.ellipse)) {
+      markDirty(layer, entry->state, entry->hash);
+      markDirty(layer, state, entry->hash);
+      if (entry->state != state) {
+        leave(layer, entry);
+        entry->state = state;
+        join(layer, entry);
+      }
+      entry->ellipse = named.ellipse;
+    }
+    if (entry->generation != generation_) ++seen[layer];
+    entry->generation = generation_;
+    positions[layer].push_back(entry);
   }
+
+  visualization_msgs::MarkerArray array;
+  for (std::size_t layer = 0; layer < kLayers; ++layer) {
+    Layer& l = layers_[layer];
+    // When every entry was met in this update nothing went away: no pass over the namespace.
+    for (auto it = l.entries.begin(); seen[layer] != l.entries.size() && it != l.entries.end();) {
+      if (it->second.generation == generation_) {
+        ++it;
+        continue;
+      }
+      markDirty(layer, it->second.state, it->second.hash);
+      leave(layer, &it->second);
+      it = l.entries.erase(it);
+    }
+    l.by_position = std::move(positions[layer]);
+    if (rebuild[layer]) {
+      l.members.assign(kStateCount * l.buckets, {});
+      for (auto& [name, entry] : l.entries) {
+        l.members[indexOf(layer, entry.state, entry.hash)].push_back(&entry);
+      }
+    }
+
+    std::set<std::int32_t> sent;
+    for (Marker& marker : fills(layer, dirty[layer])) {
+      sent.insert(marker.id);
+      array.markers.push_back(std::move(marker));
+    }
+    const char* ns = nameSpace(layer == 0 ? core::EllipseRole::Link : core::EllipseRole::Obstacle);
+    for (auto it = l.shown.begin(); it != l.shown.end();) {
+      const std::int32_t code = *it / kIdsPerState;
+      const std::uint32_t bucket = static_cast<std::uint32_t>(*it % kIdsPerState);
+      const auto s = std::find_if(kMarkerStates.begin(), kMarkerStates.end(),
+                                  [&](const MarkerStateStyle& row) { return row.code == code; });
+      const bool asked = rebuild[layer] || s == kMarkerStates.end() ||
+                         dirty[layer][stateIndex(s->state) * l.buckets + bucket];
+      if (!asked || sent.count(*it)) {
+        ++it;
+        continue;
+      }
+      Marker deletion = emptyMarker(ns, *it);
+      deletion.action = Marker::DELETE;
+      array.markers.push_back(deletion);
+      it = l.shown.erase(it);
+    }
+    l.shown.insert(sent.begin(), sent.end());
+  }
+
+  std::map<std::int32_t, Marker> lines_now;
   for (const core::NearPair& pair : warnings) {
-    Marker line = emptyMarker(fixed_frame, stamp, kClearanceNamespace,
-                              idFor(kClearanceNamespace, pairKey(pair.name_a, pair.name_b),
-                                    preferredId(pair.name_a, pair.name_b)));
+    Marker line = emptyMarker(kClearanceNamespace, lineId(pairKey(pair.name_a, pair.name_b),
+                                                          preferredId(pair.name_a, pair.name_b)));
     line.type = Marker::LINE_LIST;
     line.action = Marker::ADD;
     line.scale.x = kLineWidth;
-    // Just above the cylinders' top faces, so the line is not hidden inside them.
-    line.points = {point(pair.point_a, kThickness), point(pair.point_b, kThickness)};
-    setColour(line, kYellow, 1.0f);
-    shown_now.insert({line.ns, line.id});
-    array.markers.push_back(line);
+    // Just above the filled ellipses, so the line is drawn over them.
+    line.points = {point(pair.point_a, kLineHeight), point(pair.point_b, kLineHeight)};
+    const MarkerStateStyle& s = style(MarkerState::Warning);
+    setColour(line, s.r, s.g, s.b, 1.0f);
+    lines_now[line.id] = line;
   }
-  for (const Key& key : shown_) {
-    if (shown_now.count(key)) continue;
-    Marker deletion = emptyMarker(fixed_frame, stamp, key.first, key.second);
+  for (const auto& [id, line] : lines_now) {
+    const auto old = lines_shown_.find(id);
+    if (old == lines_shown_.end() || !samePoints(old->second.points, line.points)) {
+      array.markers.push_back(line);
+    }
+  }
+  for (const auto& [id, line] : lines_shown_) {
+    if (lines_now.count(id)) continue;
+    Marker deletion = emptyMarker(kClearanceNamespace, id);
     deletion.action = Marker::DELETE;
     array.markers.push_back(deletion);
   }
-  shown_ = std::move(shown_now);
+  lines_shown_ = std::move(lines_now);
+  return array;
+}
+
+visualization_msgs::MarkerArray CollisionMarkers::fullArray() const {
+  visualization_msgs::MarkerArray array;
+  Marker clear = emptyMarker("", 0);
+  clear.action = Marker::DELETEALL;
+  array.markers.push_back(clear);
+  for (std::size_t layer = 0; layer < kLayers; ++layer) {
+    const std::vector<char> all(kStateCount * layers_[layer].buckets, 1);
+    for (Marker& marker : fills(layer, all)) array.markers.push_back(std::move(marker));
+  }
+  for (const auto& [id, line] : lines_shown_) {
+    Marker now = line;
+    now.header.stamp = stamp_;
+    array.markers.push_back(now);
+  }
   return array;
 }
 

@@ -28,6 +28,9 @@ app::CheckSettings makeSettings(const NodeConfig& config) {
   return settings;
 }
 
+/// Marker arrays queued per ~markers subscriber: some seconds of checks at any useful rate.
+constexpr std::uint32_t kMarkerQueue = 100;
+
 /// A frame unavailable or stale for longer than this [s] makes /diagnostics ERROR.
 constexpr double kMaxMissingS = 1.0;
 
@@ -52,8 +55,11 @@ CollisionNode::CollisionNode(const ros::NodeHandle& nh, const ros::NodeHandle& p
                                            : defaultObstacleStore(ros::this_node::getName());
   restoreObstacles();
   collisions_pub_ = private_nh_.advertise<CollisionState>("collisions", 1, /*latch=*/true);
+  // The arrays carry changes, so none may be dropped: a queue of kMarkerQueue arrays per
+  // subscriber (roscpp drops the oldest beyond it; with 1, the full view sent to a new subscriber
+  // was lost whenever the next check's changes followed it before it was written out).
   markers_pub_ = private_nh_.advertise<visualization_msgs::MarkerArray>(
-      "markers", 1,
+      "markers", kMarkerQueue,
       [this](const ros::SingleSubscriberPublisher& subscriber) { onMarkerSubscriber(subscriber); },
       ros::SubscriberStatusCallback(), ros::VoidConstPtr(), /*latch=*/true);
   diagnostics_pub_ = nh_.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 1);
@@ -211,8 +217,11 @@ void CollisionNode::publishState() {
 void CollisionNode::publishMarkers() {
   // Nobody listening: skip the work. onMarkerSubscriber() publishes for the next subscriber.
   if (!state_.valid || markers_pub_.getNumSubscribers() == 0) return;
-  markers_pub_.publish(markers_.update(state_.outcome.placed, state_.outcome.collisions,
-                                       state_.outcome.warnings, config_.fixed_frame, state_.stamp));
+  // Only what changed since the last array: an unchanged scene publishes nothing.
+  const visualization_msgs::MarkerArray changes =
+      markers_.update(state_.outcome.placed, state_.outcome.collisions, state_.outcome.warnings,
+                      config_.fixed_frame, state_.stamp);
+  if (!changes.markers.empty()) markers_pub_.publish(changes);
 }
 
 void CollisionNode::onTimer(const ros::TimerEvent& /*event*/) {
@@ -220,9 +229,11 @@ void CollisionNode::onTimer(const ros::TimerEvent& /*event*/) {
   runFullCheck(ros::Duration(0));
 }
 
-void CollisionNode::onMarkerSubscriber(const ros::SingleSubscriberPublisher& /*subscriber*/) {
-  // The latched array may predate checks that were skipped while nobody listened: refresh it.
+void CollisionNode::onMarkerSubscriber(const ros::SingleSubscriberPublisher& subscriber) {
+  // The arrays only carry changes, so the latched one is not the whole view: bring everyone up to
+  // date (checks were skipped while nobody listened), then send the newcomer alone everything.
   publishMarkers();
+  if (state_.valid) subscriber.publish(markers_.fullArray());
 }
 
 void CollisionNode::onObstacles(const EllipseArray::ConstPtr& msg) {

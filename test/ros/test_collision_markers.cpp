@@ -1,128 +1,382 @@
-// rviz markers built from a check: shape, colour, namespaces, clearance lines, ids and deletion;
-// no master.
+// rviz markers built from a check, read as rviz would show them (MarkerView): which filled
+// triangles cover each ellipse and in what colour, namespaces, clearance lines, stable ids,
+// DELETE, and that only changes are sent; no master.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 #include <set>
 
+#include "ellipse_collision/core/ellipse_polygon.h"
 #include "ellipse_collision/ros/collision_markers.h"
+#include "marker_view.h"
 
 namespace ellipse_collision {
 namespace {
 
-core::NamedEllipse named(const std::string& name, core::EllipseRole role, double x = 0.0, double y = 0.0) {
+using test::fillOf;
+using test::fillsOf;
+using test::isGreen;
+using test::isRed;
+using test::isYellow;
+using test::makeEllipse;
+using test::MarkerView;
+using visualization_msgs::Marker;
+using visualization_msgs::MarkerArray;
+
+core::NamedEllipse named(const std::string& name, core::EllipseRole role, double x = 0.0,
+                         double y = 0.0) {
   core::NamedEllipse e;
   e.name = name;
   e.role = role;
-  e.ellipse.center = Eigen::Vector2d(x, y);
-  e.ellipse.radius_x = 0.5;
-  e.ellipse.radius_y = 0.2;
-  e.ellipse.angle = 0.0;
+  e.ellipse = makeEllipse(x, y, 0.5, 0.2);
   return e;
 }
+constexpr core::EllipseRole kLink = core::EllipseRole::Link;
+constexpr core::EllipseRole kObstacle = core::EllipseRole::Obstacle;
 
-const visualization_msgs::Marker* find(const visualization_msgs::MarkerArray& array,
-                                       const std::string& ns, int id) {
+const Marker* find(const MarkerArray& array, const std::string& ns, int id) {
   for (const auto& m : array.markers) {
     if (m.ns == ns && m.id == id) return &m;
   }
   return nullptr;
 }
 
-/// The marker of the ellipse `name`, found by the documented id rule.
-const visualization_msgs::Marker* ellipseMarker(const visualization_msgs::MarkerArray& array,
-                                                const std::string& ns, const std::string& name) {
-  return find(array, ns, CollisionMarkers::preferredId(name));
-}
-
-bool isRed(const visualization_msgs::Marker& m) { return m.color.r > 0.5f && m.color.g < 0.5f; }
-bool isGreen(const visualization_msgs::Marker& m) { return m.color.g > 0.5f && m.color.r < 0.5f; }
-bool isYellow(const visualization_msgs::Marker& m) {
-  return m.color.r > 0.5f && m.color.g > 0.5f && m.color.b < 0.5f;
-}
-
 core::NearPair nearPair(const std::string& a, const std::string& b, Eigen::Vector2d point_a,
-                  Eigen::Vector2d point_b) {
+                        Eigen::Vector2d point_b) {
   return core::NearPair{a, b, (point_b - point_a).norm(), point_a, point_b};
+}
+
+/// The triangles of a view's markers of one namespace, each as its sorted vertices, sorted: what
+/// is drawn, whatever the order within and across markers.
+std::vector<std::array<double, 6>> drawnTriangles(const MarkerView& view, const std::string& ns) {
+  std::vector<std::array<double, 6>> triangles;
+  for (const auto& [key, m] : view.shown()) {
+    if (key.first != ns) continue;
+    for (std::size_t i = 0; i + 2 < m.points.size(); i += 3) {
+      std::array<std::pair<double, double>, 3> v{{{m.points[i].x, m.points[i].y},
+                                                  {m.points[i + 1].x, m.points[i + 1].y},
+                                                  {m.points[i + 2].x, m.points[i + 2].y}}};
+      std::sort(v.begin(), v.end());
+      triangles.push_back(
+          {v[0].first, v[0].second, v[1].first, v[1].second, v[2].first, v[2].second});
+    }
+  }
+  std::sort(triangles.begin(), triangles.end());
+  return triangles;
 }
 
 const ros::Time kStamp(100, 5);
 
-TEST(CollisionMarkers, EachEllipseIsAFlatCylinderWithItsPoseAndDiametersAndNoText) {
+TEST(CollisionMarkers, EachEllipseIsDrawnAsFilledTrianglesOnItsRimInTheFixedFrameAndNoText) {
   CollisionMarkers markers;
-  core::NamedEllipse arm = named("arm", core::EllipseRole::Link, 1.0, 2.0);
+  core::NamedEllipse arm = named("arm", kLink, 1.0, 2.0);
   arm.ellipse.angle = M_PI / 3;
-  const auto array = markers.update({arm}, {}, {}, "odom", kStamp);
+  const MarkerArray array = markers.update({arm}, {}, {}, "odom", kStamp);
   ASSERT_EQ(array.markers.size(), 1u);
-  const visualization_msgs::Marker& m = array.markers[0];
+  const Marker& m = array.markers[0];
   EXPECT_EQ(m.header.frame_id, "odom");
   EXPECT_EQ(m.header.stamp, kStamp);
-  EXPECT_EQ(m.type, visualization_msgs::Marker::CYLINDER);
+  EXPECT_EQ(m.type, Marker::TRIANGLE_LIST);
+  EXPECT_EQ(m.action, Marker::ADD);
+  EXPECT_EQ(m.ns, "links");
   EXPECT_EQ(m.text, "");  // rviz warns "Non-empty text is ignored" on every other type
-  EXPECT_EQ(m.action, visualization_msgs::Marker::ADD);
-  EXPECT_EQ(m.pose.position.x, 1.0);
-  EXPECT_EQ(m.pose.position.y, 2.0);
-  // Yaw of pi/3 as a quaternion about z: (0, 0, sin(pi/6), cos(pi/6)) = (0, 0, 1/2, sqrt(3)/2).
-  EXPECT_NEAR(m.pose.orientation.z, 0.5, 1e-15);
-  EXPECT_NEAR(m.pose.orientation.w, std::sqrt(3.0) / 2, 1e-15);
-  EXPECT_EQ(m.scale.x, 1.0);
-  EXPECT_EQ(m.scale.y, 0.4);
-  EXPECT_EQ(m.scale.z, CollisionMarkers::kThickness);
+  EXPECT_EQ(m.color.a, CollisionMarkers::kEllipseAlpha);
+  EXPECT_EQ(m.points.size(), 3u * (core::drawSegments(arm.ellipse) - 2));
+  MarkerView view;
+  view.apply(array);
+  EXPECT_EQ(fillOf(view, "links", arm.ellipse), &view.shown().begin()->second);
+  // The same ellipse unrotated, shifted or resized is not what is drawn.
+  EXPECT_FALSE(fillOf(view, "links", makeEllipse(1.0, 2.0, 0.5, 0.2, 0.0)));
+  EXPECT_FALSE(fillOf(view, "links", makeEllipse(1.0, 2.01, 0.5, 0.2, M_PI / 3)));
+  EXPECT_FALSE(fillOf(view, "links", makeEllipse(1.0, 2.0, 0.5, 0.21, M_PI / 3)));
+  EXPECT_FALSE(fillOf(view, "obstacles", arm.ellipse));
 }
 
 TEST(CollisionMarkers, RedInCollisionYellowInAWarningPairGreenOtherwise) {
   CollisionMarkers markers;
-  const auto array = markers.update(
-      {named("arm", core::EllipseRole::Link), named("hand", core::EllipseRole::Link),
-       named("box", core::EllipseRole::Obstacle), named("cup", core::EllipseRole::Obstacle),
-       named("far", core::EllipseRole::Obstacle)},
-      {{"arm", "box", 0.5}},
+  const std::vector<core::NamedEllipse> placed = {
+      named("arm", kLink, 0, 0), named("hand", kLink, 0, 1), named("box", kObstacle, 0, 2),
+      named("cup", kObstacle, 0, 3), named("far", kObstacle, 0, 4)};
+  MarkerView view;
+  view.apply(markers.update(
+      placed, {{"arm", "box", 0.5}},
       {nearPair("arm", "cup", {0, 0}, {1, 0}), nearPair("hand", "cup", {0, 0}, {0, 1})}, "m",
-      kStamp);
-  const auto* arm = ellipseMarker(array, "links", "arm");
-  const auto* hand = ellipseMarker(array, "links", "hand");
-  const auto* box = ellipseMarker(array, "obstacles", "box");
-  const auto* cup = ellipseMarker(array, "obstacles", "cup");
-  const auto* far = ellipseMarker(array, "obstacles", "far");
-  ASSERT_TRUE(arm && hand && box && cup && far);
-  EXPECT_TRUE(isRed(*arm)) << "a collision outranks a warning";
-  EXPECT_TRUE(isRed(*box));
-  EXPECT_TRUE(isYellow(*hand));
-  EXPECT_TRUE(isYellow(*cup));
-  EXPECT_TRUE(isGreen(*far));
-  EXPECT_FALSE(isYellow(*arm) || isYellow(*far) || isRed(*hand) || isGreen(*cup));
-  EXPECT_GT(box->color.a, 0.0f);
+      kStamp));
+  EXPECT_TRUE(isRed(fillOf(view, "links", placed[0].ellipse))) << "a collision outranks a warning";
+  EXPECT_TRUE(isYellow(fillOf(view, "links", placed[1].ellipse)));
+  EXPECT_TRUE(isRed(fillOf(view, "obstacles", placed[2].ellipse)));
+  EXPECT_TRUE(isYellow(fillOf(view, "obstacles", placed[3].ellipse)));
+  EXPECT_TRUE(isGreen(fillOf(view, "obstacles", placed[4].ellipse)));
+  // One marker per namespace and state: links red, links yellow, obstacles red, yellow, green.
+  EXPECT_EQ(view.shown().size(), 5u + 2u);  // and two clearance lines
+  EXPECT_EQ(fillOf(view, "links", placed[0].ellipse)->id,
+            CollisionMarkers::fillId(MarkerState::Collision, 0));
+  EXPECT_EQ(fillOf(view, "obstacles", placed[4].ellipse)->id,
+            CollisionMarkers::fillId(MarkerState::Free, 0));
+}
+
+TEST(CollisionMarkers, StateTableIsInRankOrderWithDistinctCodesAndColours) {
+  std::set<std::int32_t> codes;
+  std::set<std::array<float, 3>> colours;
+  for (std::size_t i = 0; i < kMarkerStates.size(); ++i) {
+    EXPECT_EQ(static_cast<std::size_t>(kMarkerStates[i].state), i);
+    codes.insert(kMarkerStates[i].code);
+    colours.insert({kMarkerStates[i].r, kMarkerStates[i].g, kMarkerStates[i].b});
+  }
+  EXPECT_EQ(codes.size(), kMarkerStates.size());
+  EXPECT_EQ(colours.size(), kMarkerStates.size());
+  EXPECT_STREQ(CollisionMarkers::style(MarkerState::Collision).name, "collision");
+  // The colours the README's legend and the demo_screenshot test name.
+  EXPECT_EQ(CollisionMarkers::style(MarkerState::Collision).r, 0.9f);
+  EXPECT_EQ(CollisionMarkers::style(MarkerState::Warning).g, 0.85f);
+  EXPECT_EQ(CollisionMarkers::style(MarkerState::Free).g, 0.8f);
 }
 
 TEST(CollisionMarkers, LinksAndObstaclesHaveTheirOwnNamespacesAndQueriesAreNotDrawn) {
   CollisionMarkers markers;
-  const auto array =
-      markers.update({named("arm", core::EllipseRole::Link), named("probe", core::EllipseRole::Query),
-                      named("box", core::EllipseRole::Obstacle)},
-                     {}, {}, "m", kStamp);
+  core::NamedEllipse probe = named("probe", core::EllipseRole::Query, 5, 5);
+  const MarkerArray array = markers.update(
+      {named("arm", kLink), probe, named("box", kObstacle, 0, 3)}, {}, {}, "m", kStamp);
   ASSERT_EQ(array.markers.size(), 2u);
   EXPECT_EQ(array.markers[0].ns, "links");
   EXPECT_EQ(array.markers[1].ns, "obstacles");
+  MarkerView view;
+  view.apply(array);
+  EXPECT_TRUE(fillsOf(view, "links", probe.ellipse).empty());
+  EXPECT_TRUE(fillsOf(view, "obstacles", probe.ellipse).empty());
 }
 
-TEST(CollisionMarkers, IdsFollowTheNamesWhateverTheOrderOrHistory) {
+TEST(CollisionMarkers, SameNameInBothNamespacesIsDrawnInEach) {
   CollisionMarkers markers;
-  const auto first = markers.update(
-      {named("a", core::EllipseRole::Obstacle), named("b", core::EllipseRole::Obstacle)}, {}, {}, "m", kStamp);
-  const auto second =
-      markers.update({named("c", core::EllipseRole::Obstacle), named("b", core::EllipseRole::Obstacle),
-                      named("a", core::EllipseRole::Obstacle)},
-                     {}, {}, "m", kStamp);
-  CollisionMarkers fresh;  // another run that meets the names in another order
-  const auto other_run = fresh.update(
-      {named("c", core::EllipseRole::Obstacle), named("a", core::EllipseRole::Obstacle)}, {}, {}, "m", kStamp);
-  EXPECT_EQ(first.markers[0].id, second.markers[2].id);      // a
-  EXPECT_EQ(first.markers[1].id, second.markers[1].id);      // b
-  EXPECT_EQ(other_run.markers[0].id, second.markers[0].id);  // c
-  EXPECT_EQ(other_run.markers[1].id, first.markers[0].id);   // a
-  std::set<int> ids;
-  for (const auto& m : second.markers) ids.insert(m.id);
-  EXPECT_EQ(ids.size(), 3u);
+  MarkerView view;
+  view.apply(
+      markers.update({named("x", kObstacle, 0, 0), named("x", kLink, 0, 1)}, {}, {}, "m", kStamp));
+  EXPECT_TRUE(isGreen(fillOf(view, "obstacles", makeEllipse(0, 0, 0.5, 0.2))));
+  EXPECT_TRUE(isGreen(fillOf(view, "links", makeEllipse(0, 1, 0.5, 0.2))));
+}
+
+TEST(CollisionMarkers, UnchangedSceneSendsNothingAndAChangeOnlyTheMarkersItTouches) {
+  CollisionMarkers markers;
+  std::vector<core::NamedEllipse> placed = {named("arm", kLink, 0, 0)};
+  for (int i = 0; i < 1000; ++i) placed.push_back(named("o" + std::to_string(i), kObstacle, i, 10));
+  MarkerView view;
+  const MarkerArray first = markers.update(placed, {}, {}, "m", kStamp);
+  view.apply(first);
+  EXPECT_TRUE(markers.update(placed, {}, {}, "m", kStamp).markers.empty());
+  EXPECT_TRUE(markers.update(placed, {}, {}, "m", ros::Time(101)).markers.empty()) << "time alone";
+
+  // The link moves: only the link marker is sent.
+  placed[0].ellipse.center.x() = 0.5;
+  const MarkerArray moved = markers.update(placed, {}, {}, "m", kStamp);
+  ASSERT_EQ(moved.markers.size(), 1u);
+  EXPECT_EQ(moved.markers[0].ns, "links");
+  view.apply(moved);
+  EXPECT_TRUE(isGreen(fillOf(view, "links", placed[0].ellipse)));
+  EXPECT_TRUE(fillsOf(view, "links", makeEllipse(0, 0, 0.5, 0.2)).empty());
+
+  // One obstacle turns red: its bucket's green marker and a red one, nothing else; a small share
+  // of the first array's bytes (1,000 obstacles are 32 buckets of about 31).
+  const MarkerArray red = markers.update(placed, {{"arm", "o7", 0.5}}, {}, "m", kStamp);
+  std::set<std::pair<std::string, int>> sent;
+  for (const Marker& m : red.markers) sent.insert({m.ns, m.id});
+  // links: red ADD, green DELETE (arm was its only ellipse); obstacles: red ADD, and the green
+  // marker of o7's bucket without it.
+  EXPECT_EQ(red.markers.size(), 4u);
+  EXPECT_LT(test::wireBytes(red), test::wireBytes(first) / 10);
+  view.apply(red);
+  EXPECT_TRUE(isRed(fillOf(view, "links", placed[0].ellipse)));
+  EXPECT_TRUE(isRed(fillOf(view, "obstacles", placed[8].ellipse)));  // o7
+  EXPECT_TRUE(isGreen(fillOf(view, "obstacles", placed[9].ellipse)));
+  EXPECT_TRUE(markers.update(placed, {{"arm", "o7", 0.5}}, {}, "m", kStamp).markers.empty());
+}
+
+TEST(CollisionMarkers, VanishedEllipseIsRemovedFromItsMarkerAndAnEmptiedMarkerDeletedOnce) {
+  CollisionMarkers markers;
+  MarkerView view;
+  view.apply(markers.update({named("a", kObstacle, 0, 0), named("b", kObstacle, 0, 1)}, {}, {}, "m",
+                            kStamp));
+  ASSERT_TRUE(fillOf(view, "obstacles", makeEllipse(0, 0, 0.5, 0.2)));
+  const int id = fillOf(view, "obstacles", makeEllipse(0, 0, 0.5, 0.2))->id;
+
+  const MarkerArray without_a = markers.update({named("b", kObstacle, 0, 1)}, {}, {}, "m", kStamp);
+  ASSERT_EQ(without_a.markers.size(), 1u);
+  EXPECT_EQ(without_a.markers[0].action, Marker::ADD);  // the green marker, now b alone
+  view.apply(without_a);
+  EXPECT_TRUE(fillsOf(view, "obstacles", makeEllipse(0, 0, 0.5, 0.2)).empty());
+  EXPECT_TRUE(isGreen(fillOf(view, "obstacles", makeEllipse(0, 1, 0.5, 0.2))));
+
+  const MarkerArray none = markers.update({}, {}, {}, "m", kStamp);
+  ASSERT_EQ(none.markers.size(), 1u);
+  EXPECT_EQ(none.markers[0].action, Marker::DELETE);
+  EXPECT_EQ(none.markers[0].ns, "obstacles");
+  EXPECT_EQ(none.markers[0].id, id);
+  view.apply(none);
+  EXPECT_TRUE(view.shown().empty());
+  EXPECT_TRUE(markers.update({}, {}, {}, "m", kStamp).markers.empty()) << "deleted once only";
+
+  const MarkerArray back = markers.update({named("a", kObstacle, 0, 0)}, {}, {}, "m", kStamp);
+  ASSERT_EQ(back.markers.size(), 1u);
+  EXPECT_EQ(back.markers[0].id, id) << "the same state and bucket, the same id";
+}
+
+TEST(CollisionMarkers, AStateThatEmptiesIsDeletedAndTheEllipseShownInItsNewColour) {
+  CollisionMarkers markers;
+  const std::vector<core::NamedEllipse> placed = {named("arm", kLink, 0, 0),
+                                                  named("box", kObstacle, 0, 1)};
+  MarkerView view;
+  view.apply(markers.update(placed, {{"arm", "box", 0.5}}, {}, "m", kStamp));
+  const MarkerArray clear = markers.update(placed, {}, {}, "m", kStamp);
+  int deletions = 0;
+  for (const Marker& m : clear.markers) {
+    if (m.action == Marker::DELETE) {
+      ++deletions;
+      EXPECT_EQ(m.id, CollisionMarkers::fillId(MarkerState::Collision, 0));
+    }
+  }
+  EXPECT_EQ(deletions, 2);  // the red marker of links and of obstacles
+  view.apply(clear);
+  EXPECT_TRUE(isGreen(fillOf(view, "links", placed[0].ellipse)));
+  EXPECT_TRUE(isGreen(fillOf(view, "obstacles", placed[1].ellipse)));
+  EXPECT_EQ(view.shown().size(), 2u);
+}
+
+TEST(CollisionMarkers, IdsDependOnStateAndNameNotOnOrderOrHistory) {
+  CollisionMarkers one;
+  CollisionMarkers other;
+  std::vector<core::NamedEllipse> placed;
+  for (int i = 0; i < 2000; ++i) placed.push_back(named("o" + std::to_string(i), kObstacle, i, 0));
+  std::vector<core::NamedEllipse> reversed(placed.rbegin(), placed.rend());
+  one.update({named("z", kObstacle)}, {}, {}, "m", kStamp);  // a different history
+  MarkerView a;
+  MarkerView b;
+  a.apply(one.update(placed, {}, {}, "m", kStamp));
+  b.apply(other.update(reversed, {}, {}, "m", kStamp));
+  EXPECT_FALSE(drawnTriangles(a, "obstacles").empty());
+  EXPECT_EQ(drawnTriangles(a, "obstacles"), drawnTriangles(b, "obstacles"));
+  std::set<int> ids_a;
+  std::set<int> ids_b;
+  for (const auto& [key, m] : a.shown()) ids_a.insert(key.second);
+  for (const auto& [key, m] : b.shown()) ids_b.insert(key.second);
+  EXPECT_EQ(ids_a, ids_b);
+  for (const int i : {0, 777, 1999}) {
+    const Marker* fill = fillOf(a, "obstacles", placed[i].ellipse);
+    ASSERT_TRUE(fill);
+    EXPECT_EQ(fill->id, fillOf(b, "obstacles", placed[i].ellipse)->id);
+  }
+}
+
+TEST(CollisionMarkers, ManyEllipsesAreSplitIntoBoundedMarkersThatRegroupWhenTheCountChanges) {
+  CollisionMarkers markers;
+  std::vector<core::NamedEllipse> placed;
+  for (int i = 0; i < 10000; ++i) placed.push_back(named("o" + std::to_string(i), kObstacle, i, 0));
+  MarkerView view;
+  view.apply(markers.update(placed, {}, {}, "m", kStamp));
+  // 10,000 / 32 -> 512 buckets, about 20 ellipses each.
+  EXPECT_EQ(view.shown().size(), 512u);
+  std::size_t points = 0;
+  for (const auto& [key, m] : view.shown()) {
+    // A hash bucket holds at most twice its mean share here (about 20 of each 10,000 / 512).
+    EXPECT_LE(m.points.size(), 2 * CollisionMarkers::kEllipsesPerMarker * 3 *
+                                   (core::drawSegments(placed[0].ellipse) - 2))
+        << "bucket " << key.second;
+    points += m.points.size();
+  }
+  EXPECT_EQ(points, 10000u * 3 * (core::drawSegments(placed[0].ellipse) - 2));  // each ellipse once
+  for (const int i : {0, 1234, 9999})
+    EXPECT_TRUE(isGreen(fillOf(view, "obstacles", placed[i].ellipse)));
+
+  // Down to 7 (fewer than a quarter of 32 per bucket even at B = 2): one bucket; the other 511
+  // markers are deleted, the rest drawn again.
+  placed.resize(7);
+  view.apply(markers.update(placed, {}, {}, "m", kStamp));
+  ASSERT_EQ(view.shown().size(), 1u);
+  EXPECT_EQ(view.shown().begin()->second.id, CollisionMarkers::fillId(MarkerState::Free, 0));
+  EXPECT_EQ(view.shown().begin()->second.points.size(),
+            7u * 3 * (core::drawSegments(placed[0].ellipse) - 2));
+  EXPECT_TRUE(isGreen(fillOf(view, "obstacles", placed[6].ellipse)));
+}
+
+TEST(CollisionMarkers, ChangesAppliedInOrderShowWhatTheFullArrayShows) {
+  // A random scene evolves; after every update the view built from the changes alone must equal
+  // the view a new subscriber builds from fullArray() (which starts with DELETEALL).
+  std::mt19937 random(16);
+  std::uniform_int_distribution<int> pick(0, 599);
+  std::uniform_real_distribution<double> shift(-0.5, 0.5);
+  CollisionMarkers markers;
+  std::map<std::string, core::NamedEllipse> scene;
+  for (int i = 0; i < 600; ++i) {
+    const std::string name = (i < 10 ? "l" : "o") + std::to_string(i);
+    scene[name] = named(name, i < 10 ? kLink : kObstacle, i % 30, i / 30);
+  }
+  MarkerView changes;
+  changes.apply(MarkerArray());  // nothing yet
+  for (int cycle = 0; cycle < 40; ++cycle) {
+    std::vector<core::NamedEllipse> placed;
+    for (int k = 0; k < 20; ++k) {  // moves, removals and returns
+      const int i = pick(random);
+      const std::string name = (i < 10 ? "l" : "o") + std::to_string(i);
+      if (scene.count(name) && k % 4 == 0) {
+        scene.erase(name);
+      } else {
+        core::NamedEllipse e =
+            named(name, i < 10 ? kLink : kObstacle, i % 30 + shift(random), i / 30);
+        scene[name] = e;
+      }
+    }
+    if (cycle == 20) {  // a crowd arrives: the obstacles are regrouped into more buckets
+      for (int i = 0; i < 3000; ++i)
+        scene["c" + std::to_string(i)] = named("c" + std::to_string(i), kObstacle, i, 50);
+    }
+    for (const auto& [name, e] : scene) placed.push_back(e);
+    std::vector<core::CollidingPair> collisions;
+    std::vector<core::NearPair> warnings;
+    for (int k = 0; k < 5; ++k) {
+      const int i = pick(random);
+      const std::string other = "o" + std::to_string(10 + i % 590);
+      if (!scene.count(other)) continue;
+      if (k % 2) {
+        collisions.push_back({"l" + std::to_string(i % 10), other, 0.5});
+      } else {
+        warnings.push_back(
+            nearPair("l" + std::to_string(i % 10), other, {0, 0}, {shift(random), 1}));
+      }
+    }
+    changes.apply(markers.update(placed, collisions, warnings, "m", kStamp));
+    MarkerView full;
+    full.apply(markers.fullArray());
+    ASSERT_EQ(changes.shown().size(), full.shown().size()) << "cycle " << cycle;
+    for (const auto& [key, m] : full.shown()) {
+      const Marker* mine = changes.find(key.first, key.second);
+      ASSERT_TRUE(mine) << key.first << "/" << key.second << " cycle " << cycle;
+      EXPECT_EQ(mine->color.r, m.color.r);
+      EXPECT_EQ(mine->color.g, m.color.g);
+    }
+    for (const std::string ns : {"links", "obstacles", "clearance"}) {
+      ASSERT_EQ(drawnTriangles(changes, ns), drawnTriangles(full, ns)) << ns << " cycle " << cycle;
+    }
+    // And every ellipse is drawn once, in the colour of its state.
+    std::set<std::string> colliding;
+    for (const auto& c : collisions) colliding.insert({c.name_a, c.name_b});
+    for (const int i : {0, 5, 100, 333, 599}) {
+      const std::string name = (i < 10 ? "l" : "o") + std::to_string(i);
+      if (!scene.count(name)) continue;
+      const Marker* fill = fillOf(changes, i < 10 ? "links" : "obstacles", scene[name].ellipse);
+      ASSERT_TRUE(fill) << name;
+      if (colliding.count(name)) {
+        EXPECT_TRUE(isRed(*fill)) << name;
+      }
+    }
+  }
+}
+
+TEST(CollisionMarkers, FullArrayStartsWithDeleteAll) {
+  CollisionMarkers markers;
+  markers.update({named("a", kObstacle)}, {}, {}, "m", kStamp);
+  const MarkerArray full = markers.fullArray();
+  ASSERT_EQ(full.markers.size(), 2u);
+  EXPECT_EQ(full.markers[0].action, Marker::DELETEALL);
+  EXPECT_EQ(full.markers[1].action, Marker::ADD);
 }
 
 TEST(CollisionMarkers, PreferredIdIsTheFnv1aHashOfTheNameInThirtyOneBits) {
@@ -135,63 +389,41 @@ TEST(CollisionMarkers, PreferredIdIsTheFnv1aHashOfTheNameInThirtyOneBits) {
   EXPECT_NE(CollisionMarkers::preferredId("a", "b"), CollisionMarkers::preferredId("b", "a"));
 }
 
-TEST(CollisionMarkers, HashClashGivesTheLaterNameTheNextFreeIdForGood) {
-  // "costarring" and "liquid" are a known FNV-1a 32 collision.
-  ASSERT_EQ(CollisionMarkers::preferredId("costarring"), CollisionMarkers::preferredId("liquid"));
+TEST(CollisionMarkers, ClearanceHashClashGivesTheLaterPairTheNextFreeIdForGood) {
+  // ("arm", "o398824") and ("arm", "o768140") clash in 31-bit FNV-1a (found by search).
+  ASSERT_EQ(CollisionMarkers::preferredId("arm", "o398824"),
+            CollisionMarkers::preferredId("arm", "o768140"));
+  const int preferred = CollisionMarkers::preferredId("arm", "o398824");
+  const std::vector<core::NamedEllipse> placed = {
+      named("arm", kLink), named("o398824", kObstacle, 0, 2), named("o768140", kObstacle, 0, 4)};
   CollisionMarkers markers;
-  const auto both = markers.update(
-      {named("costarring", core::EllipseRole::Obstacle), named("liquid", core::EllipseRole::Obstacle)}, {}, {},
-      "m", kStamp);
-  const int preferred = CollisionMarkers::preferredId("liquid");
-  EXPECT_EQ(both.markers[0].id, preferred);
-  EXPECT_EQ(both.markers[1].id, preferred + 1);
-  // liquid keeps its id even once costarring is gone.
-  const auto later = markers.update({named("liquid", core::EllipseRole::Obstacle)}, {}, {}, "m", kStamp);
-  EXPECT_EQ(ellipseMarker(later, "obstacles", "costarring")->action,
-            visualization_msgs::Marker::DELETE);
-  EXPECT_EQ(find(later, "obstacles", preferred + 1)->action, visualization_msgs::Marker::ADD);
-}
-
-TEST(CollisionMarkers, VanishedEllipseIsDeletedOnceAndKeepsItsIdWhenItReturns) {
-  CollisionMarkers markers;
-  markers.update({named("a", core::EllipseRole::Obstacle), named("b", core::EllipseRole::Obstacle)}, {}, {},
-                 "m", kStamp);
-  const auto without_a = markers.update({named("b", core::EllipseRole::Obstacle)}, {}, {}, "m", kStamp);
-  const auto* deletion = ellipseMarker(without_a, "obstacles", "a");
-  ASSERT_TRUE(deletion);
-  EXPECT_EQ(deletion->action, visualization_msgs::Marker::DELETE);
-  EXPECT_EQ(without_a.markers.size(), 2u);
-
-  const auto again = markers.update({named("b", core::EllipseRole::Obstacle)}, {}, {}, "m", kStamp);
-  EXPECT_EQ(again.markers.size(), 1u);  // no second DELETE
-
-  const auto back = markers.update(
-      {named("b", core::EllipseRole::Obstacle), named("a", core::EllipseRole::Obstacle)}, {}, {}, "m", kStamp);
-  const auto* a = ellipseMarker(back, "obstacles", "a");
-  ASSERT_TRUE(a);
-  EXPECT_EQ(a->action, visualization_msgs::Marker::ADD);
-}
-
-TEST(CollisionMarkers, SameNameInBothNamespacesIsNoClash) {
-  CollisionMarkers markers;
-  const auto array = markers.update(
-      {named("x", core::EllipseRole::Obstacle), named("x", core::EllipseRole::Link)}, {}, {}, "m", kStamp);
-  ASSERT_EQ(array.markers.size(), 2u);
-  EXPECT_EQ(array.markers[0].id, CollisionMarkers::preferredId("x"));
-  EXPECT_EQ(array.markers[1].id, CollisionMarkers::preferredId("x"));
+  const MarkerArray both = markers.update(
+      placed, {},
+      {nearPair("arm", "o398824", {0, 0}, {0, 1}), nearPair("arm", "o768140", {0, 0}, {0, 2})}, "m",
+      kStamp);
+  ASSERT_TRUE(find(both, "clearance", preferred));
+  ASSERT_TRUE(find(both, "clearance", preferred + 1));
+  EXPECT_EQ(find(both, "clearance", preferred)->points[1].y, 1.0);
+  EXPECT_EQ(find(both, "clearance", preferred + 1)->points[1].y, 2.0);
+  // The later pair keeps its id once the first is gone.
+  const MarkerArray later =
+      markers.update(placed, {}, {nearPair("arm", "o768140", {0, 0}, {0, 3})}, "m", kStamp);
+  EXPECT_EQ(find(later, "clearance", preferred)->action, Marker::DELETE);
+  EXPECT_EQ(find(later, "clearance", preferred + 1)->action, Marker::ADD);
+  EXPECT_EQ(find(later, "clearance", preferred + 1)->points[1].y, 3.0);
 }
 
 TEST(CollisionMarkers, WarningPairIsALineBetweenItsWitnessPointsAboveTheEllipses) {
   CollisionMarkers markers;
-  const auto array = markers.update(
-      {named("arm", core::EllipseRole::Link), named("cup", core::EllipseRole::Obstacle, 3.0, 0.0)}, {},
-      {nearPair("arm", "cup", {0.5, 0.25}, {2.5, -0.25})}, "odom", kStamp);
-  const auto* line = find(array, CollisionMarkers::kClearanceNamespace,
-                          CollisionMarkers::preferredId("arm", "cup"));
+  const MarkerArray array =
+      markers.update({named("arm", kLink), named("cup", kObstacle, 3.0, 0.0)}, {},
+                     {nearPair("arm", "cup", {0.5, 0.25}, {2.5, -0.25})}, "odom", kStamp);
+  const Marker* line = find(array, CollisionMarkers::kClearanceNamespace,
+                            CollisionMarkers::preferredId("arm", "cup"));
   ASSERT_TRUE(line);
   EXPECT_EQ(std::string(CollisionMarkers::kClearanceNamespace), "clearance");
-  EXPECT_EQ(line->type, visualization_msgs::Marker::LINE_LIST);
-  EXPECT_EQ(line->action, visualization_msgs::Marker::ADD);
+  EXPECT_EQ(line->type, Marker::LINE_LIST);
+  EXPECT_EQ(line->action, Marker::ADD);
   EXPECT_EQ(line->header.frame_id, "odom");
   EXPECT_EQ(line->text, "");
   EXPECT_EQ(line->scale.x, CollisionMarkers::kLineWidth);
@@ -201,37 +433,42 @@ TEST(CollisionMarkers, WarningPairIsALineBetweenItsWitnessPointsAboveTheEllipses
   EXPECT_EQ(line->points[0].y, 0.25);
   EXPECT_EQ(line->points[1].x, 2.5);
   EXPECT_EQ(line->points[1].y, -0.25);
-  // Above the cylinders' top faces (kThickness / 2), so it is not hidden inside them.
-  EXPECT_GT(line->points[0].z, CollisionMarkers::kThickness / 2);
+  // Above the filled ellipses (z = 0), so it is drawn over them.
+  EXPECT_GT(line->points[0].z, 0.0);
   EXPECT_EQ(line->points[1].z, line->points[0].z);
   EXPECT_TRUE(isYellow(*line));
   EXPECT_EQ(line->color.a, 1.0f);
 }
 
-TEST(CollisionMarkers, ClearanceLineKeepsItsIdAndIsDeletedWhenThePairGoesAway) {
+TEST(CollisionMarkers, ClearanceLineIsResentWhenItMovesAndDeletedOnceWhenThePairGoesAway) {
   CollisionMarkers markers;
-  const std::vector<core::NamedEllipse> placed = {named("arm", core::EllipseRole::Link),
-                                            named("cup", core::EllipseRole::Obstacle),
-                                            named("box", core::EllipseRole::Obstacle)};
+  const std::vector<core::NamedEllipse> placed = {
+      named("arm", kLink), named("cup", kObstacle, 0, 2), named("box", kObstacle, 0, 4)};
   const int arm_cup = CollisionMarkers::preferredId("arm", "cup");
   const int arm_box = CollisionMarkers::preferredId("arm", "box");
-  markers.update(placed, {}, {nearPair("arm", "cup", {0, 0}, {1, 0})}, "m", kStamp);
-  const auto moved = markers.update(
+  MarkerView view;
+  view.apply(markers.update(placed, {}, {nearPair("arm", "cup", {0, 0}, {1, 0})}, "m", kStamp));
+  const MarkerArray moved = markers.update(
       placed, {}, {nearPair("arm", "box", {0, 0}, {0, 1}), nearPair("arm", "cup", {0, 0}, {2, 0})},
       "m", kStamp);
   ASSERT_TRUE(find(moved, "clearance", arm_cup));
   EXPECT_EQ(find(moved, "clearance", arm_cup)->points[1].x, 2.0);
   ASSERT_TRUE(find(moved, "clearance", arm_box));
+  view.apply(moved);
 
-  const auto gone =
+  const MarkerArray gone =
       markers.update(placed, {}, {nearPair("arm", "box", {0, 0}, {0, 1})}, "m", kStamp);
   ASSERT_TRUE(find(gone, "clearance", arm_cup));
-  EXPECT_EQ(find(gone, "clearance", arm_cup)->action, visualization_msgs::Marker::DELETE);
-  EXPECT_EQ(find(gone, "clearance", arm_box)->action, visualization_msgs::Marker::ADD);
-  EXPECT_TRUE(isGreen(*ellipseMarker(gone, "obstacles", "cup")));
+  EXPECT_EQ(find(gone, "clearance", arm_cup)->action, Marker::DELETE);
+  EXPECT_FALSE(find(gone, "clearance", arm_box)) << "unchanged: not sent again";
+  view.apply(gone);
+  EXPECT_TRUE(view.find("clearance", arm_box));
+  EXPECT_FALSE(view.find("clearance", arm_cup));
+  EXPECT_TRUE(isGreen(fillOf(view, "obstacles", placed[1].ellipse)));
+  EXPECT_TRUE(isYellow(fillOf(view, "obstacles", placed[2].ellipse)));
 
-  const auto none = markers.update(placed, {}, {}, "m", kStamp);
-  EXPECT_EQ(find(none, "clearance", arm_box)->action, visualization_msgs::Marker::DELETE);
+  const MarkerArray none = markers.update(placed, {}, {}, "m", kStamp);
+  EXPECT_EQ(find(none, "clearance", arm_box)->action, Marker::DELETE);
   EXPECT_FALSE(find(none, "clearance", arm_cup));  // deleted once only
 }
 

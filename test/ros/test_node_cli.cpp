@@ -11,7 +11,7 @@
 #include <map>
 #include <sstream>
 
-#include "ellipse_collision/ros/collision_markers.h"
+#include "marker_view.h"
 #include "node_test_utils.h"
 
 namespace ellipse_collision {
@@ -295,16 +295,12 @@ TEST_F(NodeCli, WithRateZeroTheTopicsChangeOnlyOnAFullCheck) {
     Recorder<CollisionState> collisions(nh_, nodeTopic("collisions"));
     EXPECT_TRUE(collisions.waitForLatest(
         [](const CollisionState& s) { return findPair(s.collisions, "body", "cli_rock"); }, 10.0));
+    // And the markers: red triangles where cli_rock is, from what a late subscriber is sent.
     Recorder<visualization_msgs::MarkerArray> markers(nh_, nodeTopic("markers"));
-    EXPECT_TRUE(markers.waitForLatest(
-        [](const visualization_msgs::MarkerArray& a) {
-          for (const auto& m : a.markers) {
-            if (m.ns == "obstacles" && m.id == CollisionMarkers::preferredId("cli_rock") &&
-                m.action == visualization_msgs::Marker::ADD && m.color.r > 0.5f) {
-              return true;
-            }
-          }
-          return false;
+    EXPECT_TRUE(waitUntil(
+        [&] {
+          return test::isRed(test::fillOf(MarkerView(markers.all()), "obstacles",
+                                          test::makeEllipse(0.0, 0.0, 0.1, 0.1)));
         },
         10.0));
   }

@@ -3,10 +3,12 @@
 #include <ros/time.h>
 #include <visualization_msgs/MarkerArray.h>
 
+#include <array>
 #include <cstdint>
 #include <map>
 #include <set>
 #include <string>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -14,46 +16,114 @@
 
 namespace ellipse_collision {
 
-/// Builds the rviz view of a check: one flat CYLINDER per ellipse in the fixed frame (scale.x =
-/// 2 radius_x, scale.y = 2 radius_y), namespace `links` or `obstacles`, red when in collision,
-/// yellow when only in a warning pair, green otherwise; and in namespace `clearance` one LINE_LIST
-/// segment per warning pair, between its witness points. No marker carries text (rviz warns about
-/// text on other types). Ids are chosen by preferredId(), so an ellipse's marker can be found from
-/// its name; an id is never reused for another name, and what the previous array showed but this
-/// one does not gets a DELETE.
+/// The states an ellipse's marker shows, in rank order: an ellipse that qualifies for several
+/// shows the highest. Index into kMarkerStates.
+enum class MarkerState : std::uint8_t { Free, Warning, Collision };
+
+/// How one state is drawn. To add a state (say orange "predicted contact" between Warning and
+/// Collision): add it to MarkerState at its rank, add its row here at the same position with a
+/// new `code`, and give update() the input that puts ellipses in it.
+struct MarkerStateStyle {
+  MarkerState state;
+  const char* name;  ///< for logs and the README legend
+  /// Fixed part of the state's marker ids (id = code * kIdsPerState + bucket); never reused, so
+  /// a state's markers keep their ids when states are added or re-ranked.
+  std::int32_t code;
+  float r, g, b;  ///< colour in [0, 1]
+};
+inline constexpr std::array<MarkerStateStyle, 3> kMarkerStates{{
+    {MarkerState::Free, "free", 0, 0.1f, 0.8f, 0.1f},            // green
+    {MarkerState::Warning, "warning", 1, 0.9f, 0.85f, 0.1f},     // yellow
+    {MarkerState::Collision, "collision", 2, 0.9f, 0.1f, 0.1f},  // red
+}};
+
+/// Builds the rviz view of a check, sending only what changed since the last array.
+///
+/// Ellipses: namespaces `links` and `obstacles`; in each, the ellipses of one state are drawn as
+/// filled polygons (core::appendEllipseTriangles: inscribed, within 2 mm of the rim, 16 to 64
+/// segments) in TRIANGLE_LIST markers of that state's colour (kMarkerStates, alpha
+/// kEllipseAlpha), flat at z = 0. So that a change does not re-send a namespace's every ellipse,
+/// a namespace's ellipses are split by a hash of their name into B buckets (B a power of two,
+/// about kEllipsesPerMarker ellipses per bucket; it changes only when the count leaves
+/// [kEllipsesPerMarker / 4 B, kEllipsesPerMarker B]); one marker per (state, bucket) with id
+/// code * kIdsPerState + bucket. A marker is sent when an ellipse in it appeared, moved, changed
+/// state or went away, and DELETEd when its bucket holds no ellipse of its state any more.
+///
+/// Clearance: namespace `clearance`, one LINE_LIST segment per warning pair between its witness
+/// points, id from preferredId(name_a, name_b), re-sent when the points move, DELETEd when the
+/// pair goes away.
+///
+/// No labels: a text marker per ellipse would be 100,000 markers at scale, and rviz warns about
+/// text on other marker types; names are in ~collisions.
 class CollisionMarkers {
  public:
-  static constexpr double kThickness = 0.02;  ///< cylinder height [m]: flat, yet visible edge-on
-  static constexpr double kLineWidth = 0.02;  ///< clearance lines [m]
+  static constexpr double kLineWidth = 0.02;    ///< clearance lines [m]
+  static constexpr double kLineHeight = 0.01;   ///< z of the clearance lines, above the fill [m]
+  static constexpr float kEllipseAlpha = 0.6f;  ///< translucent: overlaps stay visible
+  static constexpr std::size_t kEllipsesPerMarker = 32;
+  static constexpr std::int32_t kIdsPerState = 1 << 16;  ///< more than B can reach
   static constexpr const char* kClearanceNamespace = "clearance";
 
-  /// The next MarkerArray to publish. `placed` holds links and obstacles (queries are skipped) in
-  /// `fixed_frame`; `collisions` and `warnings` the check's pairs among them. Remembers what it
-  /// returned, so call it only for arrays that are actually published.
+  /// The markers to publish after a check: ADD for every marker whose content changed, DELETE for
+  /// every marker that is no longer shown; empty when nothing changed. `placed` holds links and
+  /// obstacles (queries are skipped) in `fixed_frame`; `collisions` and `warnings` the check's
+  /// pairs among them. Remembers what it returned, so call it only for arrays that are actually
+  /// published.
   visualization_msgs::MarkerArray update(const std::vector<core::NamedEllipse>& placed,
                                          const std::vector<core::CollidingPair>& collisions,
                                          const std::vector<core::NearPair>& warnings,
                                          const std::string& fixed_frame, const ros::Time& stamp);
 
-  static const char* nameSpace(core::EllipseRole role);
+  /// Everything the last update() left shown, after a DELETEALL: for a new subscriber, which may
+  /// hold markers of an earlier run of the node (a respawn) or only the latched last update.
+  visualization_msgs::MarkerArray fullArray() const;
 
-  /// The id of the ellipse named `name` in its namespace: a 31-bit FNV-1a hash of the name, the
-  /// same in every run. Only if another name of the namespace took it first (a hash clash) does
-  /// the ellipse get the next free id instead.
+  static const char* nameSpace(core::EllipseRole role);
+  static const MarkerStateStyle& style(MarkerState state);
+  /// The id of the marker of `state` and `bucket`.
+  static std::int32_t fillId(MarkerState state, std::uint32_t bucket);
+
+  /// A 31-bit FNV-1a hash of the name, the same in every run (the bucket is this modulo B).
   static std::int32_t preferredId(const std::string& name);
-  /// The same for the clearance line of a warning pair (names in the pair's order).
+  /// The id of the clearance line of a warning pair (names in the pair's order). Only if another
+  /// pair took it first (a hash clash) does the pair get the next free id instead.
   static std::int32_t preferredId(const std::string& name_a, const std::string& name_b);
 
  private:
-  using Key = std::pair<std::string, std::int32_t>;  // (ns, id)
-  std::int32_t idFor(const std::string& ns, const std::string& key, std::int32_t preferred);
-
-  struct Ids {
-    std::map<std::string, std::int32_t> by_key;
-    std::set<std::int32_t> taken;
+  /// One drawn ellipse, as last sent.
+  struct Entry {
+    std::string name;
+    core::Ellipse ellipse;
+    MarkerState state{MarkerState::Free};
+    std::uint32_t hash{0};
+    std::uint64_t generation{0};  ///< the update() that last saw it
   };
-  std::map<std::string, Ids> ids_;  // ns -> ids handed out
-  std::set<Key> shown_;
+  /// One namespace's ellipses.
+  struct Layer {
+    std::unordered_map<std::string, Entry> entries;
+    std::vector<Entry*> by_position;  ///< entry at each index of the last `placed` (a fast path)
+    std::uint32_t buckets{1};         ///< B
+    std::set<std::int32_t> shown;     ///< ids of its markers rviz holds
+    /// The entries of each marker, by state index * B + bucket: a changed marker is rebuilt from
+    /// its own ellipses, not by a pass over the whole namespace.
+    std::vector<std::vector<Entry*>> members;
+  };
+  static constexpr std::size_t kLayers = 2;  // links, obstacles
+
+  std::vector<visualization_msgs::Marker> fills(std::size_t layer,
+                                                const std::vector<char>& wanted) const;
+  visualization_msgs::Marker emptyMarker(const std::string& ns, std::int32_t id) const;
+  std::int32_t lineId(const std::string& key, std::int32_t preferred);
+
+  std::array<Layer, kLayers> layers_;
+  std::uint64_t generation_{0};
+  std::string fixed_frame_;
+  ros::Time stamp_;
+
+  // Clearance lines: ids handed out (never reused for another pair) and the lines shown.
+  std::map<std::string, std::int32_t> line_ids_;
+  std::set<std::int32_t> line_ids_taken_;
+  std::map<std::int32_t, visualization_msgs::Marker> lines_shown_;
 };
 
 }  // namespace ellipse_collision

@@ -1,0 +1,36 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "ellipse_collision/core/ellipse.h"
+
+namespace ellipse_collision::core {
+
+/// How a drawn ellipse is approximated: an inscribed polygon whose vertices lie on the rim at
+/// equal steps of the parameter t (point(t) = centre + R(angle) (radius_x cos t, radius_y sin t)).
+/// A chord of the unit circle over a step of 2 pi / n lies at most 1 - cos(pi / n) inside it; the
+/// affine map to the ellipse stretches that gap by at most the larger radius, so the polygon is
+/// within max(radius_x, radius_y) (1 - cos(pi / n)) of the true rim everywhere.
+///
+/// The segment count keeps that gap below kMaxDrawGap (2 mm, below a pixel at any view that shows
+/// a robot whole) with at least kMinDrawSegments (a 0.1 m obstacle is a 16-gon: round to the eye)
+/// and at most kMaxDrawSegments (a 1 m link is a 64-gon, 0.12 % of its radius).
+constexpr double kMaxDrawGap = 0.002;  ///< [m]
+constexpr int kMinDrawSegments = 16;
+constexpr int kMaxDrawSegments = 64;
+
+/// The smallest n in [kMinDrawSegments, kMaxDrawSegments] with
+/// max(radius_x, radius_y) (1 - cos(pi / n)) <= max_gap (kMaxDrawSegments when none is).
+int drawSegments(const Ellipse& ellipse, double max_gap = kMaxDrawGap);
+
+/// The n vertices of the inscribed polygon, counter-clockwise, the first at t = 0 (the end of the
+/// ellipse's own x axis). n >= 3.
+std::vector<Eigen::Vector2d> ellipsePolygon(const Ellipse& ellipse, int segments);
+
+/// Appends the filled polygon of drawSegments(ellipse) vertices to `triangles` as a fan from its
+/// first vertex: n - 2 triangles, three consecutive points each, counter-clockwise (what rviz's
+/// TRIANGLE_LIST marker draws). Returns the number of points appended.
+std::size_t appendEllipseTriangles(const Ellipse& ellipse, std::vector<Eigen::Vector2d>& triangles);
+
+}  // namespace ellipse_collision::core
