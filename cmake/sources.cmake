@@ -14,6 +14,8 @@ set(ELLIPSE_COLLISION_CORE_SOURCES
   src/core/number_format.cpp
   src/core/overlap.cpp
   src/core/pair_line_parser.cpp
+  src/core/path_check.cpp
+  src/core/path_motion.cpp
   src/core/point_clusters.cpp
   src/core/polygonal_test.cpp
   src/core/prepared_ellipse.cpp

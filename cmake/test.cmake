@@ -44,6 +44,11 @@ ellipse_collision_add_gtest(test_first_contact LIBRARIES ellipse_collision_core 
   test/core/test_first_contact.cpp
   test/support/first_contact_oracle.cpp)
 
+# Continuous path checks against the quad oracle and brute force over every pair.
+ellipse_collision_add_gtest(test_path_check LIBRARIES ellipse_collision_core quadmath SOURCES
+  test/core/test_path_check.cpp
+  test/support/first_contact_oracle.cpp)
+
 # Minimum-area enclosing ellipses (link fitting, sensor clusters) against their own oracle.
 ellipse_collision_add_gtest(test_enclosing_ellipse LIBRARIES ellipse_collision_core quadmath SOURCES
   test/core/test_enclosing_ellipse.cpp

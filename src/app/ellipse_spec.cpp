@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "ellipse_collision/core/first_contact.h"
 #include "ellipse_collision/core/number_format.h"
 
 namespace ellipse_collision::app {
@@ -30,6 +31,24 @@ std::optional<FieldError> findInvalidField(const EllipseSpec& spec, const std::s
   if (spec.padding > core::kMaxRadius) {
     return FieldError{"padding", "a number within [0, " + formatNumber(core::kMaxRadius) + "]",
                       formatNumber(spec.padding)};
+  }
+  // The core's motion limits (core/first_contact.h), so that every stored velocity can be given
+  // to firstContact().
+  const struct {
+    const char* key;
+    double value;
+    double max;
+    const char* unit;
+  } velocities[] = {{"vx", spec.vx, core::kMaxSpeed, "m/s"},
+                    {"vy", spec.vy, core::kMaxSpeed, "m/s"},
+                    {"angular_velocity", spec.angular_velocity, core::kMaxAngularVelocity, "rad/s"}};
+  for (const auto& v : velocities) {
+    if (!(std::fabs(v.value) <= v.max)) {
+      return FieldError{v.key,
+                        std::string("a finite number within [") + formatNumber(-v.max) + ", " +
+                            formatNumber(v.max) + "] " + v.unit,
+                        formatNumber(v.value)};
+    }
   }
   return std::nullopt;
 }

@@ -12,6 +12,9 @@ app::EllipseSpec fromMsg(const Ellipse& msg) {
   spec.radius_x = msg.radius_x;
   spec.radius_y = msg.radius_y;
   spec.padding = msg.padding;
+  spec.vx = msg.vx;
+  spec.vy = msg.vy;
+  spec.angular_velocity = msg.angular_velocity;
   return spec;
 }
 
@@ -25,6 +28,9 @@ Ellipse toMsg(const app::EllipseSpec& spec) {
   msg.radius_x = spec.radius_x;
   msg.radius_y = spec.radius_y;
   msg.padding = spec.padding;
+  msg.vx = spec.vx;
+  msg.vy = spec.vy;
+  msg.angular_velocity = spec.angular_velocity;
   return msg;
 }
 
