@@ -87,4 +87,9 @@ core::Ellipse paddedEllipse(const EllipseSpec& spec, double global_padding) {
   return e;
 }
 
+core::Motion ownMotion(const EllipseSpec& spec, const Eigen::Isometry3d& target_from_frame) {
+  const Eigen::Vector3d v = target_from_frame.linear() * Eigen::Vector3d(spec.vx, spec.vy, 0.0);
+  return core::Motion{v.head<2>(), spec.angular_velocity * target_from_frame.linear()(2, 2)};
+}
+
 }  // namespace ellipse_collision::app

@@ -28,6 +28,7 @@ struct Colour {
 };
 constexpr Colour kRed{0.9f, 0.1f, 0.1f};
 constexpr Colour kYellow{0.9f, 0.85f, 0.1f};
+constexpr Colour kOrange{1.0f, 0.5f, 0.0f};
 constexpr Colour kGreen{0.1f, 0.8f, 0.1f};
 constexpr float kEllipseAlpha = 0.6f;
 
@@ -88,7 +89,8 @@ std::int32_t CollisionMarkers::idFor(const std::string& ns, const std::string& k
 
 visualization_msgs::MarkerArray CollisionMarkers::update(
     const std::vector<core::NamedEllipse>& placed, const std::vector<core::CollidingPair>& collisions,
-    const std::vector<core::NearPair>& warnings, const std::string& fixed_frame, const ros::Time& stamp) {
+    const std::vector<core::NearPair>& warnings, const std::string& fixed_frame, const ros::Time& stamp,
+    const std::set<std::string>& predicted) {
   std::set<std::string> colliding;
   for (const core::CollidingPair& pair : collisions) colliding.insert({pair.name_a, pair.name_b});
   std::set<std::string> warned;
@@ -112,9 +114,10 @@ visualization_msgs::MarkerArray CollisionMarkers::update(
     marker.scale.y = 2 * named.ellipse.radius_y;
     marker.scale.z = kThickness;
     // A collision outranks a warning: an ellipse in both kinds of pair is red.
-    const Colour& colour = colliding.count(named.name) ? kRed
-                           : warned.count(named.name)  ? kYellow
-                                                       : kGreen;
+    const Colour& colour = colliding.count(named.name)   ? kRed
+                           : predicted.count(named.name) ? kOrange
+                           : warned.count(named.name)    ? kYellow
+                                                         : kGreen;
     setColour(marker, colour, kEllipseAlpha);
     shown_now.insert({marker.ns, marker.id});
     array.markers.push_back(marker);

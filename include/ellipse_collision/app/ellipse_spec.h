@@ -4,7 +4,10 @@
 #include <string>
 
 #include "ellipse_collision/app/field_error.h"
+#include <Eigen/Geometry>
+
 #include "ellipse_collision/core/ellipse.h"
+#include "ellipse_collision/core/first_contact.h"
 
 namespace ellipse_collision::app {
 
@@ -44,5 +47,10 @@ std::optional<FieldError> findInvalidPaddedField(const EllipseSpec& spec, double
 
 /// The ellipse in its own frame with both radii grown by spec.padding + global_padding [m].
 core::Ellipse paddedEllipse(const EllipseSpec& spec, double global_padding);
+
+/// The spec's own velocity in a target frame's plane: (vx, vy, 0) turned by the frame's
+/// orientation and projected; the angular velocity about the frame's z axis counts by the z
+/// component of that axis in the target frame (exact for frames parallel to the plane).
+core::Motion ownMotion(const EllipseSpec& spec, const Eigen::Isometry3d& target_from_frame);
 
 }  // namespace ellipse_collision::app

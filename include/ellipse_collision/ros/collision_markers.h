@@ -16,6 +16,7 @@ namespace ellipse_collision {
 
 /// Builds the rviz view of a check: one flat CYLINDER per ellipse in the fixed frame (scale.x =
 /// 2 radius_x, scale.y = 2 radius_y), namespace `links` or `obstacles`, red when in collision,
+/// orange when apart but predicted to touch within ~prediction_horizon (names in `predicted`),
 /// yellow when only in a warning pair, green otherwise; and in namespace `clearance` one LINE_LIST
 /// segment per warning pair, between its witness points. No marker carries text (rviz warns about
 /// text on other types). Ids are chosen by preferredId(), so an ellipse's marker can be found from
@@ -33,7 +34,8 @@ class CollisionMarkers {
   visualization_msgs::MarkerArray update(const std::vector<core::NamedEllipse>& placed,
                                          const std::vector<core::CollidingPair>& collisions,
                                          const std::vector<core::NearPair>& warnings,
-                                         const std::string& fixed_frame, const ros::Time& stamp);
+                                         const std::string& fixed_frame, const ros::Time& stamp,
+                                         const std::set<std::string>& predicted = {});
 
   static const char* nameSpace(core::EllipseRole role);
 

@@ -60,6 +60,10 @@ class CollisionNode {
   bool onCheckCollisions(CheckCollisions::Request& request, CheckCollisions::Response& response);
   bool onAddObstacles(AddObstacles::Request& request, AddObstacles::Response& response);
   bool onRemoveObstacles(RemoveObstacles::Request& request, RemoveObstacles::Response& response);
+  bool onCheckPath(CheckPath::Request& request, CheckPath::Response& response);
+  /// The time-to-contact step (app::predictContacts()) of a successful check; nothing when
+  /// ~prediction_horizon is 0.
+  void predict(app::CheckOutcome& outcome, const app::CheckRequest& request);
 
   ros::NodeHandle nh_;
   ros::NodeHandle private_nh_;
@@ -77,6 +81,7 @@ class CollisionNode {
   ros::ServiceServer check_service_;
   ros::ServiceServer add_service_;
   ros::ServiceServer remove_service_;
+  ros::ServiceServer path_service_;
   ros::Timer check_timer_;
   ros::Timer diagnostics_timer_;
 
