@@ -126,6 +126,12 @@ ellipse_collision_add_rostest(test_scan_obstacles test/ros/scan_obstacles.test
   test/ros/test_scan_obstacles.cpp)
 add_dependencies(test_scan_obstacles scan_obstacles)
 
+# Issue 14: ~check_path and time to contact through the real node, against the quad oracle.
+ellipse_collision_add_rostest(test_motion test/ros/motion.test
+  test/ros/test_motion.cpp test/support/first_contact_oracle.cpp)
+target_include_directories(test_motion PRIVATE ${_support})
+target_link_libraries(test_motion quadmath)
+
 # The rospy example client against the example configuration (a Python rostest).
 add_rostest(test/ros/python_client.test
   DEPENDENCIES ellipse_collision_node ${PROJECT_NAME}_generate_messages)

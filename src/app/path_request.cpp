@@ -86,9 +86,10 @@ PathCheckOutcome runPathCheck(const PathCheckRequest& request, const EllipseRegi
   PathCheckOutcome outcome;
   const FrameTransform moving = to_path(request.moving_frame);
   if (!moving.ok) {
-    outcome.error = "moving_frame = '" + request.moving_frame +
-                    "': expected a frame with a transform to the path's frame '" +
-                    request.path_frame + "', got none (" + moving.error + ")";
+    outcome.error = "moving_frame = '" + request.moving_frame + "', path.header.frame_id = '" +
+                    request.path_frame +
+                    "': expected two frames with a transform between them, got none (" +
+                    moving.error + ")";
     return outcome;
   }
   bool timed = false;
