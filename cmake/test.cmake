@@ -47,6 +47,7 @@ ellipse_collision_add_gtest(test_first_contact LIBRARIES ellipse_collision_core 
 # Continuous path checks against the quad oracle and brute force over every pair.
 ellipse_collision_add_gtest(test_path_check LIBRARIES ellipse_collision_core quadmath SOURCES
   test/core/test_path_check.cpp
+  test/core/test_contact_prediction.cpp
   test/support/first_contact_oracle.cpp)
 
 # Minimum-area enclosing ellipses (link fitting, sensor clusters) against their own oracle.
@@ -68,7 +69,8 @@ ellipse_collision_add_gtest(test_app LIBRARIES ellipse_collision_app SOURCES
   test/app/test_field_validation.cpp
   test/app/test_collision_check.cpp
   test/app/test_obstacle_store.cpp
-  test/app/test_link_fitting.cpp)
+  test/app/test_link_fitting.cpp
+  test/app/test_path_request.cpp)
 
 # ---- ROS layer units (test/ros): conversions, parameters, markers; no master -------------------
 ellipse_collision_add_gtest(test_ros_units LIBRARIES ellipse_collision_ros SOURCES
