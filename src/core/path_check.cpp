@@ -36,6 +36,11 @@ class PairFilter {
   std::vector<char> allowed_;
 };
 
+BoundingBox unite(const BoundingBox& a, const BoundingBox& b) {
+  return {std::min(a.min_x, b.min_x), std::min(a.min_y, b.min_y), std::max(a.max_x, b.max_x),
+          std::max(a.max_y, b.max_y)};
+}
+
 struct Candidate {
   double time{std::numeric_limits<double>::infinity()};
   std::size_t link{0};
@@ -75,6 +80,8 @@ PathCheckResult checkPath(const PathScene& scene, const std::vector<PathPose>& p
 
   // ---- first contact, segment by segment ------------------------------------------------------
   std::vector<std::size_t> hits;
+  std::vector<BoundingBox> link_boxes(n_links);
+  std::vector<std::pair<std::size_t, BoundingBox>> near_moving;
   std::size_t last_pose = poses.size() - 1;  // clearance is measured up to here
   for (std::size_t s = 0; s + 1 < poses.size() && result.collision_free; ++s) {
     const PathPose& from = poses[s];
@@ -104,12 +111,22 @@ PathCheckResult checkPath(const PathScene& scene, const std::vector<PathPose>& p
                std::make_pair(scene.links[best.link].name, scene.obstacles[best.obstacle].name));
       if (earlier) best = {contact.time, l, o, true};
     };
+    // Swept boxes of the links, and of the moving obstacles that come near the robot's.
+    BoundingBox robot{1.0, 1.0, 0.0, 0.0};
     for (std::size_t l = 0; l < n_links; ++l) {
-      const BoundingBox swept = sweptLinkBox(scene.links[l].ellipse, motion);
-      grid.overlapping(swept, &hits);
+      link_boxes[l] = sweptLinkBox(scene.links[l].ellipse, motion);
+      robot = l == 0 ? link_boxes[l] : unite(robot, link_boxes[l]);
+    }
+    near_moving.clear();
+    for (std::size_t o : moving) {
+      const BoundingBox box = sweptBox(obstacleAt(o, from.time), motionOf(o), duration);
+      if (boxesOverlap(robot, box)) near_moving.push_back({o, box});
+    }
+    for (std::size_t l = 0; l < n_links; ++l) {
+      grid.overlapping(link_boxes[l], &hits);
       for (std::size_t h : hits) test(l, standing[h]);
-      for (std::size_t o : moving) {
-        if (boxesOverlap(swept, sweptBox(obstacleAt(o, from.time), motionOf(o), duration))) test(l, o);
+      for (const auto& [o, box] : near_moving) {
+        if (boxesOverlap(link_boxes[l], box)) test(l, o);
       }
       if (!result.ok()) return result;
     }
@@ -139,9 +156,9 @@ PathCheckResult checkPath(const PathScene& scene, const std::vector<PathPose>& p
       bound = std::min(bound, std::max(0.0, gap) * (1.0 + 1e-9) + 1e-12);
     }
   }
-  const auto measure = [&](std::size_t pose, std::size_t l, const Ellipse& link, std::size_t o) {
+  const auto measure = [&](std::size_t pose, std::size_t l, const Ellipse& link, std::size_t o,
+                           const Ellipse& obstacle) {
     if (!filter.wanted(l, o)) return;
-    const Ellipse obstacle = obstacleAt(o, poses[pose].time);
     const double lower = (link.center - obstacle.center).norm() - boundingRadius(link) -
                          boundingRadius(obstacle);
     if (lower > bound || (result.has_clearance && lower >= result.min_clearance)) return;
@@ -157,16 +174,30 @@ PathCheckResult checkPath(const PathScene& scene, const std::vector<PathPose>& p
       bound = std::min(bound, d);
     }
   };
+  const auto grown = [&bound](BoundingBox box) {
+    if (std::isfinite(bound)) box.min_x -= bound, box.min_y -= bound, box.max_x += bound, box.max_y += bound;
+    return box;
+  };
+  std::vector<Ellipse> links_at(n_links);
+  std::vector<std::pair<std::size_t, Ellipse>> moving_near;
   for (std::size_t p = 0; p <= last_pose; ++p) {
+    BoundingBox robot{1.0, 1.0, 0.0, 0.0};
     for (std::size_t l = 0; l < n_links; ++l) {
-      const Ellipse link = placeAt(scene.links[l].ellipse, {poses[p].x, poses[p].y}, poses[p].yaw);
-      BoundingBox box = boundingCircleBox(link);
-      if (std::isfinite(bound)) {
-        box.min_x -= bound, box.min_y -= bound, box.max_x += bound, box.max_y += bound;
-      }
-      grid.overlapping(box, &hits);
-      for (std::size_t h : hits) measure(p, l, link, standing[h]);
-      for (std::size_t o : moving) measure(p, l, link, o);
+      links_at[l] = placeAt(scene.links[l].ellipse, {poses[p].x, poses[p].y}, poses[p].yaw);
+      const BoundingBox box = boundingCircleBox(links_at[l]);
+      robot = l == 0 ? box : unite(robot, box);
+    }
+    // The moving obstacles at this pose's time that can be nearer than the bound to the robot.
+    moving_near.clear();
+    const BoundingBox reach = grown(robot);
+    for (std::size_t o : moving) {
+      const Ellipse obstacle = obstacleAt(o, poses[p].time);
+      if (boxesOverlap(reach, boundingCircleBox(obstacle))) moving_near.push_back({o, obstacle});
+    }
+    for (std::size_t l = 0; l < n_links; ++l) {
+      grid.overlapping(grown(boundingCircleBox(links_at[l])), &hits);
+      for (std::size_t h : hits) measure(p, l, links_at[l], standing[h], scene.obstacles[standing[h]].ellipse);
+      for (const auto& [o, obstacle] : moving_near) measure(p, l, links_at[l], o, obstacle);
     }
   }
   return result;
