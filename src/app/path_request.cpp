@@ -107,10 +107,13 @@ PathCheckOutcome runPathCheck(const PathCheckRequest& request, const EllipseRegi
     ScenePlacement& placement = is_link ? links : obstacles;
     const ScenePlacement::Placement placed = placement.place(stored.spec, stored.role());
     if (placed.status != ScenePlacement::Status::Placed) {
+      // As runCheck() words it: the frame, not tf's message about the target frame.
       if (placed.status == ScenePlacement::Status::FrameUnavailable) {
         unavailable.insert(stored.spec.frame_id);
+        outcome.skipped.push_back(name + ": frame '" + stored.spec.frame_id + "' unavailable");
+      } else {
+        outcome.skipped.push_back(name + ": " + placed.error);
       }
-      outcome.skipped.push_back(name + ": " + placed.error);
       continue;
     }
     if (is_link) {
