@@ -53,6 +53,9 @@ class Motion : public ::testing::Test, public test::NodeServiceClient {
     ASSERT_TRUE(ros::service::waitForService(nodeTopic("check_path"), ros::Duration(30)));
     connectServices(nh_);
     path_ = nh_.serviceClient<CheckPath>(nodeTopic("check_path"));
+    // The node does not wait for transforms (tf_timeout 0): first let tf_test_broadcaster's
+    // static map -> base_link reach it.
+    ASSERT_TRUE(test::waitUntil([this] { return checkPath({pose(0, 0, 0)}).success; }, 30.0));
   }
 
   CheckPath::Response checkPath(const std::vector<geometry_msgs::PoseStamped>& poses,
