@@ -1,5 +1,8 @@
+#include <algorithm>
 #include <cmath>
 #include <map>
+
+#include "ellipse_collision/core/path_motion.h"
 
 #include "ellipse_collision/app/collision_check.h"
 #include "ellipse_collision/core/frame_projection.h"
@@ -38,11 +41,13 @@ core::Motion frameMotion(const EllipseSpec& spec, double global_padding,
 
 void predictContacts(CheckOutcome& outcome, const CheckRequest& request,
                      const EllipseRegistry& registry, const CheckSettings& settings,
-                     const TransformLookup& latest, const TransformAtLookup& at, double horizon_s) {
+                     const TransformLookup& latest, const TransformAtLookup& at, double horizon_s,
+                     double reference_s) {
   if (!(horizon_s > 0.0)) return;
   std::map<std::string, FrameTransform> frames;
   std::vector<core::Motion> motions;
   motions.reserve(outcome.placed.size());
+  std::vector<core::NamedEllipse> now = outcome.placed;  // moved on to reference_s below
   for (const core::NamedEllipse& placed : outcome.placed) {
     const EllipseSpec& spec = registry.entries().at(placed.name).spec;
     auto found = frames.find(spec.frame_id);
@@ -55,10 +60,24 @@ void predictContacts(CheckOutcome& outcome, const CheckRequest& request,
     motion.velocity += own.velocity;
     motion.angular_velocity += own.angular_velocity;
     motions.push_back(motion);
+    if (frame.ok && frame.stamp_s > 0.0) {
+      // From the pose of this very transform (tf may have received a newer one since the check
+      // placed the ellipse), on to reference_s.
+      core::NamedEllipse& moved = now[motions.size() - 1];
+      const core::ProjectionResult at_stamp = core::projectToPlane(
+          paddedEllipse(spec, settings.global_padding_m), frame.fixed_from_frame, spec.name);
+      const double lag = std::clamp(reference_s - frame.stamp_s, 0.0, kMaxPredictionLagS);
+      if (at_stamp.ok()) {
+        const core::Ellipse on = core::movedBy(at_stamp.ellipse, motion, lag);
+        if (core::invalidReason(on).empty()) moved.ellipse = on;
+      }
+    }
   }
+  std::set<std::pair<std::string, std::string>> colliding;
+  for (const core::CollidingPair& pair : outcome.collisions) colliding.insert({pair.name_a, pair.name_b});
   const std::set<std::string> only_names(request.names.begin(), request.names.end());
   core::PredictionResult result =
-      core::predictContacts(outcome.placed, motions, settings.rules, only_names, horizon_s);
+      core::predictContacts(now, motions, settings.rules, only_names, horizon_s, &colliding);
   outcome.predicted = std::move(result.predicted);
   for (std::string& refused : result.refused) {
     outcome.prediction_notes.push_back("not predicted: " + refused);

@@ -11,7 +11,8 @@ namespace ellipse_collision::core {
 
 PredictionResult predictContacts(const std::vector<NamedEllipse>& ellipses,
                                  const std::vector<Motion>& motions, const SceneRules& rules,
-                                 const std::set<std::string>& only_names, double horizon) {
+                                 const std::set<std::string>& only_names, double horizon,
+                                 const std::set<std::pair<std::string, std::string>>* colliding) {
   PredictionResult result;
   if (!(horizon > 0.0)) return result;
   const auto moves = [](const Motion& m) {
@@ -30,7 +31,10 @@ PredictionResult predictContacts(const std::vector<NamedEllipse>& ellipses,
     if (!moves(*ma) && !moves(*mb)) continue;
     if (!pairWanted(*a, *b, rules, only_names)) continue;
     if (std::tie(b->role, b->name) < std::tie(a->role, a->name)) std::swap(a, b), std::swap(ma, mb);
-    if (overlap(a->ellipse, b->ellipse)) continue;  // in collision now: reported as such
+    // In collision now: reported as such, not here.
+    if (colliding ? colliding->count({a->name, b->name}) != 0 : overlap(a->ellipse, b->ellipse)) {
+      continue;
+    }
     const std::string invalid = invalidMotionReason(a->ellipse, *ma, b->ellipse, *mb, horizon);
     if (!invalid.empty()) {
       result.refused.push_back(a->name + " / " + b->name + ": " + invalid);

@@ -174,7 +174,7 @@ app::CheckOutcome CollisionNode::runFullCheck(const ros::Duration& timeout,
     state_.failure = outcome.error;
     return outcome;
   }
-  predict(outcome, request);
+  predict(outcome, request, ros::Time(0), now);  // times from the state's stamp
   state_.failure.clear();
   state_.duration_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -267,7 +267,7 @@ bool CollisionNode::onCheckCollisions(CheckCollisions::Request& request,
                  : app::runCheck(check, registry_, settings_,
                                  tfLookup(tf_buffer_, config_.fixed_frame, request.stamp, timeout),
                                  reference_s);
-  if (!full_check && outcome.error.empty()) predict(outcome, check);
+  if (!full_check && outcome.error.empty()) predict(outcome, check, request.stamp);
   if (!outcome.error.empty()) {
     ROS_ERROR_STREAM_COND(outcome.error.rfind("internal error", 0) == 0,
                           "ellipse_collision: " << outcome.error);
@@ -310,17 +310,20 @@ bool CollisionNode::onRemoveObstacles(RemoveObstacles::Request& request,
   return true;
 }
 
-void CollisionNode::predict(app::CheckOutcome& outcome, const app::CheckRequest& request) {
+void CollisionNode::predict(app::CheckOutcome& outcome, const app::CheckRequest& request,
+                            const ros::Time& stamp, const ros::Time& reference) {
   if (!(config_.prediction_horizon_s > 0.0)) return;
   const tf2_ros::Buffer& buffer = tf_buffer_;
   const std::string fixed_frame = config_.fixed_frame;
+  const double reference_s =
+      (!reference.isZero() ? reference : stamp.isZero() ? ros::Time::now() : stamp).toSec();
   app::predictContacts(
       outcome, request, registry_, settings_,
-      tfLookup(tf_buffer_, config_.fixed_frame, ros::Time(0), ros::Duration(0)),
+      tfLookup(tf_buffer_, config_.fixed_frame, stamp, ros::Duration(0)),
       [&buffer, fixed_frame](const std::string& frame, double time_s) {
         return tfLookup(buffer, fixed_frame, ros::Time(time_s), ros::Duration(0))(frame);
       },
-      config_.prediction_horizon_s);
+      config_.prediction_horizon_s, reference_s);
   if (!outcome.prediction_notes.empty()) {
     ROS_WARN_STREAM_THROTTLE(5.0, "ellipse_collision: prediction: "
                                       << app::joinText(outcome.prediction_notes, "; "));

@@ -168,7 +168,7 @@ TEST(PredictContacts, ALinkOnAMovingFrameIsPredictedToMeetAStandingObstacle) {
   };
   CheckOutcome outcome = runCheck({}, registry, settings, latest, 10.0);
   ASSERT_EQ(outcome.error, "");
-  predictContacts(outcome, {}, registry, settings, latest, at, 2.0);
+  predictContacts(outcome, {}, registry, settings, latest, at, 2.0, 10.0);
   ASSERT_EQ(outcome.predicted.size(), 1u);
   EXPECT_EQ(outcome.predicted[0].name_a, "hand");
   EXPECT_EQ(outcome.predicted[0].name_b, "post");
@@ -176,8 +176,19 @@ TEST(PredictContacts, ALinkOnAMovingFrameIsPredictedToMeetAStandingObstacle) {
   EXPECT_TRUE(outcome.prediction_notes.empty());
   // Beyond the horizon: nothing. Off: nothing.
   CheckOutcome short_horizon = runCheck({}, registry, settings, latest, 10.0);
-  predictContacts(short_horizon, {}, registry, settings, latest, at, 0.4);
+  predictContacts(short_horizon, {}, registry, settings, latest, at, 0.4, 10.0);
   EXPECT_TRUE(short_horizon.predicted.empty());
+  // Checked 0.1 s after the arm's latest transform: the hand has moved on 0.2 m since, so the
+  // contact is 0.1 s sooner from the check's stamp.
+  CheckOutcome later = runCheck({}, registry, settings, latest, 10.1);
+  predictContacts(later, {}, registry, settings, latest, at, 2.0, 10.1);
+  ASSERT_EQ(later.predicted.size(), 1u);
+  EXPECT_NEAR(later.predicted[0].time, 0.4, 1e-9);
+  // 0.6 s after it: the hand has reached the post since (apart at the check's poses): time 0.
+  CheckOutcome touched = runCheck({}, registry, settings, latest, 10.6);
+  predictContacts(touched, {}, registry, settings, latest, at, 2.0, 10.6);
+  ASSERT_EQ(touched.predicted.size(), 1u);
+  EXPECT_EQ(touched.predicted[0].time, 0.0);
 }
 
 TEST(PredictContacts, AnObstacleOwnVelocityIsTurnedIntoTheFixedFrame) {
@@ -195,7 +206,7 @@ TEST(PredictContacts, AnObstacleOwnVelocityIsTurnedIntoTheFixedFrame) {
   };
   const TransformAtLookup at = [&](const std::string& f, double) { return latest(f); };
   CheckOutcome outcome = runCheck({}, registry, settings, latest, 0.0);
-  predictContacts(outcome, {}, registry, settings, latest, at, 5.0);
+  predictContacts(outcome, {}, registry, settings, latest, at, 5.0, 0.0);
   ASSERT_EQ(outcome.predicted.size(), 1u);
   EXPECT_NEAR(outcome.predicted[0].time, 0.8, 1e-9);
 }

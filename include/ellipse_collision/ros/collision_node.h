@@ -63,7 +63,10 @@ class CollisionNode {
   bool onCheckPath(CheckPath::Request& request, CheckPath::Response& response);
   /// The time-to-contact step (app::predictContacts()) of a successful check; nothing when
   /// ~prediction_horizon is 0.
-  void predict(app::CheckOutcome& outcome, const app::CheckRequest& request);
+  /// `stamp`: the check's transform time (zero = latest); predicted times count from `reference`
+  /// (the check's stamp; zero = `stamp`, or now for latest transforms).
+  void predict(app::CheckOutcome& outcome, const app::CheckRequest& request, const ros::Time& stamp,
+               const ros::Time& reference = ros::Time(0));
 
   ros::NodeHandle nh_;
   ros::NodeHandle private_nh_;
