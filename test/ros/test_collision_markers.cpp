@@ -94,6 +94,30 @@ TEST(CollisionMarkers, RedInCollisionYellowInAWarningPairGreenOtherwise) {
   EXPECT_GT(box->color.a, 0.0f);
 }
 
+bool isOrange(const visualization_msgs::Marker& m) {
+  return m.color.r > 0.9f && m.color.g > 0.3f && m.color.g < 0.7f && m.color.b < 0.2f;
+}
+
+TEST(CollisionMarkers, OrangeForAPredictedContactBelowRedAboveYellow) {
+  CollisionMarkers markers;
+  const auto array = markers.update(
+      {named("arm", core::EllipseRole::Link), named("hand", core::EllipseRole::Link),
+       named("box", core::EllipseRole::Obstacle), named("cup", core::EllipseRole::Obstacle),
+       named("far", core::EllipseRole::Obstacle)},
+      {{"arm", "box", 0.5}}, {nearPair("hand", "cup", {0, 0}, {0, 1})}, "m", kStamp,
+      {"arm", "hand", "far"});
+  const auto* arm = ellipseMarker(array, "links", "arm");
+  const auto* hand = ellipseMarker(array, "links", "hand");
+  const auto* cup = ellipseMarker(array, "obstacles", "cup");
+  const auto* far = ellipseMarker(array, "obstacles", "far");
+  ASSERT_TRUE(arm && hand && cup && far);
+  EXPECT_TRUE(isRed(*arm)) << "a collision outranks a predicted contact";
+  EXPECT_TRUE(isOrange(*hand)) << "a predicted contact outranks a warning";
+  EXPECT_TRUE(isOrange(*far));
+  EXPECT_TRUE(isYellow(*cup));
+  EXPECT_FALSE(isRed(*hand) || isYellow(*hand) || isGreen(*hand));
+}
+
 TEST(CollisionMarkers, LinksAndObstaclesHaveTheirOwnNamespacesAndQueriesAreNotDrawn) {
   CollisionMarkers markers;
   const auto array =
