@@ -212,6 +212,15 @@ TEST_F(Motion, TimeToContactOfALinkMovedByTfMatchesTheAnalyticTime) {
     worst = std::max(worst, std::fabs(p.time - analytic));
     ++compared;
   }
+  // ~check_collisions answers the same, for the pairs it is asked about, soonest first.
+  const CheckCollisions::Response asked = check({"probe"});
+  ASSERT_TRUE(asked.success) << asked.message;
+  ASSERT_FALSE(asked.predicted.empty());
+  EXPECT_EQ(asked.predicted.front().name_a, "probe");
+  EXPECT_EQ(asked.predicted.front().name_b, "block");
+  EXPECT_GT(asked.predicted.front().time, 0.0);
+  EXPECT_LT(asked.predicted.front().time, 4.4);
+  EXPECT_TRUE(check({"wall"}).predicted.empty()) << "a filter on a pair that will not touch";
   stop = true;
   mover.join();
   std::printf("time to contact: %d checks compared, largest |predicted - analytic| = %.4g s\n",
