@@ -89,9 +89,15 @@ void run(benchmark::State& state, bool blocked, bool moving) {
   state.counters["min_clearance_m"] = result.min_clearance;
 }
 
-void BM_CheckPath_10kPoses_1kObstacles_20Links_Clear(benchmark::State& state) { run(state, false, false); }
-void BM_CheckPath_10kPoses_1kObstacles_20Links_ContactAt90pc(benchmark::State& state) { run(state, true, false); }
-void BM_CheckPath_10kPoses_1kObstacles_20Links_Timed10pcMoving(benchmark::State& state) { run(state, false, true); }
+void BM_CheckPath_10kPoses_1kObstacles_20Links_Clear(benchmark::State& state) {
+  run(state, false, false);
+}
+void BM_CheckPath_10kPoses_1kObstacles_20Links_ContactAt90pc(benchmark::State& state) {
+  run(state, true, false);
+}
+void BM_CheckPath_10kPoses_1kObstacles_20Links_Timed10pcMoving(benchmark::State& state) {
+  run(state, false, true);
+}
 
 BENCHMARK(BM_CheckPath_10kPoses_1kObstacles_20Links_Clear)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_CheckPath_10kPoses_1kObstacles_20Links_ContactAt90pc)->Unit(benchmark::kMillisecond);

@@ -2,11 +2,10 @@
 #include <cmath>
 #include <map>
 
-#include "ellipse_collision/core/path_motion.h"
-
 #include "ellipse_collision/app/collision_check.h"
 #include "ellipse_collision/core/frame_projection.h"
 #include "ellipse_collision/core/number_format.h"
+#include "ellipse_collision/core/path_motion.h"
 
 namespace ellipse_collision::app {
 namespace {
@@ -26,8 +25,10 @@ core::Motion frameMotion(const EllipseSpec& spec, double global_padding,
     return {};
   }
   const core::Ellipse padded = paddedEllipse(spec, global_padding);
-  const core::ProjectionResult now = core::projectToPlane(padded, latest.fixed_from_frame, spec.name);
-  const core::ProjectionResult then = core::projectToPlane(padded, earlier.fixed_from_frame, spec.name);
+  const core::ProjectionResult now =
+      core::projectToPlane(padded, latest.fixed_from_frame, spec.name);
+  const core::ProjectionResult then =
+      core::projectToPlane(padded, earlier.fixed_from_frame, spec.name);
   if (!now.ok() || !then.ok()) return {};
   core::Motion motion;
   motion.velocity = (now.ellipse.center - then.ellipse.center) / kVelocityWindowS;
@@ -74,7 +75,8 @@ void predictContacts(CheckOutcome& outcome, const CheckRequest& request,
     }
   }
   std::set<std::pair<std::string, std::string>> colliding;
-  for (const core::CollidingPair& pair : outcome.collisions) colliding.insert({pair.name_a, pair.name_b});
+  for (const core::CollidingPair& pair : outcome.collisions)
+    colliding.insert({pair.name_a, pair.name_b});
   const std::set<std::string> only_names(request.names.begin(), request.names.end());
   core::PredictionResult result =
       core::predictContacts(now, motions, settings.rules, only_names, horizon_s, &colliding);

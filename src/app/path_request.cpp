@@ -33,20 +33,23 @@ std::string validatePathRequest(const PathCheckRequest& request) {
                formatNumber(core::kMaxCoordinate) + "]";
       }
     }
-    if (!std::isfinite(p.z)) return at + ".pose.position.z = " + formatNumber(p.z) + ": expected a finite number";
+    if (!std::isfinite(p.z))
+      return at + ".pose.position.z = " + formatNumber(p.z) + ": expected a finite number";
     const std::pair<const char*, double> quaternion[] = {
         {"x", p.qx}, {"y", p.qy}, {"z", p.qz}, {"w", p.qw}};
     for (const auto& [key, value] : quaternion) {
       if (!std::isfinite(value)) {
-        return at + ".pose.orientation." + key + " = " + formatNumber(value) + ": expected a finite number";
+        return at + ".pose.orientation." + key + " = " + formatNumber(value) +
+               ": expected a finite number";
       }
     }
     const double norm = std::sqrt(p.qx * p.qx + p.qy * p.qy + p.qz * p.qz + p.qw * p.qw);
     const std::string q = "(" + formatNumber(p.qx) + ", " + formatNumber(p.qy) + ", " +
                           formatNumber(p.qz) + ", " + formatNumber(p.qw) + ")";
     if (!(std::fabs(norm - 1.0) <= kQuaternionTolerance)) {
-      return at + ".pose.orientation = " + q + ": expected a unit quaternion (| |q| - 1 | <= " +
-             formatNumber(kQuaternionTolerance) + "), got |q| = " + formatNumber(norm);
+      return at + ".pose.orientation = " + q +
+             ": expected a unit quaternion (| |q| - 1 | <= " + formatNumber(kQuaternionTolerance) +
+             "), got |q| = " + formatNumber(norm);
     }
     const double tilt = std::hypot(p.qx, p.qy) / norm;
     if (!(tilt <= kQuaternionTolerance)) {
@@ -78,7 +81,6 @@ std::vector<core::PathPose> toPathPoses(const PathCheckRequest& request, bool* t
   }
   return poses;
 }
-
 
 PathCheckOutcome runPathCheck(const PathCheckRequest& request, const EllipseRegistry& registry,
                               const CheckSettings& settings, const TransformLookup& to_moving,
@@ -124,7 +126,8 @@ PathCheckOutcome runPathCheck(const PathCheckRequest& request, const EllipseRegi
         ownMotion(stored.spec, placement.lookup(stored.spec.frame_id).fixed_from_frame);
     core::NamedEllipse obstacle = placed.ellipse;
     if (timed) {
-      const std::string invalid = core::invalidSegmentReason(obstacle.ellipse, motion, std::fabs(lead_s));
+      const std::string invalid =
+          core::invalidSegmentReason(obstacle.ellipse, motion, std::fabs(lead_s));
       if (!invalid.empty()) {
         outcome.error = "obstacle '" + name + "' moved to the first pose's time: " + invalid;
         return outcome;

@@ -67,7 +67,8 @@ PathCheckResult checkPath(const PathScene& scene, const std::vector<PathPose>& p
   }
   std::vector<BoundingBox> standing_boxes;
   standing_boxes.reserve(standing.size());
-  for (std::size_t o : standing) standing_boxes.push_back(boundingCircleBox(scene.obstacles[o].ellipse));
+  for (std::size_t o : standing)
+    standing_boxes.push_back(boundingCircleBox(scene.obstacles[o].ellipse));
   const BoxGrid grid(standing_boxes);
   const Motion no_motion;
   const auto obstacleAt = [&](std::size_t o, double time) {
@@ -159,8 +160,8 @@ PathCheckResult checkPath(const PathScene& scene, const std::vector<PathPose>& p
   const auto measure = [&](std::size_t pose, std::size_t l, const Ellipse& link, std::size_t o,
                            const Ellipse& obstacle) {
     if (!filter.wanted(l, o)) return;
-    const double lower = (link.center - obstacle.center).norm() - boundingRadius(link) -
-                         boundingRadius(obstacle);
+    const double lower =
+        (link.center - obstacle.center).norm() - boundingRadius(link) - boundingRadius(obstacle);
     if (lower > bound || (result.has_clearance && lower >= result.min_clearance)) return;
     ++result.pair_tests;
     const Clearance c = distance(link, obstacle);
@@ -175,7 +176,8 @@ PathCheckResult checkPath(const PathScene& scene, const std::vector<PathPose>& p
     }
   };
   const auto grown = [&bound](BoundingBox box) {
-    if (std::isfinite(bound)) box.min_x -= bound, box.min_y -= bound, box.max_x += bound, box.max_y += bound;
+    if (std::isfinite(bound))
+      box.min_x -= bound, box.min_y -= bound, box.max_x += bound, box.max_y += bound;
     return box;
   };
   std::vector<Ellipse> links_at(n_links);
@@ -196,7 +198,8 @@ PathCheckResult checkPath(const PathScene& scene, const std::vector<PathPose>& p
     }
     for (std::size_t l = 0; l < n_links; ++l) {
       grid.overlapping(grown(boundingCircleBox(links_at[l])), &hits);
-      for (std::size_t h : hits) measure(p, l, links_at[l], standing[h], scene.obstacles[standing[h]].ellipse);
+      for (std::size_t h : hits)
+        measure(p, l, links_at[l], standing[h], scene.obstacles[standing[h]].ellipse);
       for (const auto& [o, obstacle] : moving_near) measure(p, l, links_at[l], o, obstacle);
     }
   }

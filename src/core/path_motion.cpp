@@ -110,8 +110,8 @@ FirstContact segmentContact(const Ellipse& link_in_moving, const SegmentMotion& 
   const double horizon = motion.duration;
   double t = 0.0;
   for (int i = 0; i < kMaxAdvancements; ++i) {
-    const Ellipse link = placeAt(link_in_moving, motion.start + motion.velocity * t,
-                                 motion.start_yaw + w * t);
+    const Ellipse link =
+        placeAt(link_in_moving, motion.start + motion.velocity * t, motion.start_yaw + w * t);
     const Clearance c = distance(link, movedBy(obstacle, obstacle_motion, t));
     if (!c.separated) return contactAt(t);
     if (c.distance <= graze) return contactAt(t);

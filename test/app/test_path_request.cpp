@@ -74,12 +74,14 @@ TEST(PathRequest, EachBadFieldIsNamedWithItsValue) {
   };
   for (const auto& [bad, expected] : cases) {
     const std::string message = validatePathRequest(bad);
-    EXPECT_NE(message.find(expected), std::string::npos) << "expected '" << expected << "' in '" << message << "'";
+    EXPECT_NE(message.find(expected), std::string::npos)
+        << "expected '" << expected << "' in '" << message << "'";
   }
 }
 
 TEST(PathRequest, PoseCountIsLimitedAtTheDocumentedLimit) {
-  EXPECT_EQ(validatePathRequest(request(std::vector<PathPoseInput>(kMaxPathPoses, pose(0, 0)))), "");
+  EXPECT_EQ(validatePathRequest(request(std::vector<PathPoseInput>(kMaxPathPoses, pose(0, 0)))),
+            "");
   EXPECT_EQ(validatePathRequest(request(std::vector<PathPoseInput>(kMaxPathPoses + 1, pose(0, 0)))),
             "path.poses: expected at most 100000 poses, got 100001");
 }
@@ -95,7 +97,8 @@ TEST(PathRequest, QuaternionToleranceIsTheDocumentedOne) {
 
 TEST(PathRequest, PosesBecomeHeadingsAndTimesFromTheFirstStamp) {
   bool timed = false;
-  const auto poses = toPathPoses(request({pose(1, 2, 0.5, 100.0), pose(3, 4, -3.0, 101.5)}), &timed);
+  const auto poses =
+      toPathPoses(request({pose(1, 2, 0.5, 100.0), pose(3, 4, -3.0, 101.5)}), &timed);
   EXPECT_TRUE(timed);
   ASSERT_EQ(poses.size(), 2u);
   EXPECT_NEAR(poses[0].yaw, 0.5, 1e-15);
@@ -107,7 +110,8 @@ TEST(PathRequest, PosesBecomeHeadingsAndTimesFromTheFirstStamp) {
 }
 
 /// Frames translated in the plane; unknown frames are unavailable.
-FrameTransform translated(const std::map<std::string, Eigen::Vector2d>& table, const std::string& frame) {
+FrameTransform translated(const std::map<std::string, Eigen::Vector2d>& table,
+                          const std::string& frame) {
   FrameTransform t;
   const auto found = table.find(frame);
   if (found == table.end()) {
@@ -123,8 +127,9 @@ TEST(RunPathCheck, LinksMoveWithTheMovingFrameAndUnavailableFramesAreListed) {
   // The robot's frame is at (1, 0) in map now; its link 0.5 m ahead of it. Going 4 m along x
   // from map's origin, the link (0.2 m) meets the post (0.1 m) at x = 3: link centre at 2.7,
   // i.e. the frame at 2.2 of 4 m: fraction 0.55.
-  const EllipseRegistry registry({circle("nose", "base_link", 0.5, 0.0, 0.2), circle("lost", "camera", 0, 0, 0.1)},
-                                 {circle("post", "map", 3.0, 0.0, 0.1)});
+  const EllipseRegistry registry(
+      {circle("nose", "base_link", 0.5, 0.0, 0.2), circle("lost", "camera", 0, 0, 0.1)},
+      {circle("post", "map", 3.0, 0.0, 0.1)});
   CheckSettings settings;
   settings.fixed_frame = "map";
   const TransformLookup to_moving = [](const std::string& f) {
@@ -145,15 +150,17 @@ TEST(RunPathCheck, LinksMoveWithTheMovingFrameAndUnavailableFramesAreListed) {
 
   PathCheckRequest unknown = request({pose(0, 0)});
   unknown.moving_frame = "nowhere";
-  EXPECT_NE(runPathCheck(unknown, registry, settings, to_moving, to_map, 0.0).error.find("moving_frame = 'nowhere'"),
+  EXPECT_NE(runPathCheck(unknown, registry, settings, to_moving, to_map, 0.0)
+                .error.find("moving_frame = 'nowhere'"),
             std::string::npos);
 }
 
 TEST(PredictContacts, ALinkOnAMovingFrameIsPredictedToMeetAStandingObstacle) {
   // The arm frame moves at 2 m/s along x (its pose 0.1 s ago was 0.2 m behind); its hand
   // (0.1 m) and the post (0.1 m) are 1.2 m apart: 1.0 m of gap at 2 m/s, contact after 0.5 s.
-  const EllipseRegistry registry({circle("hand", "arm", 0.0, 0.0, 0.1)},
-                                 {circle("post", "map", 1.2, 0.0, 0.1), circle("far", "map", 0.0, 5.0, 0.1)});
+  const EllipseRegistry registry(
+      {circle("hand", "arm", 0.0, 0.0, 0.1)},
+      {circle("post", "map", 1.2, 0.0, 0.1), circle("far", "map", 0.0, 5.0, 0.1)});
   CheckSettings settings;
   settings.fixed_frame = "map";
   const auto latest = [](const std::string& f) {
@@ -201,7 +208,9 @@ TEST(PredictContacts, AnObstacleOwnVelocityIsTurnedIntoTheFixedFrame) {
   settings.fixed_frame = "map";
   const auto latest = [](const std::string& f) {
     FrameTransform t = translated({{"map", {0, 0}}, {"turned", {0, 0}}}, f);
-    if (f == "turned") t.fixed_from_frame.linear() = Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+    if (f == "turned")
+      t.fixed_from_frame.linear() =
+          Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitZ()).toRotationMatrix();
     return t;
   };
   const TransformAtLookup at = [&](const std::string& f, double) { return latest(f); };

@@ -34,8 +34,10 @@ TEST(PredictContacts, SweptBroadphaseFindsExactlyTheBruteForcePairsAtTheOracleTi
   std::size_t expected = 0;
   for (std::size_t i = 0; i < scene.size(); ++i) {
     for (std::size_t j = i + 1; j < scene.size(); ++j) {
-      if (!pairWanted(scene[i], scene[j], rules, {}) || overlap(scene[i].ellipse, scene[j].ellipse)) continue;
-      const FirstContact c = firstContact(scene[i].ellipse, motions[i], scene[j].ellipse, motions[j], horizon);
+      if (!pairWanted(scene[i], scene[j], rules, {}) || overlap(scene[i].ellipse, scene[j].ellipse))
+        continue;
+      const FirstContact c =
+          firstContact(scene[i].ellipse, motions[i], scene[j].ellipse, motions[j], horizon);
       if (!c.contact) continue;
       ++expected;
       bool found = false;
@@ -44,9 +46,11 @@ TEST(PredictContacts, SweptBroadphaseFindsExactlyTheBruteForcePairsAtTheOracleTi
             (p.name_a == scene[j].name && p.name_b == scene[i].name)) {
           found = true;
           EXPECT_EQ(p.time, c.time);
-          const bool translating = motions[i].angular_velocity == 0.0 && motions[j].angular_velocity == 0.0;
+          const bool translating =
+              motions[i].angular_velocity == 0.0 && motions[j].angular_velocity == 0.0;
           if (translating) {
-            const auto oracle = test::oracleFirstContact(scene[i].ellipse, motions[i], scene[j].ellipse, motions[j], horizon);
+            const auto oracle = test::oracleFirstContact(scene[i].ellipse, motions[i],
+                                                         scene[j].ellipse, motions[j], horizon);
             EXPECT_NEAR(p.time, static_cast<double>(oracle.time), 1e-9);
           }
         }
@@ -69,8 +73,10 @@ TEST(PredictContacts, PairsInCollisionNowAreNotRepeated) {
   a.radius_x = a.radius_y = 1.0;
   Ellipse b = a;
   b.center = {1.5, 0.0};
-  const std::vector<NamedEllipse> scene = {{"link", EllipseRole::Link, a}, {"wall", EllipseRole::Obstacle, b}};
-  const PredictionResult r = predictContacts(scene, {Motion{{1.0, 0.0}, 0.0}, Motion{}}, SceneRules{}, {}, 2.0);
+  const std::vector<NamedEllipse> scene = {{"link", EllipseRole::Link, a},
+                                           {"wall", EllipseRole::Obstacle, b}};
+  const PredictionResult r =
+      predictContacts(scene, {Motion{{1.0, 0.0}, 0.0}, Motion{}}, SceneRules{}, {}, 2.0);
   EXPECT_TRUE(r.predicted.empty());
 }
 

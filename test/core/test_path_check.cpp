@@ -41,7 +41,8 @@ PathScene oneLinkOneObstacle(const Ellipse& link, const Ellipse& obstacle, Motio
 double oracleRigidContact(const Ellipse& link_in_moving, const SegmentMotion& m,
                           const Ellipse& obstacle, int samples = 300) {
   const auto scale = [&](double tau) {
-    const Ellipse link = placeAt(link_in_moving, m.start + m.velocity * tau, m.start_yaw + m.yaw_rate * tau);
+    const Ellipse link =
+        placeAt(link_in_moving, m.start + m.velocity * tau, m.start_yaw + m.yaw_rate * tau);
     return static_cast<double>(test::oracleScaleAt(link, Motion{}, obstacle, Motion{}, 0));
   };
   double prev = 0.0;
@@ -129,7 +130,8 @@ TEST(PathCheck, TurningOffsetLinkMatchesTheRigidMotionOracleAndIsNeverLate) {
     if (oracle < 0.0) {
       // No crossing on the oracle's grid: a contact may only be a graze the grid missed.
       if (got.contact) {
-        const Ellipse at = placeAt(link, m.start + m.velocity * got.time, m.start_yaw + m.yaw_rate * got.time);
+        const Ellipse at =
+            placeAt(link, m.start + m.velocity * got.time, m.start_yaw + m.yaw_rate * got.time);
         EXPECT_LT(distance(at, obstacle).distance, 1e-8) << trial;
       }
       continue;
@@ -140,7 +142,8 @@ TEST(PathCheck, TurningOffsetLinkMatchesTheRigidMotionOracleAndIsNeverLate) {
     EXPECT_NEAR(got.time, oracle, 1e-6) << trial;
     worst = std::max(worst, std::fabs(got.time - oracle));
   }
-  std::printf("turning offset links: %d contacts, largest |time - oracle| = %.3g\n", contacts, worst);
+  std::printf("turning offset links: %d contacts, largest |time - oracle| = %.3g\n", contacts,
+              worst);
   EXPECT_GT(contacts, 8);
 }
 
@@ -150,7 +153,8 @@ TEST(PathCheck, TimedPathMeetsAMovingObstacleAtTheOracleTime) {
   const Ellipse obstacle = ellipse(2.5, -3.0, 0.2, 0.2);
   const Motion motion{{0.0, 1.0}, 0.0};
   const PathScene scene = oneLinkOneObstacle(link, obstacle, motion);
-  const std::vector<PathPose> poses = {{0, 0, 0, 0}, {1, 0, 0, 1}, {2, 0, 0, 2}, {3, 0, 0, 3}, {4, 0, 0, 4}};
+  const std::vector<PathPose> poses = {
+      {0, 0, 0, 0}, {1, 0, 0, 1}, {2, 0, 0, 2}, {3, 0, 0, 3}, {4, 0, 0, 4}};
   const PathCheckResult timed = checkPath(scene, poses, true);
   ASSERT_TRUE(timed.ok()) << timed.error;
   ASSERT_FALSE(timed.collision_free);
@@ -181,9 +185,13 @@ PathCheckResult bruteForce(const PathScene& scene, const std::vector<PathPose>& 
       for (std::size_t o = 0; o < scene.obstacles.size(); ++o) {
         if (scene.allowed.contains(scene.links[l].name, scene.obstacles[o].name)) continue;
         const Motion motion = timed ? scene.obstacle_motions[o] : Motion{};
-        const FirstContact c = segmentContact(
-            scene.links[l].ellipse, m, movedBy(scene.obstacles[o].ellipse, motion, poses[s].time), motion);
-        if (c.contact && (c.time < best || (c.time == best && std::make_pair(scene.links[l].name, scene.obstacles[o].name) < std::make_pair(r.link, r.obstacle)))) {
+        const FirstContact c =
+            segmentContact(scene.links[l].ellipse, m,
+                           movedBy(scene.obstacles[o].ellipse, motion, poses[s].time), motion);
+        if (c.contact &&
+            (c.time < best ||
+             (c.time == best && std::make_pair(scene.links[l].name, scene.obstacles[o].name) <
+                                    std::make_pair(r.link, r.obstacle)))) {
           best = c.time;
           r.collision_free = false;
           r.segment = s;
@@ -201,7 +209,8 @@ PathCheckResult bruteForce(const PathScene& scene, const std::vector<PathPose>& 
       for (std::size_t o = 0; o < scene.obstacles.size(); ++o) {
         if (scene.allowed.contains(scene.links[l].name, scene.obstacles[o].name)) continue;
         const Motion motion = timed ? scene.obstacle_motions[o] : Motion{};
-        const Clearance c = distance(link, movedBy(scene.obstacles[o].ellipse, motion, poses[p].time));
+        const Clearance c =
+            distance(link, movedBy(scene.obstacles[o].ellipse, motion, poses[p].time));
         const double d = c.separated ? c.distance : 0.0;
         if (!r.has_clearance || d < r.min_clearance) {
           r.has_clearance = true;
@@ -224,13 +233,16 @@ TEST(PathCheck, BroadphaseAnswersExactlyAsBruteForce) {
     const bool timed = trial % 2 == 1;
     PathScene scene;
     for (int l = 0; l < 4; ++l) {
-      scene.links.push_back(named("l" + std::to_string(l), EllipseRole::Link,
-                                  ellipse(0.4 * u(rng), 0.3 * u(rng), 0.15 + 0.1 * u(rng), 0.08 + 0.03 * u(rng), u(rng))));
+      scene.links.push_back(named(
+          "l" + std::to_string(l), EllipseRole::Link,
+          ellipse(0.4 * u(rng), 0.3 * u(rng), 0.15 + 0.1 * u(rng), 0.08 + 0.03 * u(rng), u(rng))));
     }
     for (int o = 0; o < 30; ++o) {
       scene.obstacles.push_back(named("o" + std::to_string(o), EllipseRole::Obstacle,
-                                      ellipse(10.0 * u(rng), 10.0 * u(rng), 0.1 + 0.05 * u(rng), 0.05 + 0.02 * u(rng), u(rng))));
-      scene.obstacle_motions.push_back(o % 3 == 0 ? Motion{{0.3 * u(rng), 0.3 * u(rng)}, 0.5 * u(rng)} : Motion{});
+                                      ellipse(10.0 * u(rng), 10.0 * u(rng), 0.1 + 0.05 * u(rng),
+                                              0.05 + 0.02 * u(rng), u(rng))));
+      scene.obstacle_motions.push_back(
+          o % 3 == 0 ? Motion{{0.3 * u(rng), 0.3 * u(rng)}, 0.5 * u(rng)} : Motion{});
     }
     scene.allowed.add("l0", "o7");
     std::vector<PathPose> poses;

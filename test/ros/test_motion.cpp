@@ -23,7 +23,8 @@ using test::nodeTopic;
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-geometry_msgs::PoseStamped pose(double x, double y, double yaw, const ros::Time& stamp = ros::Time(0)) {
+geometry_msgs::PoseStamped pose(double x, double y, double yaw,
+                                const ros::Time& stamp = ros::Time(0)) {
   geometry_msgs::PoseStamped p;
   p.header.stamp = stamp;
   p.pose.position.x = x;
@@ -87,9 +88,9 @@ TEST_F(Motion, ThinWallBetweenTwoPosesIsFoundThoughEachPoseAloneIsClear) {
   EXPECT_EQ(r.name_a, "arm");
   EXPECT_EQ(r.name_b, "wall");
   // The oracle: arm (0.2 x 0.05 at x = 0.5) moving 10 m along x against the standing wall.
-  const core::test::OracleFirstContact oracle = core::test::oracleFirstContact(
-      ellipse(0.5, 0, 0.2, 0.05), core::Motion{{10.0, 0.0}, 0.0}, ellipse(5, 0, 0.01, 1.0),
-      core::Motion{}, 1.0);
+  const core::test::OracleFirstContact oracle =
+      core::test::oracleFirstContact(ellipse(0.5, 0, 0.2, 0.05), core::Motion{{10.0, 0.0}, 0.0},
+                                     ellipse(5, 0, 0.01, 1.0), core::Motion{}, 1.0);
   ASSERT_TRUE(oracle.contact);
   std::printf("thin wall: fraction %.15g, oracle %.15g, error %.3g\n", r.fraction,
               static_cast<double>(oracle.time), r.fraction - static_cast<double>(oracle.time));
@@ -257,14 +258,31 @@ TEST_F(Motion, EachBadPathIsAnsweredWithFieldAndValueAndTheNodeKeepsServing) {
   const ros::Time t = ros::Time::now();
   const std::vector<Bad> cases = {
       {"empty path", {}, "map", "", {"path.poses", "empty"}},
-      {"non-finite pose", {pose(0, 0, 0), nan_pose}, "map", "", {"path.poses[1].pose.position.x = nan"}},
-      {"quaternion far from unit", {long_q}, "map", "", {"path.poses[0].pose.orientation", "|q| = 2"}},
-      {"rotation out of the plane", {pose(0, 0, 0), tilted}, "map", "",
+      {"non-finite pose",
+       {pose(0, 0, 0), nan_pose},
+       "map",
+       "",
+       {"path.poses[1].pose.position.x = nan"}},
+      {"quaternion far from unit",
+       {long_q},
+       "map",
+       "",
+       {"path.poses[0].pose.orientation", "|q| = 2"}},
+      {"rotation out of the plane",
+       {pose(0, 0, 0), tilted},
+       "map",
+       "",
        {"path.poses[1].pose.orientation", "rotation about z only"}},
-      {"unknown moving frame", {pose(0, 0, 0)}, "map", "no_such_frame", {"moving_frame = 'no_such_frame'"}},
+      {"unknown moving frame",
+       {pose(0, 0, 0)},
+       "map",
+       "no_such_frame",
+       {"moving_frame = 'no_such_frame'"}},
       {"unknown path frame", {pose(0, 0, 0)}, "nowhere", "", {"path.header.frame_id = 'nowhere'"}},
       {"decreasing stamps",
-       {pose(0, 0, 0, t + ros::Duration(2)), pose(1, 0, 0, t + ros::Duration(1))}, "map", "",
+       {pose(0, 0, 0, t + ros::Duration(2)), pose(1, 0, 0, t + ros::Duration(1))},
+       "map",
+       "",
        {"path.poses[1].header.stamp", "strictly increasing"}},
   };
   for (const Bad& bad : cases) {

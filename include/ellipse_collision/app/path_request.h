@@ -23,8 +23,8 @@ constexpr double kQuaternionTolerance = 1e-3;
 struct PathPoseInput {
   std::string frame_id;  ///< the PoseStamped's own header.frame_id ("" or the path's frame)
   double stamp_s{0.0};   ///< header.stamp [s]; 0 = none
-  double x{0.0}, y{0.0}, z{0.0};                ///< position [m]; z is ignored
-  double qx{0.0}, qy{0.0}, qz{0.0}, qw{1.0};    ///< orientation
+  double x{0.0}, y{0.0}, z{0.0};              ///< position [m]; z is ignored
+  double qx{0.0}, qy{0.0}, qz{0.0}, qw{1.0};  ///< orientation
 };
 
 /// One ~check_path request.

@@ -35,10 +35,9 @@ struct PredictionResult {
 /// both ends of its path; a turn about its own centre stays inside the circle) through the
 /// uniform grid (overlappingBoxPairs()); only pairs whose swept boxes meet reach firstContact().
 /// Preconditions: valid ellipses (checkScene() accepted them), horizon finite and >= 0.
-PredictionResult predictContacts(const std::vector<NamedEllipse>& ellipses,
-                                 const std::vector<Motion>& motions, const SceneRules& rules,
-                                 const std::set<std::string>& only_names, double horizon,
-                                 const std::set<std::pair<std::string, std::string>>* colliding =
-                                     nullptr);
+PredictionResult predictContacts(
+    const std::vector<NamedEllipse>& ellipses, const std::vector<Motion>& motions,
+    const SceneRules& rules, const std::set<std::string>& only_names, double horizon,
+    const std::set<std::pair<std::string, std::string>>* colliding = nullptr);
 
 }  // namespace ellipse_collision::core

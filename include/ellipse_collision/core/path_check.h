@@ -13,10 +13,10 @@ namespace ellipse_collision::core {
 /// What a path check is given: links in the moving frame's plane, obstacles in the path frame's
 /// plane where they are at the first pose, with their motion (used on timed paths only).
 struct PathScene {
-  std::vector<NamedEllipse> links;      ///< in the moving frame
-  std::vector<NamedEllipse> obstacles;  ///< in the path frame, at the first pose's time
-  std::vector<Motion> obstacle_motions; ///< one per obstacle, in the path frame [m/s, rad/s]
-  AllowedPairs allowed;                 ///< link-obstacle pairs never reported
+  std::vector<NamedEllipse> links;       ///< in the moving frame
+  std::vector<NamedEllipse> obstacles;   ///< in the path frame, at the first pose's time
+  std::vector<Motion> obstacle_motions;  ///< one per obstacle, in the path frame [m/s, rad/s]
+  AllowedPairs allowed;                  ///< link-obstacle pairs never reported
 };
 
 /// The answer of checkPath().
