@@ -2,9 +2,9 @@
 
 #include <sensor_msgs/JointState.h>
 #include <sensor_msgs/LaserScan.h>
-#include <visualization_msgs/MarkerArray.h>
 #include <tf2/utils.h>
 #include <tf2_geometry_msgs/tf2_geometry_msgs.h>
+#include <visualization_msgs/MarkerArray.h>
 
 #include <cmath>
 #include <set>
@@ -82,8 +82,9 @@ std::string frameOr(const ros::NodeHandle& nh, const std::string& key,
 DemoDriver::DemoDriver(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
     : nh_(nh), private_nh_(private_nh) {
   const ros::NodeHandle& p = private_nh_;
-  dictKeys(p, "", {"rate", "odom_frame", "base_frame", "base_path", "joints", "moving_obstacle",
-                   "scanner", "planned_path"});
+  dictKeys(p, "",
+           {"rate", "odom_frame", "base_frame", "base_path", "joints", "moving_obstacle", "scanner",
+            "planned_path"});
   const double rate_hz = p.hasParam("rate") ? positive(p, "rate") : 30.0;
   odom_frame_ = frameOr(p, "odom_frame", "odom");
   base_frame_ = frameOr(p, "base_frame", "base_link");
@@ -146,9 +147,11 @@ DemoDriver::DemoDriver(const ros::NodeHandle& nh, const ros::NodeHandle& private
   double check_rate_hz = 5.0;
   if (p.hasParam("planned_path")) {
     dictKeys(p, "planned_path", {"horizon", "step", "check_rate"});
-    if (p.hasParam("planned_path/horizon")) planned_horizon_s_ = positive(p, "planned_path/horizon");
+    if (p.hasParam("planned_path/horizon"))
+      planned_horizon_s_ = positive(p, "planned_path/horizon");
     if (p.hasParam("planned_path/step")) planned_step_s_ = positive(p, "planned_path/step");
-    if (p.hasParam("planned_path/check_rate")) check_rate_hz = positive(p, "planned_path/check_rate");
+    if (p.hasParam("planned_path/check_rate"))
+      check_rate_hz = positive(p, "planned_path/check_rate");
     if (planned_horizon_s_ / planned_step_s_ > 10000.0) {
       throw DemoConfigError("parameter " + fullName(p, "planned_path/step") +
                             ": expected at most 10000 poses per plan (horizon / step)");
@@ -158,8 +161,8 @@ DemoDriver::DemoDriver(const ros::NodeHandle& nh, const ros::NodeHandle& private
   path_check_markers_pub_ =
       private_nh_.advertise<visualization_msgs::MarkerArray>("path_check_markers", 1, true);
   check_path_ = nh_.serviceClient<CheckPath>("ellipse_collision/check_path");
-  path_check_timer_ = nh_.createTimer(ros::Duration(1.0 / check_rate_hz),
-                                      &DemoDriver::onPathCheckTimer, this);
+  path_check_timer_ =
+      nh_.createTimer(ros::Duration(1.0 / check_rate_hz), &DemoDriver::onPathCheckTimer, this);
 
   joint_states_pub_ = nh_.advertise<sensor_msgs::JointState>("joint_states", 10);
   scan_pub_ = nh_.advertise<sensor_msgs::LaserScan>("scan", 10);
@@ -269,9 +272,10 @@ void DemoDriver::onPathCheckTimer(const ros::TimerEvent&) {
   } else {
     // The base's pose at the first contact, on the segment's straight line.
     const auto& from = last_plan_.poses[srv.response.segment].pose.position;
-    const auto& to = last_plan_.poses[std::min<std::size_t>(srv.response.segment + 1,
-                                                            last_plan_.poses.size() - 1)]
-                         .pose.position;
+    const auto& to =
+        last_plan_
+            .poses[std::min<std::size_t>(srv.response.segment + 1, last_plan_.poses.size() - 1)]
+            .pose.position;
     const double f = srv.response.fraction;
     // A thin magenta ring: apart from the node's red, orange, yellow and green, and covering
     // few pixels of the ellipses beneath it.
@@ -290,9 +294,9 @@ void DemoDriver::onPathCheckTimer(const ros::TimerEvent&) {
     contact.color.g = 0.0f;
     contact.color.b = 1.0f;
     contact.color.a = 1.0f;
-    ROS_INFO_STREAM_THROTTLE(2.0, "demo_driver: planned path meets " << srv.response.name_b << " with "
-                                      << srv.response.name_a << " in "
-                                      << core::formatNumber(srv.response.time) << " s");
+    ROS_INFO_STREAM_THROTTLE(2.0, "demo_driver: planned path meets "
+                                      << srv.response.name_b << " with " << srv.response.name_a
+                                      << " in " << core::formatNumber(srv.response.time) << " s");
   }
   markers.markers.push_back(contact);
   path_check_markers_pub_.publish(markers);

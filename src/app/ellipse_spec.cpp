@@ -39,9 +39,10 @@ std::optional<FieldError> findInvalidField(const EllipseSpec& spec, const std::s
     double value;
     double max;
     const char* unit;
-  } velocities[] = {{"vx", spec.vx, core::kMaxSpeed, "m/s"},
-                    {"vy", spec.vy, core::kMaxSpeed, "m/s"},
-                    {"angular_velocity", spec.angular_velocity, core::kMaxAngularVelocity, "rad/s"}};
+  } velocities[] = {
+      {"vx", spec.vx, core::kMaxSpeed, "m/s"},
+      {"vy", spec.vy, core::kMaxSpeed, "m/s"},
+      {"angular_velocity", spec.angular_velocity, core::kMaxAngularVelocity, "rad/s"}};
   for (const auto& v : velocities) {
     if (!(std::fabs(v.value) <= v.max)) {
       return FieldError{v.key,

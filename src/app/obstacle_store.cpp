@@ -128,7 +128,7 @@ std::string parseObstacles(const std::string& input, StoredObstacles& out) {
       if (!readText(input, pos, spec.name) || !readText(input, pos, spec.frame_id) ||
           !restOfLine(line) || !readNumbers(line, spec)) {
         return at("expected " + kind +
-                    " <name> <frame> x y angle radius_x radius_y padding [vx vy angular_velocity]");
+                  " <name> <frame> x y angle radius_x radius_y padding [vx vy angular_velocity]");
       }
       (kind == "service" ? parsed.service : parsed.topic).push_back(spec);
     } else {

@@ -88,8 +88,9 @@ std::int32_t CollisionMarkers::idFor(const std::string& ns, const std::string& k
 }
 
 visualization_msgs::MarkerArray CollisionMarkers::update(
-    const std::vector<core::NamedEllipse>& placed, const std::vector<core::CollidingPair>& collisions,
-    const std::vector<core::NearPair>& warnings, const std::string& fixed_frame, const ros::Time& stamp,
+    const std::vector<core::NamedEllipse>& placed,
+    const std::vector<core::CollidingPair>& collisions, const std::vector<core::NearPair>& warnings,
+    const std::string& fixed_frame, const ros::Time& stamp,
     const std::set<std::string>& predicted) {
   std::set<std::string> colliding;
   for (const core::CollidingPair& pair : collisions) colliding.insert({pair.name_a, pair.name_b});

@@ -215,7 +215,8 @@ void CollisionNode::publishMarkers() {
   // Nobody listening: skip the work. onMarkerSubscriber() publishes for the next subscriber.
   if (!state_.valid || markers_pub_.getNumSubscribers() == 0) return;
   std::set<std::string> predicted;
-  for (const core::PredictedContact& p : state_.outcome.predicted) predicted.insert({p.name_a, p.name_b});
+  for (const core::PredictedContact& p : state_.outcome.predicted)
+    predicted.insert({p.name_a, p.name_b});
   markers_pub_.publish(markers_.update(state_.outcome.placed, state_.outcome.collisions,
                                        state_.outcome.warnings, config_.fixed_frame, state_.stamp,
                                        predicted));
@@ -315,8 +316,10 @@ void CollisionNode::predict(app::CheckOutcome& outcome, const app::CheckRequest&
   if (!(config_.prediction_horizon_s > 0.0)) return;
   const tf2_ros::Buffer& buffer = tf_buffer_;
   const std::string fixed_frame = config_.fixed_frame;
-  const double reference_s =
-      (!reference.isZero() ? reference : stamp.isZero() ? ros::Time::now() : stamp).toSec();
+  const double reference_s = (!reference.isZero() ? reference
+                              : stamp.isZero()    ? ros::Time::now()
+                                                  : stamp)
+                                 .toSec();
   app::predictContacts(
       outcome, request, registry_, settings_,
       tfLookup(tf_buffer_, config_.fixed_frame, stamp, ros::Duration(0)),
@@ -325,8 +328,8 @@ void CollisionNode::predict(app::CheckOutcome& outcome, const app::CheckRequest&
       },
       config_.prediction_horizon_s, reference_s);
   if (!outcome.prediction_notes.empty()) {
-    ROS_WARN_STREAM_THROTTLE(5.0, "ellipse_collision: prediction: "
-                                      << app::joinText(outcome.prediction_notes, "; "));
+    ROS_WARN_STREAM_THROTTLE(
+        5.0, "ellipse_collision: prediction: " << app::joinText(outcome.prediction_notes, "; "));
   }
 }
 
@@ -391,11 +394,12 @@ void CollisionNode::onDiagnosticsTimer(const ros::TimerEvent& /*event*/) {
   status.message = !problems.empty()                    ? app::joinText(problems, "; ")
                    : !state_.outcome.collisions.empty() ? "in collision"
                    : !state_.outcome.predicted.empty()
-                       ? "contact predicted in " + core::formatNumber(state_.outcome.predicted.front().time) +
-                             " s (" + state_.outcome.predicted.front().name_a + " / " +
+                       ? "contact predicted in " +
+                             core::formatNumber(state_.outcome.predicted.front().time) + " s (" +
+                             state_.outcome.predicted.front().name_a + " / " +
                              state_.outcome.predicted.front().name_b + ")"
-                   : !state_.outcome.warnings.empty()   ? "closer than the warning distance"
-                                                        : "clear";
+                   : !state_.outcome.warnings.empty() ? "closer than the warning distance"
+                                                      : "clear";
 
   status.values.push_back(
       keyValue("links", std::to_string(registry_.count(app::EllipseSource::ConfiguredLink))));
@@ -419,14 +423,17 @@ void CollisionNode::onDiagnosticsTimer(const ros::TimerEvent& /*event*/) {
   status.values.push_back(
       keyValue("dropped obstacles (obstacle_timeout)", std::to_string(dropped_obstacles_)));
   status.values.push_back(keyValue("time jumps back", std::to_string(time_jumps_)));
-  status.values.push_back(keyValue("prediction horizon [s]", core::formatNumber(config_.prediction_horizon_s)));
-  status.values.push_back(keyValue(
-      "smallest time to contact [s]",
-      state_.outcome.predicted.empty() ? std::string("none")
-                                       : core::formatNumber(state_.outcome.predicted.front().time)));
+  status.values.push_back(
+      keyValue("prediction horizon [s]", core::formatNumber(config_.prediction_horizon_s)));
+  status.values.push_back(
+      keyValue("smallest time to contact [s]",
+               state_.outcome.predicted.empty()
+                   ? std::string("none")
+                   : core::formatNumber(state_.outcome.predicted.front().time)));
   status.values.push_back(
       keyValue("predicted contacts", std::to_string(state_.outcome.predicted.size())));
-  status.values.push_back(keyValue("prediction notes", app::joinText(state_.outcome.prediction_notes, "; ")));
+  status.values.push_back(
+      keyValue("prediction notes", app::joinText(state_.outcome.prediction_notes, "; ")));
 
   diagnostic_msgs::DiagnosticArray array;
   array.header.stamp = ros::Time::now();

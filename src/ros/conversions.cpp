@@ -141,7 +141,8 @@ app::PathCheckRequest fromMsg(const CheckPath::Request& request) {
 void toMsg(const app::PathCheckOutcome& outcome, CheckPath::Response& response) {
   const core::PathCheckResult& r = outcome.result;
   response.success = true;
-  response.message = outcome.skipped.empty() ? "" : "skipped " + app::joinText(outcome.skipped, "; ");
+  response.message =
+      outcome.skipped.empty() ? "" : "skipped " + app::joinText(outcome.skipped, "; ");
   response.collision_free = r.collision_free;
   response.segment = static_cast<std::uint32_t>(r.segment);
   response.fraction = r.fraction;

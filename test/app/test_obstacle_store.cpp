@@ -66,15 +66,18 @@ TEST(ObstacleStore, CorruptTextIsRefusedWithTheLine) {
             "[vx vy angular_velocity]");
   // A store written before the velocities: the obstacle stands still.
   StoredObstacles old_store;
-  ASSERT_EQ(parseObstacles("ellipse_collision obstacle store 1\nservice 1:a 3:map 1 2 0 0.5 0.5 0\nend\n",
-                           old_store),
-            "");
+  ASSERT_EQ(
+      parseObstacles("ellipse_collision obstacle store 1\nservice 1:a 3:map 1 2 0 0.5 0.5 0\nend\n",
+                     old_store),
+      "");
   ASSERT_EQ(old_store.service.size(), 1u);
   EXPECT_EQ(old_store.service[0].vx, 0.0);
   EXPECT_EQ(old_store.service[0].radius_x, 0.5);
-  EXPECT_NE(parseObstacles("ellipse_collision obstacle store 1\nservice 1:a 3:map 1 2 0 0.5 0.5 0 1\nend\n",
-                           old_store),
-            "") << "velocities are all three or none";
+  EXPECT_NE(parseObstacles(
+                "ellipse_collision obstacle store 1\nservice 1:a 3:map 1 2 0 0.5 0.5 0 1\nend\n",
+                old_store),
+            "")
+      << "velocities are all three or none";
   EXPECT_EQ(parseObstacles("ellipse_collision obstacle store 1\nfoo\nend\n", out),
             "record 2: unknown entry 'foo'");
   EXPECT_EQ(parseObstacles(good + "x", out), "record 5: expected nothing after 'end'");

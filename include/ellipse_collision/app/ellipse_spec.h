@@ -1,11 +1,10 @@
 #pragma once
 
+#include <Eigen/Geometry>
 #include <optional>
 #include <string>
 
 #include "ellipse_collision/app/field_error.h"
-#include <Eigen/Geometry>
-
 #include "ellipse_collision/core/ellipse.h"
 #include "ellipse_collision/core/first_contact.h"
 

@@ -7,8 +7,8 @@
 #include "ellipse_collision/app/ellipse_spec.h"
 #include "ellipse_collision/app/path_request.h"
 #include "ellipse_collision/core/contact_prediction.h"
-#include "ellipse_collision/ros/messages.h"
 #include "ellipse_collision/core/scene_check.h"
+#include "ellipse_collision/ros/messages.h"
 
 namespace ellipse_collision {
 
