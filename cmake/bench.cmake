@@ -51,3 +51,6 @@ add_dependencies(bench_service_roundtrip ${PROJECT_NAME}_generate_messages_cpp)
 # scan_obstacles' path for one 720-beam LaserScan: us per scan and % of one core at 40 Hz.
 ellipse_collision_add_benchmark(bench_scan_obstacles bench/bench_scan_obstacles.cpp
   LIBRARIES ellipse_collision_ros)
+
+# Continuous path checks at the size of issue 14: 10,000 poses x 1,000 obstacles x 20 links.
+ellipse_collision_add_benchmark(bench_check_path bench/bench_check_path.cpp)

@@ -3,6 +3,7 @@
 # cmake/fuzz.cmake) both compile exactly these.
 set(ELLIPSE_COLLISION_CORE_SOURCES
   src/core/broadphase.cpp
+  src/core/contact_prediction.cpp
   src/core/distance.cpp
   src/core/ellipse_polygon.cpp
   src/core/eigenvalue_test.cpp
@@ -15,6 +16,8 @@ set(ELLIPSE_COLLISION_CORE_SOURCES
   src/core/number_format.cpp
   src/core/overlap.cpp
   src/core/pair_line_parser.cpp
+  src/core/path_check.cpp
+  src/core/path_motion.cpp
   src/core/point_clusters.cpp
   src/core/polygonal_test.cpp
   src/core/prepared_ellipse.cpp
@@ -25,11 +28,13 @@ set(ELLIPSE_COLLISION_CORE_SOURCES
 
 set(ELLIPSE_COLLISION_APP_SOURCES
   src/app/collision_check.cpp
+  src/app/contact_prediction.cpp
   src/app/ellipse_registry.cpp
   src/app/ellipse_spec.cpp
   src/app/field_error.cpp
   src/app/link_fitting.cpp
   src/app/obstacle_store.cpp
+  src/app/path_request.cpp
   src/app/scan_obstacles.cpp
   src/app/scene_placement.cpp
   src/app/transform_lookup.cpp)

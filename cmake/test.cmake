@@ -48,6 +48,12 @@ ellipse_collision_add_gtest(test_first_contact LIBRARIES ellipse_collision_core 
   test/core/test_first_contact.cpp
   test/support/first_contact_oracle.cpp)
 
+# Continuous path checks against the quad oracle and brute force over every pair.
+ellipse_collision_add_gtest(test_path_check LIBRARIES ellipse_collision_core quadmath SOURCES
+  test/core/test_path_check.cpp
+  test/core/test_contact_prediction.cpp
+  test/support/first_contact_oracle.cpp)
+
 # Minimum-area enclosing ellipses (link fitting, sensor clusters) against their own oracle.
 ellipse_collision_add_gtest(test_enclosing_ellipse LIBRARIES ellipse_collision_core quadmath SOURCES
   test/core/test_enclosing_ellipse.cpp
@@ -67,7 +73,8 @@ ellipse_collision_add_gtest(test_app LIBRARIES ellipse_collision_app SOURCES
   test/app/test_field_validation.cpp
   test/app/test_collision_check.cpp
   test/app/test_obstacle_store.cpp
-  test/app/test_link_fitting.cpp)
+  test/app/test_link_fitting.cpp
+  test/app/test_path_request.cpp)
 
 # ---- ROS layer units (test/ros): conversions, parameters, markers; no master -------------------
 ellipse_collision_add_gtest(test_ros_units LIBRARIES ellipse_collision_ros SOURCES
@@ -124,6 +131,12 @@ ellipse_collision_add_rostest(test_bad_config test/ros/bad_config.test
 ellipse_collision_add_rostest(test_scan_obstacles test/ros/scan_obstacles.test
   test/ros/test_scan_obstacles.cpp)
 add_dependencies(test_scan_obstacles scan_obstacles)
+
+# Issue 14: ~check_path and time to contact through the real node, against the quad oracle.
+ellipse_collision_add_rostest(test_motion test/ros/motion.test
+  test/ros/test_motion.cpp test/support/first_contact_oracle.cpp)
+target_include_directories(test_motion PRIVATE ${_support})
+target_link_libraries(test_motion quadmath)
 
 # The rospy example client against the example configuration (a Python rostest).
 add_rostest(test/ros/python_client.test

@@ -3,7 +3,8 @@
 # prints one table: per pair mix (scene-like, near, near-tangent) each method's ns per pair, its
 # speed relative to FCL 0.7 and its misclassifications against the quad-precision oracle; the
 # polygonal iteration-cap study; then scene checks of 50 links against 100 to 100,000 obstacles
-# (us per cycle, pair tests done, growth with N); scan_obstacles' cost per 720-beam LaserScan. Times are CPU times, medians of repetitions
+# (us per cycle, pair tests done, growth with N); scan_obstacles' cost per 720-beam LaserScan;
+# continuous path checks of 10,000 poses x 1,000 obstacles x 20 links (issue 14, budget 100 ms). Times are CPU times, medians of repetitions
 # interleaved at random, so that the methods share the machine's noise within one run.
 # Last, the service round trip (issue 7): a roscore of its own on a free port, the node with
 # bench/service_roundtrip.yaml, and bench_service_roundtrip calling ~check_collisions 10,000 times
@@ -32,7 +33,7 @@ mkdir -p "${out}"
 echo "Building the benchmarks (log: build/benchmark/build.txt)"
 if ! bash "${repo}/scripts/build.sh" -DELLIPSE_COLLISION_BENCHMARKS=ON bench_pair_tests \
     bench_scene_check bench_distance bench_first_contact bench_scan_obstacles \
-    bench_service_roundtrip ellipse_collision_node > "${out}/build.txt" 2>&1; then
+    bench_service_roundtrip bench_check_path ellipse_collision_node > "${out}/build.txt" 2>&1; then
   cat "${out}/build.txt" >&2
   exit 1
 fi
@@ -43,6 +44,7 @@ if "${smoke}"; then
   distance_args=(--benchmark_min_time=0.01)
   contact_args=(--pairs=64 --benchmark_min_time=0.01)
   scan_args=(--benchmark_min_time=0.01)
+  path_args=(--benchmark_min_time=0.01)
   roundtrip_calls=200
 else
   repeat=(--benchmark_repetitions=5 --benchmark_enable_random_interleaving=true
@@ -52,6 +54,7 @@ else
   distance_args=(--benchmark_min_time=0.3 "${repeat[@]}")
   contact_args=(--pairs=2000 --benchmark_min_time=0.3 "${repeat[@]}")
   scan_args=(--benchmark_min_time=0.5 "${repeat[@]}")
+  path_args=(--benchmark_min_time=0.5 "${repeat[@]}")
   roundtrip_calls=10000
 fi
 
@@ -93,6 +96,12 @@ echo
 echo "Running bench_scan_obstacles (us per 720-beam scan, % of one core at 40 Hz; budget 5 %)"
 run bench_scan_obstacles "${scan_args[@]}"
 grep -E '^(Benchmark|BM_)' "${out}/bench_scan_obstacles.txt" | grep -vE '_(stddev|cv)( |$)' || true
+
+# ---- ~check_path's core: 10,000 poses x 1,000 obstacles x 20 links, budget 100 ms (issue 14) ----
+echo
+echo "Running bench_check_path (ms per path of 10,000 poses, 1,000 obstacles, 20 links; budget 100 ms)"
+run bench_check_path "${path_args[@]}"
+grep -E '^(Benchmark|BM_)' "${out}/bench_check_path.txt" | grep -vE '_(stddev|cv)( |$)' || true
 
 # ---- service round trip (issue 7) ---------------------------------------------------------------
 # Started here, stopped by the EXIT trap whatever ends the script: the node first, then roscore

@@ -34,6 +34,7 @@ DEBIAN_PACKAGES=(
   python3-visualization-msgs
   python3-diagnostic-msgs
   python3-sensor-msgs
+  python3-nav-msgs
   python3-std-srvs
   python3-tf2-msgs
   python3-rosgraph-msgs
@@ -52,6 +53,7 @@ DEBIAN_PACKAGES=(
   # demo: robot model, tf from joint states, rviz headless and its screenshot
   libstd-srvs-dev
   libsensor-msgs-dev
+  libnav-msgs-dev
   ros-robot-state-publisher
   rviz
   xvfb

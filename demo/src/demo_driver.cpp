@@ -4,6 +4,7 @@
 #include <sensor_msgs/LaserScan.h>
 #include <tf2/utils.h>
 #include <tf2_geometry_msgs/tf2_geometry_msgs.h>
+#include <visualization_msgs/MarkerArray.h>
 
 #include <cmath>
 #include <set>
@@ -81,8 +82,9 @@ std::string frameOr(const ros::NodeHandle& nh, const std::string& key,
 DemoDriver::DemoDriver(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
     : nh_(nh), private_nh_(private_nh) {
   const ros::NodeHandle& p = private_nh_;
-  dictKeys(p, "", {"rate", "odom_frame", "base_frame", "base_path", "joints", "moving_obstacle",
-                   "scanner"});
+  dictKeys(p, "",
+           {"rate", "odom_frame", "base_frame", "base_path", "joints", "moving_obstacle", "scanner",
+            "planned_path"});
   const double rate_hz = p.hasParam("rate") ? positive(p, "rate") : 30.0;
   odom_frame_ = frameOr(p, "odom_frame", "odom");
   base_frame_ = frameOr(p, "base_frame", "base_link");
@@ -141,6 +143,26 @@ DemoDriver::DemoDriver(const ros::NodeHandle& nh, const ros::NodeHandle& private
                             ": expected a number > range_min");
     }
   }
+
+  double check_rate_hz = 5.0;
+  if (p.hasParam("planned_path")) {
+    dictKeys(p, "planned_path", {"horizon", "step", "check_rate"});
+    if (p.hasParam("planned_path/horizon"))
+      planned_horizon_s_ = positive(p, "planned_path/horizon");
+    if (p.hasParam("planned_path/step")) planned_step_s_ = positive(p, "planned_path/step");
+    if (p.hasParam("planned_path/check_rate"))
+      check_rate_hz = positive(p, "planned_path/check_rate");
+    if (planned_horizon_s_ / planned_step_s_ > 10000.0) {
+      throw DemoConfigError("parameter " + fullName(p, "planned_path/step") +
+                            ": expected at most 10000 poses per plan (horizon / step)");
+    }
+  }
+  planned_path_pub_ = nh_.advertise<nav_msgs::Path>("planned_path", 1);
+  path_check_markers_pub_ =
+      private_nh_.advertise<visualization_msgs::MarkerArray>("path_check_markers", 1, true);
+  check_path_ = nh_.serviceClient<CheckPath>("ellipse_collision/check_path");
+  path_check_timer_ =
+      nh_.createTimer(ros::Duration(1.0 / check_rate_hz), &DemoDriver::onPathCheckTimer, this);
 
   joint_states_pub_ = nh_.advertise<sensor_msgs::JointState>("joint_states", 10);
   scan_pub_ = nh_.advertise<sensor_msgs::LaserScan>("scan", 10);
@@ -204,6 +226,80 @@ void DemoDriver::onTimer(const ros::TimerEvent&) {
       }(),
       0.0);
   publishScan(now, base, obstacle);
+  last_plan_ = plannedPath(now, t);
+  planned_path_pub_.publish(last_plan_);
+}
+
+nav_msgs::Path DemoDriver::plannedPath(const ros::Time& now, double t) const {
+  nav_msgs::Path path;
+  path.header.stamp = now;
+  path.header.frame_id = odom_frame_;
+  const int steps = static_cast<int>(std::round(planned_horizon_s_ / planned_step_s_));
+  for (int k = 0; k <= steps; ++k) {
+    const double ahead = k * planned_step_s_;
+    // While paused the base stands still: the plan is the same pose, with rising stamps.
+    const Pose2D pose = trajectory_.base.at(paused_ ? t : t + ahead);
+    geometry_msgs::PoseStamped stamped;
+    stamped.header.stamp = now + ros::Duration(ahead);
+    stamped.header.frame_id = odom_frame_;
+    stamped.pose.position.x = pose.position.x();
+    stamped.pose.position.y = pose.position.y();
+    stamped.pose.orientation.z = std::sin(pose.yaw / 2);
+    stamped.pose.orientation.w = std::cos(pose.yaw / 2);
+    path.poses.push_back(stamped);
+  }
+  return path;
+}
+
+void DemoDriver::onPathCheckTimer(const ros::TimerEvent&) {
+  if (last_plan_.poses.empty() || !check_path_.exists()) return;
+  CheckPath srv;
+  srv.request.path = last_plan_;
+  srv.request.moving_frame = base_frame_;
+  visualization_msgs::MarkerArray markers;
+  visualization_msgs::Marker contact;
+  contact.header.frame_id = odom_frame_;
+  contact.header.stamp = last_plan_.header.stamp;
+  contact.ns = "planned_path_contact";
+  contact.id = 0;
+  contact.pose.orientation.w = 1.0;
+  if (!check_path_.call(srv) || !srv.response.success) {
+    ROS_WARN_STREAM_THROTTLE(5.0, "demo_driver: ~check_path failed: " << srv.response.message);
+    return;
+  }
+  if (srv.response.collision_free) {
+    contact.action = visualization_msgs::Marker::DELETE;
+  } else {
+    // The base's pose at the first contact, on the segment's straight line.
+    const auto& from = last_plan_.poses[srv.response.segment].pose.position;
+    const auto& to =
+        last_plan_
+            .poses[std::min<std::size_t>(srv.response.segment + 1, last_plan_.poses.size() - 1)]
+            .pose.position;
+    const double f = srv.response.fraction;
+    // A thin magenta ring: apart from the node's red, orange, yellow and green, and covering
+    // few pixels of the ellipses beneath it.
+    contact.type = visualization_msgs::Marker::LINE_STRIP;
+    contact.action = visualization_msgs::Marker::ADD;
+    const double cx = from.x + f * (to.x - from.x), cy = from.y + f * (to.y - from.y);
+    for (int k = 0; k <= 24; ++k) {
+      geometry_msgs::Point p;
+      p.x = cx + 0.15 * std::cos(2.0 * M_PI * k / 24);
+      p.y = cy + 0.15 * std::sin(2.0 * M_PI * k / 24);
+      p.z = 0.05;
+      contact.points.push_back(p);
+    }
+    contact.scale.x = 0.03;
+    contact.color.r = 1.0f;
+    contact.color.g = 0.0f;
+    contact.color.b = 1.0f;
+    contact.color.a = 1.0f;
+    ROS_INFO_STREAM_THROTTLE(2.0, "demo_driver: planned path meets "
+                                      << srv.response.name_b << " with " << srv.response.name_a
+                                      << " in " << core::formatNumber(srv.response.time) << " s");
+  }
+  markers.markers.push_back(contact);
+  path_check_markers_pub_.publish(markers);
 }
 
 void DemoDriver::publishScan(const ros::Time& now, const Pose2D& base,

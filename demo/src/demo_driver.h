@@ -1,5 +1,6 @@
 #pragma once
 
+#include <nav_msgs/Path.h>
 #include <ros/ros.h>
 #include <std_srvs/SetBool.h>
 #include <tf2_ros/buffer.h>
@@ -27,6 +28,11 @@ class DemoConfigError : public std::runtime_error {
 /// scan_obstacles turns into the collision node's ~obstacles). The service ~pause
 /// (std_srvs/SetBool) stops and restarts the demo clock; while paused everything is still
 /// published, with fresh stamps, at the same pose, so tf stays current and the scene stays still.
+/// The base's plan: every cycle the next `planned_path/horizon` seconds of its loop, as a timed
+/// nav_msgs/Path on `planned_path` (in the odom frame, one pose per `planned_path/step`); at
+/// `planned_path/check_rate` the driver checks it with the collision node's ~check_path and shows
+/// the answer on ~path_check_markers: the first contact as a magenta ring at the base's pose then
+/// (DELETE while the plan is clear).
 class DemoDriver {
  public:
   /// Reads the private parameters (demo/config/demo.yaml, `demo_driver:`); throws DemoConfigError.
@@ -38,6 +44,9 @@ class DemoDriver {
   /// odom frame), once tf knows where the scanner sits on the base.
   void publishScan(const ros::Time& now, const Pose2D& base, const core::Ellipse& obstacle);
   bool onPause(std_srvs::SetBool::Request& request, std_srvs::SetBool::Response& response);
+  /// The next planned_horizon_s of the base's loop from demo time t, stamped from `now`.
+  nav_msgs::Path plannedPath(const ros::Time& now, double t) const;
+  void onPathCheckTimer(const ros::TimerEvent& event);
   /// The demo clock [s]: ROS time since start, minus the time spent paused.
   double demoTime(const ros::Time& now) const;
 
@@ -57,6 +66,13 @@ class DemoDriver {
   ros::Publisher scan_pub_;
   ros::ServiceServer pause_service_;
   ros::Timer timer_;
+  ros::Publisher planned_path_pub_;
+  ros::Publisher path_check_markers_pub_;
+  ros::ServiceClient check_path_;
+  ros::Timer path_check_timer_;
+  nav_msgs::Path last_plan_;
+  double planned_horizon_s_{3.0};  ///< [s] of the loop ahead in each plan
+  double planned_step_s_{0.1};     ///< [s] between its poses
 
   bool paused_{false};
   double clock_at_start_s_{0.0};  ///< demo clock when it last (re)started or paused [s]

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "ellipse_collision/core/first_contact.h"
 #include "ellipse_collision/core/number_format.h"
 
 namespace ellipse_collision::app {
@@ -30,6 +31,25 @@ std::optional<FieldError> findInvalidField(const EllipseSpec& spec, const std::s
   if (spec.padding > core::kMaxRadius) {
     return FieldError{"padding", "a number within [0, " + formatNumber(core::kMaxRadius) + "]",
                       formatNumber(spec.padding)};
+  }
+  // The core's motion limits (core/first_contact.h), so that every stored velocity can be given
+  // to firstContact().
+  const struct {
+    const char* key;
+    double value;
+    double max;
+    const char* unit;
+  } velocities[] = {
+      {"vx", spec.vx, core::kMaxSpeed, "m/s"},
+      {"vy", spec.vy, core::kMaxSpeed, "m/s"},
+      {"angular_velocity", spec.angular_velocity, core::kMaxAngularVelocity, "rad/s"}};
+  for (const auto& v : velocities) {
+    if (!(std::fabs(v.value) <= v.max)) {
+      return FieldError{v.key,
+                        std::string("a finite number within [") + formatNumber(-v.max) + ", " +
+                            formatNumber(v.max) + "] " + v.unit,
+                        formatNumber(v.value)};
+    }
   }
   return std::nullopt;
 }
@@ -66,6 +86,11 @@ core::Ellipse paddedEllipse(const EllipseSpec& spec, double global_padding) {
   e.radius_y = spec.radius_y + spec.padding + global_padding;
   e.angle = spec.angle;
   return e;
+}
+
+core::Motion ownMotion(const EllipseSpec& spec, const Eigen::Isometry3d& target_from_frame) {
+  const Eigen::Vector3d v = target_from_frame.linear() * Eigen::Vector3d(spec.vx, spec.vy, 0.0);
+  return core::Motion{v.head<2>(), spec.angular_velocity * target_from_frame.linear()(2, 2)};
 }
 
 }  // namespace ellipse_collision::app

@@ -26,7 +26,8 @@ std::string text(const std::string& s) { return std::to_string(s.size()) + ":" +
 void writeSpec(std::ostringstream& out, const char* kind, const EllipseSpec& spec) {
   out << kind << ' ' << text(spec.name) << ' ' << text(spec.frame_id) << ' ' << number(spec.x)
       << ' ' << number(spec.y) << ' ' << number(spec.angle) << ' ' << number(spec.radius_x) << ' '
-      << number(spec.radius_y) << ' ' << number(spec.padding) << '\n';
+      << number(spec.radius_y) << ' ' << number(spec.padding) << ' ' << number(spec.vx) << ' '
+      << number(spec.vy) << ' ' << number(spec.angular_velocity) << '\n';
 }
 
 /// Reads "<length>:<bytes>" at `pos` of `line`, then skips one space.
@@ -49,8 +50,15 @@ bool readNumbers(const std::string& line, EllipseSpec& spec) {
   std::istringstream in(line);
   in >> spec.x >> spec.y >> spec.angle >> spec.radius_x >> spec.radius_y >> spec.padding;
   if (!in) return false;
+  // The velocities (issue 14) follow; a store written before them has none: the obstacle stands.
   std::string rest;
-  return !(in >> rest);
+  if (!(in >> rest)) return true;
+  std::istringstream velocities(line);
+  double skip = 0.0;
+  for (int i = 0; i < 6; ++i) velocities >> skip;
+  velocities >> spec.vx >> spec.vy >> spec.angular_velocity;
+  if (!velocities) return false;
+  return !(velocities >> rest);
 }
 
 std::string errnoText(const std::string& step, const std::string& path) {
@@ -119,7 +127,8 @@ std::string parseObstacles(const std::string& input, StoredObstacles& out) {
       EllipseSpec spec;
       if (!readText(input, pos, spec.name) || !readText(input, pos, spec.frame_id) ||
           !restOfLine(line) || !readNumbers(line, spec)) {
-        return at("expected " + kind + " <name> <frame> x y angle radius_x radius_y padding");
+        return at("expected " + kind +
+                  " <name> <frame> x y angle radius_x radius_y padding [vx vy angular_velocity]");
       }
       (kind == "service" ? parsed.service : parsed.topic).push_back(spec);
     } else {

@@ -145,7 +145,8 @@ std::vector<Marker> CollisionMarkers::fills(std::size_t layer,
 visualization_msgs::MarkerArray CollisionMarkers::update(
     const std::vector<core::NamedEllipse>& placed,
     const std::vector<core::CollidingPair>& collisions, const std::vector<core::NearPair>& warnings,
-    const std::string& fixed_frame, const ros::Time& stamp) {
+    const std::string& fixed_frame, const ros::Time& stamp,
+    const std::set<std::string>& predicted) {
   ++generation_;
   fixed_frame_ = fixed_frame;
   stamp_ = stamp;
@@ -156,6 +157,7 @@ visualization_msgs::MarkerArray CollisionMarkers::update(
   // The highest-ranked state the ellipse qualifies for.
   const auto stateOf = [&](const std::string& name) {
     if (colliding.count(name)) return MarkerState::Collision;
+    if (predicted.count(name)) return MarkerState::Predicted;
     if (warned.count(name)) return MarkerState::Warning;
     return MarkerState::Free;
   };

@@ -69,6 +69,7 @@ CollisionNode::CollisionNode(const ros::NodeHandle& nh, const ros::NodeHandle& p
       private_nh_.advertiseService("add_obstacles", &CollisionNode::onAddObstacles, this);
   remove_service_ =
       private_nh_.advertiseService("remove_obstacles", &CollisionNode::onRemoveObstacles, this);
+  path_service_ = private_nh_.advertiseService("check_path", &CollisionNode::onCheckPath, this);
   obstacles_sub_ = private_nh_.subscribe("obstacles", 10, &CollisionNode::onObstacles, this);
 
   if (config_.rate_hz > 0.0) {
@@ -179,6 +180,7 @@ app::CheckOutcome CollisionNode::runFullCheck(const ros::Duration& timeout,
     state_.failure = outcome.error;
     return outcome;
   }
+  predict(outcome, request, ros::Time(0), now);  // times from the state's stamp
   state_.failure.clear();
   state_.duration_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -211,16 +213,21 @@ void CollisionNode::publishState() {
   msg.warnings = toMsg(state_.outcome.warnings);
   msg.stale_frames = state_.outcome.stale_frames;
   msg.complete = state_.outcome.complete;
+  msg.predicted = toMsg(state_.outcome.predicted);
   collisions_pub_.publish(msg);
 }
 
 void CollisionNode::publishMarkers() {
   // Nobody listening: skip the work. onMarkerSubscriber() publishes for the next subscriber.
   if (!state_.valid || markers_pub_.getNumSubscribers() == 0) return;
+  std::set<std::string> predicted;
+  for (const core::PredictedContact& p : state_.outcome.predicted) {
+    predicted.insert({p.name_a, p.name_b});
+  }
   // Only what changed since the last array: an unchanged scene publishes nothing.
   const visualization_msgs::MarkerArray changes =
       markers_.update(state_.outcome.placed, state_.outcome.collisions, state_.outcome.warnings,
-                      config_.fixed_frame, state_.stamp);
+                      config_.fixed_frame, state_.stamp, predicted);
   if (!changes.markers.empty()) markers_pub_.publish(changes);
 }
 
@@ -267,11 +274,12 @@ bool CollisionNode::onCheckCollisions(CheckCollisions::Request& request,
   if (!full_check) handleTimeJumpAndExpiry();
   // Freshness is measured against now for latest-transform checks, else the requested stamp.
   const double reference_s = (request.stamp.isZero() ? ros::Time::now() : request.stamp).toSec();
-  const app::CheckOutcome outcome =
+  app::CheckOutcome outcome =
       full_check ? runFullCheck(timeout, check.min_distance_of)
                  : app::runCheck(check, registry_, settings_,
                                  tfLookup(tf_buffer_, config_.fixed_frame, request.stamp, timeout),
                                  reference_s);
+  if (!full_check && outcome.error.empty()) predict(outcome, check, request.stamp);
   if (!outcome.error.empty()) {
     ROS_ERROR_STREAM_COND(outcome.error.rfind("internal error", 0) == 0,
                           "ellipse_collision: " << outcome.error);
@@ -311,6 +319,48 @@ bool CollisionNode::onRemoveObstacles(RemoveObstacles::Request& request,
   response.success = error.empty();
   response.message =
       error.empty() ? "removed " + std::to_string(request.names.size()) + " obstacle(s)" : error;
+  return true;
+}
+
+void CollisionNode::predict(app::CheckOutcome& outcome, const app::CheckRequest& request,
+                            const ros::Time& stamp, const ros::Time& reference) {
+  if (!(config_.prediction_horizon_s > 0.0)) return;
+  const tf2_ros::Buffer& buffer = tf_buffer_;
+  const std::string fixed_frame = config_.fixed_frame;
+  const double reference_s = (!reference.isZero() ? reference
+                              : stamp.isZero()    ? ros::Time::now()
+                                                  : stamp)
+                                 .toSec();
+  app::predictContacts(
+      outcome, request, registry_, settings_,
+      tfLookup(tf_buffer_, config_.fixed_frame, stamp, ros::Duration(0)),
+      [&buffer, fixed_frame](const std::string& frame, double time_s) {
+        return tfLookup(buffer, fixed_frame, ros::Time(time_s), ros::Duration(0))(frame);
+      },
+      config_.prediction_horizon_s, reference_s);
+  if (!outcome.prediction_notes.empty()) {
+    ROS_WARN_STREAM_THROTTLE(
+        5.0, "ellipse_collision: prediction: " << app::joinText(outcome.prediction_notes, "; "));
+  }
+}
+
+bool CollisionNode::onCheckPath(CheckPath::Request& request, CheckPath::Response& response) {
+  app::PathCheckRequest path = fromMsg(request);
+  if (path.path_frame.empty()) path.path_frame = config_.fixed_frame;
+  if (path.moving_frame.empty()) path.moving_frame = config_.robot_frame;
+  response.success = false;
+  response.message = app::validatePathRequest(path);
+  if (!response.message.empty()) return true;
+  handleTimeJumpAndExpiry();
+  const ros::Duration timeout(config_.tf_timeout_s);
+  const app::PathCheckOutcome outcome = app::runPathCheck(
+      path, registry_, settings_, tfLookup(tf_buffer_, path.moving_frame, ros::Time(0), timeout),
+      tfLookup(tf_buffer_, path.path_frame, ros::Time(0), timeout), ros::Time::now().toSec());
+  if (!outcome.error.empty()) {
+    response.message = outcome.error;
+    return true;
+  }
+  toMsg(outcome, response);
   return true;
 }
 
@@ -354,8 +404,13 @@ void CollisionNode::onDiagnosticsTimer(const ros::TimerEvent& /*event*/) {
                                                     : diagnostic_msgs::DiagnosticStatus::WARN;
   status.message = !problems.empty()                    ? app::joinText(problems, "; ")
                    : !state_.outcome.collisions.empty() ? "in collision"
-                   : !state_.outcome.warnings.empty()   ? "closer than the warning distance"
-                                                        : "clear";
+                   : !state_.outcome.predicted.empty()
+                       ? "contact predicted in " +
+                             core::formatNumber(state_.outcome.predicted.front().time) + " s (" +
+                             state_.outcome.predicted.front().name_a + " / " +
+                             state_.outcome.predicted.front().name_b + ")"
+                   : !state_.outcome.warnings.empty() ? "closer than the warning distance"
+                                                      : "clear";
 
   status.values.push_back(
       keyValue("links", std::to_string(registry_.count(app::EllipseSource::ConfiguredLink))));
@@ -379,6 +434,17 @@ void CollisionNode::onDiagnosticsTimer(const ros::TimerEvent& /*event*/) {
   status.values.push_back(
       keyValue("dropped obstacles (obstacle_timeout)", std::to_string(dropped_obstacles_)));
   status.values.push_back(keyValue("time jumps back", std::to_string(time_jumps_)));
+  status.values.push_back(
+      keyValue("prediction horizon [s]", core::formatNumber(config_.prediction_horizon_s)));
+  status.values.push_back(
+      keyValue("smallest time to contact [s]",
+               state_.outcome.predicted.empty()
+                   ? std::string("none")
+                   : core::formatNumber(state_.outcome.predicted.front().time)));
+  status.values.push_back(
+      keyValue("predicted contacts", std::to_string(state_.outcome.predicted.size())));
+  status.values.push_back(
+      keyValue("prediction notes", app::joinText(state_.outcome.prediction_notes, "; ")));
 
   diagnostic_msgs::DiagnosticArray array;
   array.header.stamp = ros::Time::now();

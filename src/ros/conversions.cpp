@@ -12,6 +12,9 @@ app::EllipseSpec fromMsg(const Ellipse& msg) {
   spec.radius_x = msg.radius_x;
   spec.radius_y = msg.radius_y;
   spec.padding = msg.padding;
+  spec.vx = msg.vx;
+  spec.vy = msg.vy;
+  spec.angular_velocity = msg.angular_velocity;
   return spec;
 }
 
@@ -25,6 +28,9 @@ Ellipse toMsg(const app::EllipseSpec& spec) {
   msg.radius_x = spec.radius_x;
   msg.radius_y = spec.radius_y;
   msg.padding = spec.padding;
+  msg.vx = spec.vx;
+  msg.vy = spec.vy;
+  msg.angular_velocity = spec.angular_velocity;
   return msg;
 }
 
@@ -108,6 +114,59 @@ void toMsg(const app::CheckOutcome& outcome, CheckCollisions::Response& response
   if (outcome.nearest) response.nearest = toMsg(*outcome.nearest);
   response.stale_frames = outcome.stale_frames;
   response.complete = outcome.complete;
+  response.predicted = toMsg(outcome.predicted);
+}
+
+app::PathCheckRequest fromMsg(const CheckPath::Request& request) {
+  app::PathCheckRequest path;
+  path.path_frame = request.path.header.frame_id;
+  path.moving_frame = request.moving_frame;
+  path.poses.reserve(request.path.poses.size());
+  for (const geometry_msgs::PoseStamped& pose : request.path.poses) {
+    app::PathPoseInput in;
+    in.frame_id = pose.header.frame_id;
+    in.stamp_s = pose.header.stamp.toSec();
+    in.x = pose.pose.position.x;
+    in.y = pose.pose.position.y;
+    in.z = pose.pose.position.z;
+    in.qx = pose.pose.orientation.x;
+    in.qy = pose.pose.orientation.y;
+    in.qz = pose.pose.orientation.z;
+    in.qw = pose.pose.orientation.w;
+    path.poses.push_back(in);
+  }
+  return path;
+}
+
+void toMsg(const app::PathCheckOutcome& outcome, CheckPath::Response& response) {
+  const core::PathCheckResult& r = outcome.result;
+  response.success = true;
+  response.message =
+      outcome.skipped.empty() ? "" : "skipped " + app::joinText(outcome.skipped, "; ");
+  response.collision_free = r.collision_free;
+  response.segment = static_cast<std::uint32_t>(r.segment);
+  response.fraction = r.fraction;
+  response.time = r.time;
+  response.name_a = r.link;
+  response.name_b = r.obstacle;
+  response.min_clearance = r.has_clearance ? r.min_clearance : 0.0;
+  response.min_clearance_pose = static_cast<std::uint32_t>(r.min_clearance_pose);
+  response.clearance_name_a = r.clearance_link;
+  response.clearance_name_b = r.clearance_obstacle;
+  response.unavailable_frames = outcome.unavailable_frames;
+}
+
+std::vector<PredictedContact> toMsg(const std::vector<core::PredictedContact>& predicted) {
+  std::vector<PredictedContact> msgs;
+  msgs.reserve(predicted.size());
+  for (const core::PredictedContact& p : predicted) {
+    PredictedContact msg;
+    msg.name_a = p.name_a;
+    msg.name_b = p.name_b;
+    msg.time = p.time;
+    msgs.push_back(msg);
+  }
+  return msgs;
 }
 
 }  // namespace ellipse_collision

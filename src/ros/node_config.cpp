@@ -252,7 +252,8 @@ NodeConfig parseNodeConfig(const XmlRpcValue& params, const UrdfLinkFitter& fit_
       "fixed_frame",      "rate",              "tf_timeout",       "padding",
       "links",            "links_from_urdf",   "obstacles",        "allowed_pairs",
       "self_collision",   "warning_distance",  "max_transform_age", "obstacle_timeout",
-      "max_obstacles",    "max_name_length",   "obstacle_store"};
+      "max_obstacles",    "max_name_length",   "obstacle_store",   "robot_frame",
+      "prediction_horizon"};
   if (root.getType() == XmlRpcValue::TypeStruct) {
     for (auto it = root.begin(); it != root.end(); ++it) {
       if (!known.count(it->first)) {
@@ -260,7 +261,7 @@ NodeConfig parseNodeConfig(const XmlRpcValue& params, const UrdfLinkFitter& fit_
                           ": unknown key (expected one of fixed_frame, rate, tf_timeout, padding, "
                           "links, links_from_urdf, obstacles, allowed_pairs, self_collision, "
                           "warning_distance, max_transform_age, obstacle_timeout, max_obstacles, "
-                          "max_name_length, obstacle_store)");
+                          "max_name_length, obstacle_store, robot_frame, prediction_horizon)");
       }
     }
   }
@@ -271,6 +272,14 @@ NodeConfig parseNodeConfig(const XmlRpcValue& params, const UrdfLinkFitter& fit_
   NodeConfig config;
   if (has("fixed_frame")) {
     config.fixed_frame = readFrame(root["fixed_frame"], "parameter ~fixed_frame", "fixed_frame");
+  }
+  if (has("robot_frame")) {
+    config.robot_frame = readFrame(root["robot_frame"], "parameter ~robot_frame", "robot_frame");
+  }
+  if (has("prediction_horizon")) {
+    config.prediction_horizon_s =
+        readInRange(root["prediction_horizon"], "parameter ~prediction_horizon",
+                    "prediction_horizon", 0.0, kMaxPredictionHorizonS);
   }
   if (has("rate")) {
     config.rate_hz =

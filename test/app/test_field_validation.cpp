@@ -65,6 +65,13 @@ TEST(EllipseSpec, EachInvalidFieldIsNamedWithItsValue) {
       {"centre beyond the core's range", [](EllipseSpec& s) { s.y = -3e9; }, "y", "-3e+09"},
       {"padding beyond the core's range", [](EllipseSpec& s) { s.padding = 1e10; }, "padding",
        "1e+10"},
+      {"nan vx", [](EllipseSpec& s) { s.vx = kNaN; }, "vx", "nan"},
+      {"infinite vy", [](EllipseSpec& s) { s.vy = -kInf; }, "vy", "-inf"},
+      {"vx beyond the core's speed", [](EllipseSpec& s) { s.vx = 2e9; }, "vx", "2e+09"},
+      {"nan angular_velocity", [](EllipseSpec& s) { s.angular_velocity = kNaN; },
+       "angular_velocity", "nan"},
+      {"angular_velocity beyond the core's range",
+       [](EllipseSpec& s) { s.angular_velocity = -3e9; }, "angular_velocity", "-3e+09"},
   };
   for (const InvalidCase& c : cases) {
     EllipseSpec spec = sampleSpec();

@@ -22,13 +22,17 @@ EllipseSpec spec(const std::string& name, const std::string& frame, double x) {
   s.radius_x = 0.3;
   s.radius_y = 1e-9;
   s.padding = 0.05;
+  s.vx = 0.25;
+  s.vy = -1.0 / 7.0;
+  s.angular_velocity = 3e-5;
   return s;
 }
 
 bool same(const EllipseSpec& a, const EllipseSpec& b) {
   return a.name == b.name && a.frame_id == b.frame_id && a.x == b.x && a.y == b.y &&
          a.angle == b.angle && a.radius_x == b.radius_x && a.radius_y == b.radius_y &&
-         a.padding == b.padding;
+         a.padding == b.padding && a.vx == b.vx && a.vy == b.vy &&
+         a.angular_velocity == b.angular_velocity;
 }
 
 TEST(ObstacleStore, RoundTripIsExactEvenForNamesWithSpacesColonsAndNewlines) {
@@ -58,7 +62,22 @@ TEST(ObstacleStore, CorruptTextIsRefusedWithTheLine) {
   EXPECT_EQ(parseObstacles(good.substr(0, good.size() - 4), out), "truncated: no 'end' record");
   EXPECT_EQ(parseObstacles(good.substr(0, good.size() / 2), out).rfind("record", 0), 0u);
   EXPECT_EQ(parseObstacles("ellipse_collision obstacle store 1\nservice 9:a map 1\nend\n", out),
-            "record 2: expected service <name> <frame> x y angle radius_x radius_y padding");
+            "record 2: expected service <name> <frame> x y angle radius_x radius_y padding "
+            "[vx vy angular_velocity]");
+  // A store written before the velocities: the obstacle stands still.
+  StoredObstacles old_store;
+  ASSERT_EQ(
+      parseObstacles("ellipse_collision obstacle store 1\nservice 1:a 3:map 1 2 0 0.5 0.5 0\nend\n",
+                     old_store),
+      "");
+  ASSERT_EQ(old_store.service.size(), 1u);
+  EXPECT_EQ(old_store.service[0].vx, 0.0);
+  EXPECT_EQ(old_store.service[0].radius_x, 0.5);
+  EXPECT_NE(parseObstacles(
+                "ellipse_collision obstacle store 1\nservice 1:a 3:map 1 2 0 0.5 0.5 0 1\nend\n",
+                old_store),
+            "")
+      << "velocities are all three or none";
   EXPECT_EQ(parseObstacles("ellipse_collision obstacle store 1\nfoo\nend\n", out),
             "record 2: unknown entry 'foo'");
   EXPECT_EQ(parseObstacles(good + "x", out), "record 5: expected nothing after 'end'");

@@ -131,6 +131,33 @@ TEST(CollisionMarkers, StateTableIsInRankOrderWithDistinctCodesAndColours) {
   EXPECT_EQ(CollisionMarkers::style(MarkerState::Collision).r, 0.9f);
   EXPECT_EQ(CollisionMarkers::style(MarkerState::Warning).g, 0.85f);
   EXPECT_EQ(CollisionMarkers::style(MarkerState::Free).g, 0.8f);
+  EXPECT_EQ(CollisionMarkers::style(MarkerState::Predicted).g, 0.5f);  // orange
+}
+
+bool isOrange(const Marker* m) {
+  return m && m->color.r > 0.9f && m->color.g > 0.3f && m->color.g < 0.7f && m->color.b < 0.2f;
+}
+
+TEST(CollisionMarkers, OrangeForAPredictedContactBelowRedAboveYellow) {
+  CollisionMarkers markers;
+  const std::vector<core::NamedEllipse> placed = {
+      named("arm", kLink, 0, 0), named("hand", kLink, 0, 1), named("box", kObstacle, 0, 2),
+      named("cup", kObstacle, 0, 3), named("far", kObstacle, 0, 4)};
+  MarkerView view;
+  view.apply(markers.update(placed, {{"arm", "box", 0.5}},
+                            {nearPair("hand", "cup", {0, 0}, {0, 1})}, "m", kStamp,
+                            {"arm", "hand", "far"}));
+  EXPECT_TRUE(isRed(fillOf(view, "links", placed[0].ellipse)))
+      << "a collision outranks a predicted contact";
+  EXPECT_TRUE(isOrange(fillOf(view, "links", placed[1].ellipse)))
+      << "a predicted contact outranks a warning";
+  EXPECT_TRUE(isOrange(fillOf(view, "obstacles", placed[4].ellipse)));
+  EXPECT_TRUE(isYellow(fillOf(view, "obstacles", placed[3].ellipse)));
+  EXPECT_FALSE(isRed(fillOf(view, "links", placed[1].ellipse)) ||
+               isYellow(fillOf(view, "links", placed[1].ellipse)) ||
+               isGreen(fillOf(view, "links", placed[1].ellipse)));
+  EXPECT_EQ(fillOf(view, "links", placed[1].ellipse)->id,
+            CollisionMarkers::fillId(MarkerState::Predicted, 0));
 }
 
 TEST(CollisionMarkers, LinksAndObstaclesHaveTheirOwnNamespacesAndQueriesAreNotDrawn) {

@@ -24,6 +24,9 @@ app::EllipseSpec sampleSpec() {
   spec.radius_x = 0.3;
   spec.radius_y = 0.07;
   spec.padding = 0.01;
+  spec.vx = 0.3;
+  spec.vy = -1.7;
+  spec.angular_velocity = 0.7;
   return spec;
 }
 
@@ -38,6 +41,9 @@ void expectSameSpec(const app::EllipseSpec& a, const app::EllipseSpec& b) {
   EXPECT_TRUE(sameBits(a.radius_x, b.radius_x));
   EXPECT_TRUE(sameBits(a.radius_y, b.radius_y));
   EXPECT_TRUE(sameBits(a.padding, b.padding));
+  EXPECT_TRUE(sameBits(a.vx, b.vx));
+  EXPECT_TRUE(sameBits(a.vy, b.vy));
+  EXPECT_TRUE(sameBits(a.angular_velocity, b.angular_velocity));
 }
 
 TEST(Conversions, EllipseSpecSurvivesTheRoundTripThroughTheMessage) {
@@ -54,6 +60,9 @@ TEST(Conversions, EveryMessageFieldLandsInTheMatchingSpecField) {
   msg.radius_x = 4;
   msg.radius_y = 5;
   msg.padding = 6;
+  msg.vx = 7;
+  msg.vy = 8;
+  msg.angular_velocity = 9;
   const app::EllipseSpec spec = fromMsg(msg);
   EXPECT_EQ(spec.name, "n");
   EXPECT_EQ(spec.frame_id, "f");
@@ -63,6 +72,9 @@ TEST(Conversions, EveryMessageFieldLandsInTheMatchingSpecField) {
   EXPECT_EQ(spec.radius_x, 4);
   EXPECT_EQ(spec.radius_y, 5);
   EXPECT_EQ(spec.padding, 6);
+  EXPECT_EQ(spec.vx, 7);
+  EXPECT_EQ(spec.vy, 8);
+  EXPECT_EQ(spec.angular_velocity, 9);
   EXPECT_EQ(toMsg(spec), msg);
 }
 

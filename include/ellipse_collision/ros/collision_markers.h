@@ -18,10 +18,9 @@ namespace ellipse_collision {
 
 /// The states an ellipse's marker shows, in rank order: an ellipse that qualifies for several
 /// shows the highest. Index into kMarkerStates.
-enum class MarkerState : std::uint8_t { Free, Warning, Collision };
+enum class MarkerState : std::uint8_t { Free, Warning, Predicted, Collision };
 
-/// How one state is drawn. To add a state (say orange "predicted contact" between Warning and
-/// Collision): add it to MarkerState at its rank, add its row here at the same position with a
+/// How one state is drawn. To add a state: add it to MarkerState at its rank, add its row here at the same position with a
 /// new `code`, and give update() the input that puts ellipses in it.
 struct MarkerStateStyle {
   MarkerState state;
@@ -31,9 +30,10 @@ struct MarkerStateStyle {
   std::int32_t code;
   float r, g, b;  ///< colour in [0, 1]
 };
-inline constexpr std::array<MarkerStateStyle, 3> kMarkerStates{{
+inline constexpr std::array<MarkerStateStyle, 4> kMarkerStates{{
     {MarkerState::Free, "free", 0, 0.1f, 0.8f, 0.1f},            // green
     {MarkerState::Warning, "warning", 1, 0.9f, 0.85f, 0.1f},     // yellow
+    {MarkerState::Predicted, "predicted", 3, 1.0f, 0.5f, 0.0f},  // orange: touches within ~prediction_horizon
     {MarkerState::Collision, "collision", 2, 0.9f, 0.1f, 0.1f},  // red
 }};
 
@@ -72,7 +72,8 @@ class CollisionMarkers {
   visualization_msgs::MarkerArray update(const std::vector<core::NamedEllipse>& placed,
                                          const std::vector<core::CollidingPair>& collisions,
                                          const std::vector<core::NearPair>& warnings,
-                                         const std::string& fixed_frame, const ros::Time& stamp);
+                                         const std::string& fixed_frame, const ros::Time& stamp,
+                                         const std::set<std::string>& predicted = {});
 
   /// Everything the last update() left shown, after a DELETEALL: for a new subscriber, which may
   /// hold markers of an earlier run of the node (a respawn) or only the latched last update.

@@ -60,6 +60,13 @@ class CollisionNode {
   bool onCheckCollisions(CheckCollisions::Request& request, CheckCollisions::Response& response);
   bool onAddObstacles(AddObstacles::Request& request, AddObstacles::Response& response);
   bool onRemoveObstacles(RemoveObstacles::Request& request, RemoveObstacles::Response& response);
+  bool onCheckPath(CheckPath::Request& request, CheckPath::Response& response);
+  /// The time-to-contact step (app::predictContacts()) of a successful check; nothing when
+  /// ~prediction_horizon is 0.
+  /// `stamp`: the check's transform time (zero = latest); predicted times count from `reference`
+  /// (the check's stamp; zero = `stamp`, or now for latest transforms).
+  void predict(app::CheckOutcome& outcome, const app::CheckRequest& request, const ros::Time& stamp,
+               const ros::Time& reference = ros::Time(0));
 
   ros::NodeHandle nh_;
   ros::NodeHandle private_nh_;
@@ -77,6 +84,7 @@ class CollisionNode {
   ros::ServiceServer check_service_;
   ros::ServiceServer add_service_;
   ros::ServiceServer remove_service_;
+  ros::ServiceServer path_service_;
   ros::Timer check_timer_;
   ros::Timer diagnostics_timer_;
 

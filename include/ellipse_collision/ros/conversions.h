@@ -5,8 +5,10 @@
 
 #include "ellipse_collision/app/collision_check.h"
 #include "ellipse_collision/app/ellipse_spec.h"
-#include "ellipse_collision/ros/messages.h"
+#include "ellipse_collision/app/path_request.h"
+#include "ellipse_collision/core/contact_prediction.h"
 #include "ellipse_collision/core/scene_check.h"
+#include "ellipse_collision/ros/messages.h"
 
 namespace ellipse_collision {
 
@@ -33,5 +35,15 @@ app::CheckRequest fromMsg(const CheckCollisions::Request& request);
 /// A successful check's answer: success, the notes (skipped ellipses, why min_distance_of was not
 /// measured) as the message, the pairs, unavailable frames and the nearest partner.
 void toMsg(const app::CheckOutcome& outcome, CheckCollisions::Response& response);
+
+/// The path request's fields as the application layer takes them (poses' stamps in seconds); no
+/// validation (see app::validatePathRequest()). Empty frames are left empty.
+app::PathCheckRequest fromMsg(const CheckPath::Request& request);
+
+/// A successful path check's answer: success, the skipped ellipses as the message, the first
+/// contact, the minimum clearance and the unavailable frames.
+void toMsg(const app::PathCheckOutcome& outcome, CheckPath::Response& response);
+
+std::vector<PredictedContact> toMsg(const std::vector<core::PredictedContact>& predicted);
 
 }  // namespace ellipse_collision

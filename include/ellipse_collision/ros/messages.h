@@ -6,9 +6,11 @@
 // so the names never clash.
 #include <ellipse_collision/AddObstacles.h>
 #include <ellipse_collision/CheckCollisions.h>
+#include <ellipse_collision/CheckPath.h>
 #include <ellipse_collision/ClearancePair.h>
 #include <ellipse_collision/CollisionPair.h>
 #include <ellipse_collision/CollisionState.h>
 #include <ellipse_collision/Ellipse.h>
 #include <ellipse_collision/EllipseArray.h>
+#include <ellipse_collision/PredictedContact.h>
 #include <ellipse_collision/RemoveObstacles.h>

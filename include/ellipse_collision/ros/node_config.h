@@ -31,12 +31,19 @@ constexpr double kMaxRateHz = 1e3;         ///< [Hz]
 constexpr double kMaxTfTimeoutS = 3600.0;  ///< tf_timeout, max_transform_age, obstacle_timeout
                                            ///< within [0, kMaxTfTimeoutS] [s]
 
+/// prediction_horizon within [0, kMaxPredictionHorizonS] [s]: a minute ahead is far beyond what
+/// constant velocities predict well, and keeps |angular_velocity| * horizon within the core's turn
+/// limit for any turn rate a robot has.
+constexpr double kMaxPredictionHorizonS = 60.0;
+
 constexpr double kMaxObstaclesLimit = 1e7;   ///< max_obstacles within [1, kMaxObstaclesLimit]
 constexpr double kMaxNameLengthLimit = 1e6;  ///< max_name_length within [1, kMaxNameLengthLimit]
 
 /// The node's private parameters (see config/ellipse_collision.yaml for the documentation).
 struct NodeConfig {
   std::string fixed_frame{"base_link"};
+  std::string robot_frame{"base_link"};  ///< ~check_path's moving frame when the request has none
+  double prediction_horizon_s{0.0};      ///< time-to-contact prediction [s]; 0 = off
   double rate_hz{10.0};       ///< periodic checks [Hz]; 0 = only on service calls, else [1e-3, 1e3]
   double tf_timeout_s{0.1};   ///< how long a service call waits for a transform [s], [0, 3600]
   double padding_m{0.0};      ///< added to both radii of every ellipse [m], [0, kMaxRadius]
