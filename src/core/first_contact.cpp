@@ -11,6 +11,7 @@
 #include "ellipse_collision/core/eigenvalue_test.h"
 #include "ellipse_collision/core/number_format.h"
 #include "ellipse_collision/core/overlap.h"
+#include "conservative_advancement.h"
 
 namespace ellipse_collision::core {
 namespace {
@@ -35,26 +36,9 @@ constexpr int kMaxBisections = 80;
 // thin ones near tangency (the tests only claim 1e-9). Differences of g below 4x this are noise.
 constexpr double kScaleRounding = 2.5e-12;
 
-// ---- rotation ---------------------------------------------------------------------------------
-// Conservative advancement (Mirtich 1996; Zhang, Lee, Kim, Manocha 2006) on the exact distance.
-// Why it cannot step past a contact: by the support-function dual (distance.h)
-//   D(t) = max over unit u of  u . p(t) - h_a(u, t) - h_b(u, t)   (clipped at 0),
-// and for an ellipse of semi-axes R >= r turning at w, |dh/dt| = |w| |dh/dphi| <= |w| (R - r)
-// (the largest distance from the centre to a normal line of the ellipse is R - r), while
-// |d(u . p)/dt| <= |v_b - v_a|. A maximum of functions with that Lipschitz constant has it too, so
-//   |D'(t)| <= V = |v_b - v_a| + |w_a| (R_a - r_a) + |w_b| (R_b - r_b)
-// and no contact happens in [t, t + D(t) / V). (A spinning circle adds nothing: it sweeps no
-// area.) Stepping by slightly less than D / V therefore never passes the first contact. When D
-// drops below kGrazeDistance of r_a + r_b the contact scale is within kGrazeDistance of 1 (K
-// contains the disc of radius r_a + r_b, so t* <= 1 + D / (r_a + r_b)): inside the 1e-9 band
-// where either answer is accepted, and the pair is reported in contact at that certified-safe
-// time. The step count is capped (kMaxAdvancements); at the cap the pair is reported in contact at
-// the last certified-safe time, never clear. Near grazing the steps shrink with the distance (about
-// sqrt(size / gap) of them), so a rotating pair that passes within ~1e-8 relative of touching can
-// reach the cap and is then reported, conservatively, in contact.
-constexpr int kMaxAdvancements = 20000;  // ~40 ms of distance() calls at most (2 us each)
-constexpr double kGrazeDistance = 5e-10;
-constexpr double kStepShrink = 1.0 - 1e-9;
+// ---- rotation: conservative advancement (conservative_advancement.h) ----------------------
+// The translation case's first step is shrunk by the same factor.
+using detail::kStepShrink;
 
 // Everything in the frame of a's centre, so that centres 1e6 m out lose no precision.
 struct RelativePair {
@@ -171,26 +155,9 @@ FirstContact rotationContact(const RelativePair& p, double horizon) {
       std::hypot(p.w.x(), p.w.y()) + std::fabs(p.wa) * (boundingRadius(p.a) - inscribedRadius(p.a)) +
       std::fabs(p.wb) * (boundingRadius(p.b) - inscribedRadius(p.b));
   if (!(approach_speed > 0.0)) return {};
-  const double graze = kGrazeDistance * (inscribedRadius(p.a) + inscribedRadius(p.b));
-  double t = 0.0;
-  for (int i = 0; i < kMaxAdvancements; ++i) {
-    const Clearance c = distance(p.aAt(t), p.bAt(t));
-    if (!c.separated) return contactAt(t);
-    if (c.distance <= graze) return contactAt(t);  // within the band around tangency
-    // Shrunk a little against the ~1e-16 relative rounding of the distance and of t + step.
-    const double step = c.distance * kStepShrink / approach_speed;
-    const double next = t + step;
-    if (next > horizon) {
-      // [t, horizon] is certified clear unless the horizon itself touches: the last interval is
-      // shortened to end exactly at the horizon and checked there.
-      if (t == horizon) return {};
-      t = horizon;
-      continue;
-    }
-    if (!(next > t)) return contactAt(t);  // step below the resolution of t: certified safe here
-    t = next;
-  }
-  return contactAt(t);  // iteration cap: no contact before t is certified, claim contact at t
+  return detail::advanceConservatively(
+      [&p](double t) { return std::make_pair(p.aAt(t), p.bAt(t)); }, approach_speed,
+      inscribedRadius(p.a) + inscribedRadius(p.b), horizon);
 }
 
 // A total order on (ellipse, motion): the pair is always processed in this order, which makes

@@ -5,15 +5,12 @@
 
 #include "ellipse_collision/core/distance.h"
 #include "ellipse_collision/core/overlap.h"
+#include "conservative_advancement.h"
 
 namespace ellipse_collision::core {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-// As firstContact()'s rotation case (first_contact.cpp): step cap, grazing band, step shrink.
-constexpr int kMaxAdvancements = 20000;
-constexpr double kGrazeDistance = 5e-10;
-constexpr double kStepShrink = 1.0 - 1e-9;
 // Relative widening of swept boxes, as boundingCircleBox(): rounding never separates the boxes of
 // ellipses that touch.
 constexpr double kBoxWidening = 1e-12;
@@ -105,26 +102,15 @@ FirstContact segmentContact(const Ellipse& link_in_moving, const SegmentMotion& 
                       inscribedRadius(link_in_moving)) +
       std::fabs(obstacle_motion.angular_velocity) *
           (boundingRadius(obstacle) - inscribedRadius(obstacle));
-  const double graze =
-      kGrazeDistance * (inscribedRadius(link_in_moving) + inscribedRadius(obstacle));
-  const double horizon = motion.duration;
-  double t = 0.0;
-  for (int i = 0; i < kMaxAdvancements; ++i) {
-    const Ellipse link =
-        placeAt(link_in_moving, motion.start + motion.velocity * t, motion.start_yaw + w * t);
-    const Clearance c = distance(link, movedBy(obstacle, obstacle_motion, t));
-    if (!c.separated) return contactAt(t);
-    if (c.distance <= graze) return contactAt(t);
-    const double next = t + c.distance * kStepShrink / approach_speed;
-    if (next > horizon) {
-      if (t == horizon) return {};
-      t = horizon;
-      continue;
-    }
-    if (!(next > t)) return contactAt(t);
-    t = next;
-  }
-  return contactAt(t);  // iteration cap: certified clear before t, claimed in contact at t
+  // The link's centre moves on an arc about the frame's origin: its speed adds |w| |centre|.
+  return detail::advanceConservatively(
+      [&](double t) {
+        return std::make_pair(
+            placeAt(link_in_moving, motion.start + motion.velocity * t, motion.start_yaw + w * t),
+            movedBy(obstacle, obstacle_motion, t));
+      },
+      approach_speed, inscribedRadius(link_in_moving) + inscribedRadius(obstacle),
+      motion.duration);
 }
 
 }  // namespace ellipse_collision::core
