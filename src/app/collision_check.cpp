@@ -1,7 +1,6 @@
 #include "ellipse_collision/app/collision_check.h"
 
 #include <algorithm>
-#include <iterator>
 
 #include "ellipse_collision/app/scene_placement.h"
 #include "ellipse_collision/core/unique_names.h"
@@ -91,17 +90,11 @@ CheckOutcome runCheck(const CheckRequest& request, const EllipseRegistry& regist
 
   std::set<std::string> unavailable;
   std::set<std::string> stale;
-  // Queries and links before obstacles: core::checkScene() then reads the entries once.
-  std::vector<core::NamedEllipse> placed_obstacles;
   for (const auto& [name, stored] : registry.entries()) {
     const ScenePlacement::Placement placed = placement.place(stored.spec, stored.role());
     switch (placed.status) {
       case ScenePlacement::Status::Placed:
-        if (placed.ellipse.role == core::EllipseRole::Obstacle) {
-          placed_obstacles.push_back(placed.ellipse);
-        } else {
-          scene.push_back(placed.ellipse);
-        }
+        scene.push_back(placed.ellipse);
         outcome.placed.push_back(placed.ellipse);
         break;
       case ScenePlacement::Status::FrameUnavailable:
@@ -118,8 +111,6 @@ CheckOutcome runCheck(const CheckRequest& request, const EllipseRegistry& regist
         break;
     }
   }
-  scene.insert(scene.end(), std::make_move_iterator(placed_obstacles.begin()),
-               std::make_move_iterator(placed_obstacles.end()));
   outcome.unavailable_frames.assign(unavailable.begin(), unavailable.end());
   outcome.stale_frames.assign(stale.begin(), stale.end());
   outcome.complete = outcome.skipped.empty();

@@ -41,15 +41,11 @@ bool valuesOk(const Ellipse& e) {
          radiusOk(e.radius_y) & angleOk(e.angle);
 }
 
-bool warningDistanceOk(double warning_distance) {
-  return std::isfinite(warning_distance) && warning_distance >= 0.0;
-}
-
 /// The scene's rules, entry by entry; also collects the entries that are not obstacles into
 /// `movers`, when given, in the same pass.
 std::string validate(const std::vector<NamedEllipse>& ellipses, const SceneRules& rules,
                      NameCheck name_check, std::vector<const NamedEllipse*>* movers = nullptr) {
-  if (!warningDistanceOk(rules.warning_distance)) {
+  if (!std::isfinite(rules.warning_distance) || rules.warning_distance < 0.0) {
     return "warning_distance = " + formatNumber(rules.warning_distance) +
            " must be finite and >= 0";
   }
@@ -124,32 +120,16 @@ bool pairWanted(const NamedEllipse& a, const NamedEllipse& b, const SceneRules& 
   return only_names.empty() || only_names.count(a.name) != 0 || only_names.count(b.name) != 0;
 }
 
-namespace {
-
-/// checkScene() proper. With `movers_first`, the entries are expected to be laid out as
-/// runCheck() lays them out, every query and link before every obstacle, and to be valid: the
-/// movers are then the prefix, and the obstacles' values are checked as they stream through the
-/// grid, so the entries are read once (at 100,000 entries a pass over them costs as much as the
-/// geometry: memory traffic). Nothing (nullopt) if that expectation fails; the general way then
-/// validates everything first, reports the first invalid entry, and finds the movers anywhere.
-std::optional<SceneCheckResult> checkSceneOnce(const std::vector<NamedEllipse>& ellipses,
-                                               const SceneRules& rules,
-                                               const std::set<std::string>& only_names,
-                                               NameCheck name_check, bool movers_first) {
+SceneCheckResult checkScene(const std::vector<NamedEllipse>& ellipses, const SceneRules& rules,
+                            const std::set<std::string>& only_names, NameCheck name_check) {
   SceneCheckResult result;
   // Every pair involves a query or a link (obstacle-obstacle is never checked): grid those few
-  // "movers", prepared once, and stream the obstacles through the grid.
+  // "movers", prepared once, and stream the obstacles through the grid. Collecting them shares
+  // the validation's pass over the entries: at 100,000 entries each pass over them costs as much
+  // as the geometry (memory traffic).
   std::vector<const NamedEllipse*> movers;
-  std::size_t stream_from = 0;
-  if (movers_first) {
-    while (stream_from < ellipses.size() && ellipses[stream_from].role != EllipseRole::Obstacle) {
-      if (!valuesOk(ellipses[stream_from].ellipse)) return std::nullopt;
-      movers.push_back(&ellipses[stream_from++]);
-    }
-  } else {
-    result.error = validate(ellipses, rules, name_check, &movers);
-    if (!result.error.empty()) return result;
-  }
+  result.error = validate(ellipses, rules, name_check, &movers);
+  if (!result.error.empty()) return result;
   const double warning_distance = rules.warning_distance;
   std::vector<PreparedEllipse> prepared_movers;
   std::vector<BoundingBox> mover_boxes;
@@ -192,15 +172,8 @@ std::optional<SceneCheckResult> checkSceneOnce(const std::vector<NamedEllipse>& 
   // Movers against obstacles: a mover (query or link) always comes first in a pair with an
   // obstacle. The obstacle's box needs no trigonometry, and it is prepared only if needed.
   std::vector<std::size_t> found;
-  for (std::size_t index = stream_from; index < ellipses.size(); ++index) {
-    const NamedEllipse& obstacle = ellipses[index];
-    if (movers_first) {
-      if (!((obstacle.role == EllipseRole::Obstacle) & valuesOk(obstacle.ellipse))) {
-        return std::nullopt;
-      }
-    } else if (obstacle.role != EllipseRole::Obstacle) {
-      continue;
-    }
+  for (const NamedEllipse& obstacle : ellipses) {
+    if (obstacle.role != EllipseRole::Obstacle) continue;
     grid.overlapping(boundingCircleBox(obstacle.ellipse), &found);
     std::optional<PreparedEllipse> prepared_obstacle;
     for (const std::size_t i : found) {
@@ -232,18 +205,6 @@ std::optional<SceneCheckResult> checkSceneOnce(const std::vector<NamedEllipse>& 
     result.warnings.push_back(nearPair(*pair.first, *pair.second, pair.clearance));
   }
   return result;
-}
-
-}  // namespace
-
-SceneCheckResult checkScene(const std::vector<NamedEllipse>& ellipses, const SceneRules& rules,
-                            const std::set<std::string>& only_names, NameCheck name_check) {
-  if (name_check == NameCheck::KnownDistinct && warningDistanceOk(rules.warning_distance)) {
-    if (auto result = checkSceneOnce(ellipses, rules, only_names, name_check, true)) {
-      return std::move(*result);
-    }
-  }
-  return *checkSceneOnce(ellipses, rules, only_names, name_check, false);
 }
 
 NearestResult nearestTo(const std::vector<NamedEllipse>& ellipses, const SceneRules& rules,
