@@ -9,11 +9,9 @@
 //   grid_tight_boxes   the same with tight boxes (one sincos each) for the obstacles too
 //   grid_prepared      every ellipse prepared, tight boxes, prepared overlap()
 //   sort_and_sweep     the alternative broadphase: both sets sorted on min x and swept
-//   checkScene         the core's checkScene() on the named scene: checks the names and values,
-//                      grids the links, streams the obstacles, sorts the answer
+//   checkScene         the core's checkScene() on the named scene, as the node calls it: checks the
+//                      names, grids the links, streams the obstacles, sorts the answer
 //   checkScene_warn    the same with a warning distance of 0.1 m (warning pairs via distance())
-//   *_known_names      the same with NameCheck::KnownDistinct, as the node calls it: names checked
-//                      once when the set was built, not hashed every cycle
 // Counters: pair_tests = overlap() calls per cycle, collisions = colliding pairs per cycle.
 
 #include <benchmark/benchmark.h>
@@ -225,30 +223,19 @@ int main(int argc, char** argv) {
 
     static std::map<int, std::vector<NamedEllipse>> named_scenes;
     const std::vector<NamedEllipse>& named = named_scenes[obstacles] = namedScene(scene);
-    struct Variant {
-      const char* name;
-      double warning_distance;
-      NameCheck names;
-    };
-    for (const Variant& variant :
-         {Variant{"checkScene", 0.0, NameCheck::Verify},
-          Variant{"checkScene_known_names", 0.0, NameCheck::KnownDistinct},
-          Variant{"checkScene_warn", 0.1, NameCheck::Verify},
-          Variant{"checkScene_warn_known_names", 0.1, NameCheck::KnownDistinct}}) {
-      const char* name = variant.name;
-      const NameCheck names = variant.names;
+    for (const auto& [name, warning_distance] :
+         {std::make_pair("checkScene", 0.0), std::make_pair("checkScene_warn", 0.1)}) {
       SceneRules rules;  // self collision on, as in the other methods
-      rules.warning_distance = variant.warning_distance;
-      const SceneCheckResult check = checkScene(named, rules, {}, names);
+      rules.warning_distance = warning_distance;
+      const SceneCheckResult check = checkScene(named, rules);
       if (!check.ok() || static_cast<long>(check.collisions.size()) != collisions) {
         std::fprintf(stderr, "%s finds %zu collisions with %d obstacles, brute force %ld %s\n",
                      name, check.collisions.size(), obstacles, collisions, check.error.c_str());
         return 1;
       }
       const std::string label = std::string("scene/") + name + "/" + std::to_string(obstacles);
-      benchmark::RegisterBenchmark(label.c_str(), [&named, rules, names,
-                                                   check](benchmark::State& state) {
-        for (auto _ : state) benchmark::DoNotOptimize(checkScene(named, rules, {}, names));
+      benchmark::RegisterBenchmark(label.c_str(), [&named, rules, check](benchmark::State& state) {
+        for (auto _ : state) benchmark::DoNotOptimize(checkScene(named, rules));
         state.counters["pair_tests"] = static_cast<double>(check.pair_tests);
         state.counters["collisions"] = static_cast<double>(check.collisions.size());
         state.counters["warnings"] = static_cast<double>(check.warnings.size());

@@ -116,11 +116,7 @@ CheckOutcome runCheck(const CheckRequest& request, const EllipseRegistry& regist
   outcome.complete = outcome.skipped.empty();
 
   const std::set<std::string> only_names(request.names.begin(), request.names.end());
-  // The names are distinct by construction: the registry refuses duplicates on insertion and
-  // validateCheckRequest() query names that repeat or name a stored ellipse. Hashing them again
-  // every cycle would cost more than the geometry.
-  core::SceneCheckResult result =
-      core::checkScene(scene, settings.rules, only_names, core::NameCheck::KnownDistinct);
+  core::SceneCheckResult result = core::checkScene(scene, settings.rules, only_names);
   if (!result.ok()) {
     // Requests are validated before they get here, so this is a bug: say so.
     outcome.error = "internal error: " + result.error;

@@ -35,47 +35,22 @@ double distanceLowerBound(const Ellipse& a, const Ellipse& b) {
 // obstacle's own size is covered by the margin of its boundingCircleBox().
 constexpr double kPadMargin = 1e-6;
 
-/// All fields within their rules: the cheap predicates of ellipse.h, no text unless one fails.
-bool valuesOk(const Ellipse& e) {
-  return coordinateOk(e.center.x()) & coordinateOk(e.center.y()) & radiusOk(e.radius_x) &
-         radiusOk(e.radius_y) & angleOk(e.angle);
-}
-
-/// The scene's rules, entry by entry; also collects the entries that are not obstacles into
-/// `movers`, when given, in the same pass.
-std::string validate(const std::vector<NamedEllipse>& ellipses, const SceneRules& rules,
-                     NameCheck name_check, std::vector<const NamedEllipse*>* movers = nullptr) {
+std::string validate(const std::vector<NamedEllipse>& ellipses, const SceneRules& rules) {
   if (!std::isfinite(rules.warning_distance) || rules.warning_distance < 0.0) {
     return "warning_distance = " + formatNumber(rules.warning_distance) +
            " must be finite and >= 0";
   }
-  if (name_check == NameCheck::KnownDistinct) {
-    // The hot path of a node's every cycle: no name is touched, no branch per entry but the role.
-    bool values_ok = true;
-    for (const NamedEllipse& entry : ellipses) {
-      values_ok &= valuesOk(entry.ellipse);
-      if (movers && entry.role != EllipseRole::Obstacle) movers->push_back(&entry);
-    }
-    if (values_ok) return {};
-  }
   // One pass, entry by entry as a reader checks them (a second pass over 100,000 entries costs
-  // as much as the pair tests); the set of names is the one findNameProblem() uses. Also the way
-  // to the first invalid entry when KnownDistinct found one.
-  const bool verify_names = name_check == NameCheck::Verify;
-  detail::NameSet names(verify_names ? ellipses.size() : 0);
-  if (movers) movers->clear();
+  // as much as the pair tests); the set of names is the one findNameProblem() uses.
+  detail::NameSet names(ellipses.size());
   for (std::size_t i = 0; i < ellipses.size(); ++i) {
     const NamedEllipse& entry = ellipses[i];
     // Built only for an error: per entry it would cost more than the whole check.
     const auto where = [i] { return "ellipses[" + std::to_string(i) + "]"; };
-    if (verify_names) {
-      if (entry.name.empty()) return where() + ".name is empty";
-      if (!names.insert(entry.name)) return where() + ".name = '" + entry.name + "' is a duplicate";
-    }
-    if (!valuesOk(entry.ellipse)) {
-      return where() + " ('" + entry.name + "'): " + invalidReason(entry.ellipse);
-    }
-    if (movers && entry.role != EllipseRole::Obstacle) movers->push_back(&entry);
+    if (entry.name.empty()) return where() + ".name is empty";
+    if (!names.insert(entry.name)) return where() + ".name = '" + entry.name + "' is a duplicate";
+    const std::string invalid = invalidReason(entry.ellipse);
+    if (!invalid.empty()) return where() + " ('" + entry.name + "'): " + invalid;
   }
   return {};
 }
@@ -121,22 +96,21 @@ bool pairWanted(const NamedEllipse& a, const NamedEllipse& b, const SceneRules& 
 }
 
 SceneCheckResult checkScene(const std::vector<NamedEllipse>& ellipses, const SceneRules& rules,
-                            const std::set<std::string>& only_names, NameCheck name_check) {
+                            const std::set<std::string>& only_names) {
   SceneCheckResult result;
-  // Every pair involves a query or a link (obstacle-obstacle is never checked): grid those few
-  // "movers", prepared once, and stream the obstacles through the grid. Collecting them shares
-  // the validation's pass over the entries: at 100,000 entries each pass over them costs as much
-  // as the geometry (memory traffic).
-  std::vector<const NamedEllipse*> movers;
-  result.error = validate(ellipses, rules, name_check, &movers);
+  result.error = validate(ellipses, rules);
   if (!result.error.empty()) return result;
   const double warning_distance = rules.warning_distance;
+
+  // Every pair involves a query or a link (obstacle-obstacle is never checked): grid those few
+  // "movers", prepared once, and stream the obstacles through the grid.
+  std::vector<const NamedEllipse*> movers;
   std::vector<PreparedEllipse> prepared_movers;
   std::vector<BoundingBox> mover_boxes;
-  prepared_movers.reserve(movers.size());
-  mover_boxes.reserve(movers.size());
-  for (const NamedEllipse* entry : movers) {
-    prepared_movers.emplace_back(entry->ellipse);
+  for (const NamedEllipse& entry : ellipses) {
+    if (entry.role == EllipseRole::Obstacle) continue;
+    movers.push_back(&entry);
+    prepared_movers.emplace_back(entry.ellipse);
     mover_boxes.push_back(candidateBox(prepared_movers.back(), warning_distance));
   }
   const BoxGrid grid(std::move(mover_boxes));
@@ -210,7 +184,7 @@ SceneCheckResult checkScene(const std::vector<NamedEllipse>& ellipses, const Sce
 NearestResult nearestTo(const std::vector<NamedEllipse>& ellipses, const SceneRules& rules,
                         const std::string& name) {
   NearestResult result;
-  result.error = validate(ellipses, rules, NameCheck::Verify);
+  result.error = validate(ellipses, rules);
   if (!result.error.empty()) return result;
   const auto target = std::find_if(ellipses.begin(), ellipses.end(),
                                    [&name](const NamedEllipse& e) { return e.name == name; });

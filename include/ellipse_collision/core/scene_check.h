@@ -83,18 +83,6 @@ struct SceneCheckResult {
 bool pairWanted(const NamedEllipse& a, const NamedEllipse& b, const SceneRules& rules,
                 const std::set<std::string>& only_names);
 
-/// How checkScene() treats the names of its entries.
-enum class NameCheck {
-  /// Refuse an empty or duplicate name: every name is hashed, per call (for 100,000 entries
-  /// several times the cost of the geometry).
-  Verify,
-  /// The caller guarantees non-empty distinct names, e.g. because the set was checked once when
-  /// it was built (the application layer's EllipseRegistry refuses both on insertion, and
-  /// validateCheckRequest() the query names). Names are then read only for the pairs found. With
-  /// a duplicate name the answer would be undefined, so only a checked set may claim this.
-  KnownDistinct,
-};
-
 /// Checks every wanted pair of `ellipses` with overlap() and reports the colliding ones with their
 /// contactScale(). With rules.warning_distance > 0 it also reports the wanted pairs that are
 /// separated but closer than that, with their distance() and witness points: a pair whose centres
@@ -105,11 +93,10 @@ enum class NameCheck {
 /// streamed through, so the time grows linearly with the obstacles; the answer is bit for bit that
 /// of testing every pair.
 /// The result depends only on the set of ellipses, not on their order. Refused with an error
-/// naming the entry: an empty or duplicate name (with NameCheck::Verify), or an invalid ellipse;
-/// or a warning distance that is negative or not finite.
+/// naming the entry: an empty or duplicate name, or an invalid ellipse; or a warning distance that
+/// is negative or not finite.
 SceneCheckResult checkScene(const std::vector<NamedEllipse>& ellipses, const SceneRules& rules,
-                            const std::set<std::string>& only_names = {},
-                            NameCheck name_check = NameCheck::Verify);
+                            const std::set<std::string>& only_names = {});
 
 /// The answer of nearestTo(): the nearest partner of one ellipse, or why there is none.
 struct NearestResult {
