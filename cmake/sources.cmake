@@ -31,4 +31,5 @@ set(ELLIPSE_COLLISION_APP_SOURCES
   src/app/obstacle_store.cpp
   src/app/scan_obstacles.cpp
   src/app/scene_placement.cpp
+  src/app/placement_cache.cpp
   src/app/transform_lookup.cpp)

@@ -113,12 +113,15 @@ bool pairWanted(const NamedEllipse& a, const NamedEllipse& b, const SceneRules& 
 
 namespace {
 
-/// checkScene() (`check_names`) and checkSceneOfUniqueNames(). Each entry is validated in the
-/// pass that collects the movers, in index order as before, so the scene is read twice, not three
-/// times (at 100,000 obstacles reading it costs as much as the pair tests).
+/// checkScene() (`check_names`) and checkSceneOfUniqueNames(). Every entry is validated once, in
+/// index order, so the first problem reported is the same whichever way the scene is read.
+/// With `movers_first` it tries to read the scene once: the leading queries and links are
+/// gridded, then every later entry is validated and streamed in the same pass (at 100,000
+/// obstacles reading the scene costs as much as the pair tests). A query or link after an
+/// obstacle sends it back to the start in two passes: movers first, then obstacles.
 SceneCheckResult checkSceneWith(const std::vector<NamedEllipse>& ellipses,
-                                const SceneRules& rules,
-                                const std::set<std::string>& only_names, bool check_names) {
+                                const SceneRules& rules, const std::set<std::string>& only_names,
+                                bool check_names, bool movers_first) {
   SceneCheckResult result;
   result.error = warningDistanceProblem(rules);
   if (!result.error.empty()) return result;
@@ -130,8 +133,13 @@ SceneCheckResult checkSceneWith(const std::vector<NamedEllipse>& ellipses,
   std::vector<PreparedEllipse> prepared_movers;
   std::vector<BoundingBox> mover_boxes;
   detail::NameSet names(check_names ? ellipses.size() : 0);
+  std::size_t stream_from = movers_first ? ellipses.size() : 0;
   for (std::size_t i = 0; i < ellipses.size(); ++i) {
     const NamedEllipse& entry = ellipses[i];
+    if (movers_first && entry.role == EllipseRole::Obstacle) {
+      stream_from = i;  // validated as it streams
+      break;
+    }
     result.error = entryProblem(i, entry, check_names ? &names : nullptr);
     if (!result.error.empty()) return result;
     if (entry.role == EllipseRole::Obstacle) continue;
@@ -172,7 +180,15 @@ SceneCheckResult checkSceneWith(const std::vector<NamedEllipse>& ellipses,
   // Movers against obstacles: a mover (query or link) always comes first in a pair with an
   // obstacle. The obstacle's box needs no trigonometry, and it is prepared only if needed.
   std::vector<std::size_t> found;
-  for (const NamedEllipse& obstacle : ellipses) {
+  for (std::size_t k = stream_from; k < ellipses.size(); ++k) {
+    const NamedEllipse& obstacle = ellipses[k];
+    if (movers_first) {
+      if (obstacle.role != EllipseRole::Obstacle) {
+        return checkSceneWith(ellipses, rules, only_names, check_names, /*movers_first=*/false);
+      }
+      result.error = entryProblem(k, obstacle, check_names ? &names : nullptr);
+      if (!result.error.empty()) return SceneCheckResult{{}, {}, result.error, 0};
+    }
     if (obstacle.role != EllipseRole::Obstacle) continue;
     grid.overlapping(boundingCircleBox(obstacle.ellipse), &found);
     std::optional<PreparedEllipse> prepared_obstacle;
@@ -211,13 +227,14 @@ SceneCheckResult checkSceneWith(const std::vector<NamedEllipse>& ellipses,
 
 SceneCheckResult checkScene(const std::vector<NamedEllipse>& ellipses, const SceneRules& rules,
                             const std::set<std::string>& only_names) {
-  return checkSceneWith(ellipses, rules, only_names, /*check_names=*/true);
+  return checkSceneWith(ellipses, rules, only_names, /*check_names=*/true, /*movers_first=*/true);
 }
 
 SceneCheckResult checkSceneOfUniqueNames(const std::vector<NamedEllipse>& ellipses,
                                          const SceneRules& rules,
                                          const std::set<std::string>& only_names) {
-  return checkSceneWith(ellipses, rules, only_names, /*check_names=*/false);
+  return checkSceneWith(ellipses, rules, only_names, /*check_names=*/false,
+                        /*movers_first=*/true);
 }
 
 NearestResult nearestTo(const std::vector<NamedEllipse>& ellipses, const SceneRules& rules,

@@ -93,7 +93,8 @@ bool pairWanted(const NamedEllipse& a, const NamedEllipse& b, const SceneRules& 
 /// tight boxes, grown by the warning distance, which each obstacle's bounding-circle box is
 /// streamed through, so the time grows linearly with the obstacles; the answer is bit for bit that
 /// of testing every pair.
-/// The result depends only on the set of ellipses, not on their order. Refused with an error
+/// The result depends only on the set of ellipses, not on their order; the time is least with the
+/// queries and links before the obstacles (the scene is then read once, not twice). Refused with an error
 /// naming the entry: an empty or duplicate name, or an invalid ellipse; or a warning distance that
 /// is negative or not finite.
 SceneCheckResult checkScene(const std::vector<NamedEllipse>& ellipses, const SceneRules& rules,
