@@ -8,7 +8,8 @@
 # Last, the service round trip (issue 7): a roscore of its own on a free port, the node with
 # bench/service_roundtrip.yaml, and bench_service_roundtrip calling ~check_collisions 10,000 times
 # with 100 and 1,000 ellipses stored (p50/p99 latency, calls per second, wall time). Both are
-# stopped at the end, on failure and on Ctrl-C.
+# stopped at the end, on failure and on Ctrl-C. Then the node as a user runs it
+# (scripts/node_load.sh): 20 moving links, N obstacles, a ~markers subscriber; CPU % and RSS.
 #
 #   scripts/benchmark.sh                 full run (a few minutes)
 #   scripts/benchmark.sh --smoke         every benchmark once, briefly, on few pairs, 200 service
@@ -133,4 +134,17 @@ if ! "${bin}/bench_service_roundtrip" --calls "${roundtrip_calls}" --sizes 100,1
   tail -n 20 "${out}/node.txt" >&2
   echo "bench_service_roundtrip failed" >&2
   exit 1
+fi
+stop_ros
+
+# ---- the node as a user runs it (issue 16) -------------------------------------------------------
+# 20 links on tf frames moving at 30 Hz, N obstacles in `map`, warnings on, a ~markers subscriber:
+# the node's CPU (% of one core) and RSS, by scripts/node_load.sh (roscore and node of its own).
+echo
+echo "Running the node under load (scripts/node_load.sh; goals: 10000@30 Hz < 10 % of a core and"
+echo "RSS < 100 MB, 100000@10 Hz < 50 %)"
+if "${smoke}"; then
+  bash "${repo}/scripts/node_load.sh" --smoke
+else
+  bash "${repo}/scripts/node_load.sh"
 fi
