@@ -70,7 +70,10 @@ for run in ${runs}; do
     done
   } > "${out}/config.yaml"
   rosparam load "${out}/config.yaml" /ellipse_collision
-  "${node}" __name:=ellipse_collision > "${out}/node.txt" 2>&1 &
+  # The libraries of the node's own build (another worktree's node would otherwise load this
+  # build's libraries through the devel space's LD_LIBRARY_PATH).
+  LD_LIBRARY_PATH="$(dirname "$(dirname "${node}")"):${LD_LIBRARY_PATH:-}" \
+    "${node}" __name:=ellipse_collision > "${out}/node.txt" 2>&1 &
   node_pid=$!
   pids+=("${node_pid}")
   if ! /usr/bin/python3 "${repo}/bench/node_load.py" --node /ellipse_collision --pid "${node_pid}" \
