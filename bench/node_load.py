@@ -8,6 +8,7 @@ over a window after a warm-up, and prints one line:
 
 Usage (roscore and the node running, the node's ~links on frames link_0..link_19 in `map`):
   node_load.py --node /ellipse_collision --pid PID --obstacles N [--seconds 20] [--warmup 3]
+               [--no-markers]
 """
 import argparse
 import math
@@ -75,6 +76,8 @@ def main():
     parser.add_argument("--obstacles", type=int, required=True)
     parser.add_argument("--seconds", type=float, default=20.0)
     parser.add_argument("--warmup", type=float, default=3.0)
+    parser.add_argument("--no-markers", action="store_true",
+                        help="no ~markers subscriber: the node's own cycle without marker output")
     args = parser.parse_args(rospy.myargv()[1:])
     rospy.init_node("node_load", anonymous=True)
 
@@ -99,9 +102,10 @@ def main():
             sys.exit(f"~add_obstacles refused: {answer.message}")
 
     counts = {"markers": 0, "checks": 0}
-    rospy.Subscriber(args.node + "/markers", MarkerArray,
-                     lambda _: counts.__setitem__("markers", counts["markers"] + 1),
-                     queue_size=1, buff_size=2 ** 26)
+    if not args.no_markers:
+        rospy.Subscriber(args.node + "/markers", MarkerArray,
+                         lambda _: counts.__setitem__("markers", counts["markers"] + 1),
+                         queue_size=1, buff_size=2 ** 26)
     rospy.Subscriber(args.node + "/collisions", CollisionState,
                      lambda _: counts.__setitem__("checks", counts["checks"] + 1), queue_size=1)
     time.sleep(args.warmup)

@@ -5,6 +5,7 @@
 # node's CPU (% of one core) and RSS over the window, and stops both. Prints one line per run.
 #
 #   scripts/node_load.sh [--smoke] [--node PATH] [--seconds S] [--runs "N@HZ N@HZ ..."]
+#                        [--no-markers]   (the check cycle alone, without a ~markers subscriber)
 #
 # Default runs: 200@30 2000@30 10000@30 100000@10 over 20 s each (goals: 10000@30 under 10 % of
 # a core and RSS under 100 MB, 100000@10 under 50 %). --smoke: 200@30 for 3 s (for CI).
@@ -15,13 +16,16 @@ repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 node="${repo}/build/ws/devel/lib/ellipse_collision/ellipse_collision_node"
 seconds=20
 runs="200@30 2000@30 10000@30 100000@10"
+markers=()
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --smoke) seconds=3; runs="200@30" ;;
     --node) node="$2"; shift ;;
     --seconds) seconds="$2"; shift ;;
     --runs) runs="$2"; shift ;;
-    *) echo "usage: $0 [--smoke] [--node PATH] [--seconds S] [--runs \"N@HZ ...\"]" >&2; exit 2 ;;
+    --no-markers) markers=(--no-markers) ;;
+    *) echo "usage: $0 [--smoke] [--node PATH] [--seconds S] [--runs \"N@HZ ...\"] [--no-markers]" >&2
+       exit 2 ;;
   esac
   shift
 done
@@ -77,7 +81,7 @@ for run in ${runs}; do
   node_pid=$!
   pids+=("${node_pid}")
   if ! /usr/bin/python3 "${repo}/bench/node_load.py" --node /ellipse_collision --pid "${node_pid}" \
-      --obstacles "${obstacles}" --seconds "${seconds}" 2> "${out}/node_load_err.txt" \
+      --obstacles "${obstacles}" --seconds "${seconds}" "${markers[@]}" 2> "${out}/node_load_err.txt" \
       | sed "s/^/rate=${rate} /"; then
     cat "${out}/node_load_err.txt" >&2
     tail -n 20 "${out}/node.txt" >&2
