@@ -10,7 +10,12 @@
 // finds a few collisions and warnings; they are removed again before the next size. Each call asks
 // for the whole scene (no names, query or stamp) through a persistent connection, as a client
 // calling at a high rate would; a second, shorter series opens a new connection per call.
+// The ROS floor (issue 16): with --trigger NAME the same number of calls, over a persistent
+// connection, to an empty std_srvs/Trigger service (this program with --serve-trigger NAME, in a
+// process of its own), in alternating blocks with the ~check_collisions calls so that both share
+// the machine's noise; the p50 ratio is printed.
 #include <ros/ros.h>
+#include <std_srvs/Trigger.h>
 
 #include <algorithm>
 #include <chrono>
@@ -31,6 +36,8 @@ struct Options {
   int calls{10000};
   std::vector<int> sizes{100, 1000};
   std::string node{"/ellipse_collision"};
+  std::string trigger;        ///< the floor service to compare against, if not empty
+  std::string serve_trigger;  ///< serve an empty Trigger service under this name instead
 };
 
 bool parseOptions(int argc, char** argv, Options* options) {
@@ -39,6 +46,10 @@ bool parseOptions(int argc, char** argv, Options* options) {
     const std::string value = argv[i + 1];
     if (key == "--calls") {
       options->calls = std::atoi(value.c_str());
+    } else if (key == "--trigger") {
+      options->trigger = value;
+    } else if (key == "--serve-trigger") {
+      options->serve_trigger = value;
     } else if (key == "--node") {
       options->node = value;
     } else if (key == "--sizes") {
@@ -72,6 +83,23 @@ double percentile(std::vector<double> values, double fraction) {
 /// `calls` calls through `client`; false (with a message) on the first failed call, unless
 /// `tolerate_failures`: a new connection per call now and then fails to connect (seen once or
 /// twice per thousand on a loaded machine), which is counted and reported instead.
+bool runTriggerSeries(ros::ServiceClient* client, int calls, Series* series) {
+  std_srvs::Trigger trigger;
+  const auto start = std::chrono::steady_clock::now();
+  for (int i = 0; i < calls; ++i) {
+    const auto before = std::chrono::steady_clock::now();
+    if (!ros::ok() || !client->call(trigger)) {
+      std::fprintf(stderr, "Trigger call %d failed\n", i);
+      return false;
+    }
+    series->latencies_us.push_back(std::chrono::duration<double, std::micro>(
+                                       std::chrono::steady_clock::now() - before)
+                                       .count());
+  }
+  series->wall_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return true;
+}
+
 bool runSeries(ros::ServiceClient* client, int calls, bool tolerate_failures, Series* series) {
   CheckCollisions check;  // the whole scene, latest transforms
   series->latencies_us.reserve(static_cast<std::size_t>(calls));
@@ -134,7 +162,9 @@ int run(const Options& options) {
   const std::string check_name = options.node + "/check_collisions";
   const std::string add_name = options.node + "/add_obstacles";
   const std::string remove_name = options.node + "/remove_obstacles";
-  for (const std::string& name : {check_name, add_name, remove_name}) {
+  std::vector<std::string> services{check_name, add_name, remove_name};
+  if (!options.trigger.empty()) services.push_back(options.trigger);
+  for (const std::string& name : services) {
     if (!ros::service::waitForService(name, ros::Duration(30.0))) {
       std::fprintf(stderr, "service %s not available\n", name.c_str());
       return 1;
@@ -163,9 +193,37 @@ int run(const Options& options) {
     }
     ros::ServiceClient persistent = nh.serviceClient<CheckCollisions>(check_name, true);
     Series warm_up, kept, fresh;
-    ok = runSeries(&persistent, std::min(options.calls, 100), false, &warm_up) &&
-         runSeries(&persistent, options.calls, false, &kept);
-    if (ok) print("persistent", stored, kept);
+    ok = runSeries(&persistent, std::min(options.calls, 100), false, &warm_up);
+    if (ok && !options.trigger.empty()) {
+      // Alternating blocks of ten: the check and the floor share the machine's noise.
+      ros::ServiceClient floor = nh.serviceClient<std_srvs::Trigger>(options.trigger, true);
+      Series floor_series, floor_warm_up;
+      ok = runTriggerSeries(&floor, std::min(options.calls, 100), &floor_warm_up);
+      double check_wall_s = 0.0;
+      for (int done = 0; ok && done < options.calls; done += 10) {
+        const int block = std::min(10, options.calls - done);
+        Series part;
+        ok = runSeries(&persistent, block, false, &part) &&
+             runTriggerSeries(&floor, block, &floor_series);
+        kept.latencies_us.insert(kept.latencies_us.end(), part.latencies_us.begin(),
+                                 part.latencies_us.end());
+        check_wall_s += part.wall_s;
+        kept.collisions = part.collisions;
+        kept.warnings = part.warnings;
+      }
+      kept.wall_s = check_wall_s;
+      if (ok) {
+        print("persistent", stored, kept);
+        floor_series.collisions = floor_series.warnings = 0;
+        print("Trigger", 0, floor_series);
+        std::printf("%8d p50 ratio ~check_collisions / empty Trigger: %.2f (goal <= 1.5)\n",
+                    stored,
+                    percentile(kept.latencies_us, 0.5) / percentile(floor_series.latencies_us, 0.5));
+      }
+    } else {
+      ok = ok && runSeries(&persistent, options.calls, false, &kept);
+      if (ok) print("persistent", stored, kept);
+    }
     ros::ServiceClient per_call = nh.serviceClient<CheckCollisions>(check_name, false);
     ok = ok && runSeries(&per_call, std::max(1, options.calls / 10), true, &fresh) &&
          !fresh.latencies_us.empty();
@@ -185,15 +243,32 @@ int run(const Options& options) {
 }
 
 }  // namespace
+
+/// The floor's whole work: say yes.
+bool answerTrigger(std_srvs::Trigger::Request& /*request*/, std_srvs::Trigger::Response& response) {
+  response.success = true;
+  return true;
+}
+
 }  // namespace ellipse_collision
 
 int main(int argc, char** argv) {
   ros::init(argc, argv, "bench_service_roundtrip", ros::init_options::AnonymousName);
   ellipse_collision::Options options;
   if (!ellipse_collision::parseOptions(argc, argv, &options)) {
-    std::fprintf(stderr, "usage: %s [--calls N] [--sizes 100,1000] [--node /ellipse_collision]\n",
+    std::fprintf(stderr,
+                 "usage: %s [--calls N] [--sizes 100,1000] [--node /ellipse_collision] "
+                 "[--trigger /floor] | --serve-trigger /floor\n",
                  argv[0]);
     return 2;
+  }
+  if (!options.serve_trigger.empty()) {
+    // The ROS floor: a service that does nothing, answered by roscpp alone.
+    ros::NodeHandle nh;
+    const ros::ServiceServer server =
+        nh.advertiseService(options.serve_trigger, ellipse_collision::answerTrigger);
+    ros::spin();
+    return 0;
   }
   return ellipse_collision::run(options);
 }

@@ -77,9 +77,11 @@ def scene_table(runs):
     sizes = sorted({n for _, n in rows})
     methods = ordered({method for method, _ in rows},
                       ["brute_force", "grid_streamed", "grid_batch", "grid_tight_boxes",
-                       "grid_prepared", "sort_and_sweep", "checkScene", "checkScene_warn"])
+                       "grid_prepared", "sort_and_sweep", "checkScene", "checkScene_unique_names",
+                       "checkScene_warn"])
     print("Scene checks: 50 links vs N obstacles, plus link-link pairs, per cycle on one core")
-    header = (f"{'obstacles':>9} {'method':<17} {'us/cycle':>10} {'pair tests':>11} "
+    # x bare: time over grid_streamed (the bare broadphase + overlap(), same pairs) at the same N.
+    header = (f"{'obstacles':>9} {'method':<23} {'us/cycle':>10} {'x bare':>7} {'pair tests':>11} "
               f"{'collisions':>10} {'growth vs N/10':>15}")
     print(header)
     print("-" * len(header))
@@ -91,7 +93,9 @@ def scene_table(runs):
             us = to_microseconds(entry)
             previous = rows.get((method, n // 10))
             growth = f"{us / to_microseconds(previous):.1f}x" if previous else ""
-            print(f"{n:>9} {method:<17} {us:>10.1f} {int(entry['pair_tests']):>11} "
+            bare = rows.get(("grid_streamed", n))
+            versus = f"{us / to_microseconds(bare):.2f}" if bare else "-"
+            print(f"{n:>9} {method:<23} {us:>10.1f} {versus:>7} {int(entry['pair_tests']):>11} "
                   f"{int(entry['collisions']):>10} {growth:>15}")
 
 

@@ -37,4 +37,5 @@ set(ELLIPSE_COLLISION_APP_SOURCES
   src/app/path_request.cpp
   src/app/scan_obstacles.cpp
   src/app/scene_placement.cpp
+  src/app/placement_cache.cpp
   src/app/transform_lookup.cpp)

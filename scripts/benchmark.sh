@@ -8,8 +8,10 @@
 # interleaved at random, so that the methods share the machine's noise within one run.
 # Last, the service round trip (issue 7): a roscore of its own on a free port, the node with
 # bench/service_roundtrip.yaml, and bench_service_roundtrip calling ~check_collisions 10,000 times
-# with 100 and 1,000 ellipses stored (p50/p99 latency, calls per second, wall time). Both are
-# stopped at the end, on failure and on Ctrl-C.
+# with 100 and 1,000 ellipses stored (p50/p99 latency, calls per second, wall time), in alternating
+# blocks with an empty std_srvs/Trigger service (the ROS floor; p50 ratio, goal <= 1.5). Both are
+# stopped at the end, on failure and on Ctrl-C. Then the node as a user runs it
+# (scripts/node_load.sh): 20 moving links, N obstacles, a ~markers subscriber; CPU % and RSS.
 #
 #   scripts/benchmark.sh                 full run (a few minutes)
 #   scripts/benchmark.sh --smoke         every benchmark once, briefly, on few pairs, 200 service
@@ -137,9 +139,26 @@ fi
 rosparam load "${repo}/bench/service_roundtrip.yaml" /ellipse_collision
 "${bin}/ellipse_collision_node" __name:=ellipse_collision > "${out}/node.txt" 2>&1 &
 ros_pids+=($!)
+# The ROS floor (issue 16): an empty std_srvs/Trigger service in a process of its own.
+"${bin}/bench_service_roundtrip" --serve-trigger /ros_floor __name:=ros_floor \
+  > "${out}/ros_floor.txt" 2>&1 &
+ros_pids+=($!)
 if ! "${bin}/bench_service_roundtrip" --calls "${roundtrip_calls}" --sizes 100,1000 \
-    --node /ellipse_collision 2>&1 | tee "${out}/bench_service_roundtrip.txt"; then
+    --node /ellipse_collision --trigger /ros_floor 2>&1 | tee "${out}/bench_service_roundtrip.txt"; then
   tail -n 20 "${out}/node.txt" >&2
   echo "bench_service_roundtrip failed" >&2
   exit 1
+fi
+stop_ros
+
+# ---- the node as a user runs it (issue 16) -------------------------------------------------------
+# 20 links on tf frames moving at 30 Hz, N obstacles in `map`, warnings on, a ~markers subscriber:
+# the node's CPU (% of one core) and RSS, by scripts/node_load.sh (roscore and node of its own).
+echo
+echo "Running the node under load (scripts/node_load.sh; goals: 10000@30 Hz < 10 % of a core and"
+echo "RSS < 100 MB, 100000@10 Hz < 50 %)"
+if "${smoke}"; then
+  bash "${repo}/scripts/node_load.sh" --smoke
+else
+  bash "${repo}/scripts/node_load.sh"
 fi

@@ -1,6 +1,8 @@
 #include "ellipse_collision/app/collision_check.h"
 
 #include <algorithm>
+#include <iterator>
+#include <utility>
 
 #include "ellipse_collision/app/scene_placement.h"
 #include "ellipse_collision/core/unique_names.h"
@@ -60,12 +62,12 @@ std::string validateCheckRequest(const CheckRequest& request, const EllipseRegis
 
 CheckOutcome runCheck(const CheckRequest& request, const EllipseRegistry& registry,
                       const CheckSettings& settings, const TransformLookup& lookup,
-                      double reference_time_s) {
+                      double reference_time_s, PlacementCache* cache) {
   CheckOutcome outcome;
   ScenePlacement placement(lookup, settings.global_padding_m,
                            Freshness{settings.max_transform_age_s, reference_time_s});
 
-  std::vector<core::NamedEllipse> scene;
+  std::vector<core::NamedEllipse> queries;
   for (std::size_t i = 0; i < request.query.size(); ++i) {
     const EllipseSpec& spec = request.query[i];
     const ScenePlacement::Placement placed = placement.place(spec, core::EllipseRole::Query);
@@ -85,17 +87,33 @@ CheckOutcome runCheck(const CheckRequest& request, const EllipseRegistry& regist
       outcome.error = entryName("query", i) + ": " + placed.error;
       return outcome;
     }
-    scene.push_back(placed.ellipse);
+    queries.push_back(placed.ellipse);
   }
 
   std::set<std::string> unavailable;
   std::set<std::string> stale;
+  if (cache) cache->begin(registry, settings.global_padding_m);
+  outcome.placed.reserve(registry.entries().size() + queries.size());
+  // Links before obstacles, so the core reads the scene once (checkScene()); two walks of the
+  // registry, each entry's index counted in registry order for the cache.
+  for (const core::EllipseRole pass : {core::EllipseRole::Link, core::EllipseRole::Obstacle}) {
+  std::size_t index = 0;
   for (const auto& [name, stored] : registry.entries()) {
-    const ScenePlacement::Placement placed = placement.place(stored.spec, stored.role());
+    const std::size_t entry = index++;
+    if (stored.role() != pass) continue;
+    if (const core::Ellipse* reused = cache ? cache->reuse(entry, placement) : nullptr) {
+      outcome.placed.push_back({name, stored.role(), *reused});
+      continue;
+    }
+    ScenePlacement::Placement placed = placement.place(stored.spec, stored.role());
     switch (placed.status) {
       case ScenePlacement::Status::Placed:
-        scene.push_back(placed.ellipse);
-        outcome.placed.push_back(placed.ellipse);
+        if (cache) {
+          cache->store(entry, stored.spec.frame_id,
+                       placement.lookup(stored.spec.frame_id).fixed_from_frame,
+                       placed.ellipse.ellipse);
+        }
+        outcome.placed.push_back(std::move(placed.ellipse));
         break;
       case ScenePlacement::Status::FrameUnavailable:
         unavailable.insert(stored.spec.frame_id);
@@ -111,28 +129,42 @@ CheckOutcome runCheck(const CheckRequest& request, const EllipseRegistry& regist
         break;
     }
   }
+  }
   outcome.unavailable_frames.assign(unavailable.begin(), unavailable.end());
   outcome.stale_frames.assign(stale.begin(), stale.end());
   outcome.complete = outcome.skipped.empty();
 
+  // The scene is the queries followed by the placed stored ellipses (movers before obstacles;
+  // the answer does not depend on the order), checked in place and the queries dropped again, so
+  // no name is copied twice. Names were checked where they came in (the registry,
+  // validateCheckRequest()), so the core does not hash them all again on every check.
+  std::vector<core::NamedEllipse>& scene = outcome.placed;
+  scene.insert(scene.begin(), std::make_move_iterator(queries.begin()),
+               std::make_move_iterator(queries.end()));
+  const auto answer = [&]() -> CheckOutcome& {
+    outcome.placed.erase(outcome.placed.begin(),
+                         outcome.placed.begin() + static_cast<std::ptrdiff_t>(queries.size()));
+    return outcome;
+  };
   const std::set<std::string> only_names(request.names.begin(), request.names.end());
-  core::SceneCheckResult result = core::checkScene(scene, settings.rules, only_names);
+  core::SceneCheckResult result =
+      core::checkSceneOfUniqueNames(scene, settings.rules, only_names);
   if (!result.ok()) {
     // Requests are validated before they get here, so this is a bug: say so.
     outcome.error = "internal error: " + result.error;
-    return outcome;
+    return std::move(answer());
   }
   outcome.collisions = std::move(result.collisions);
   outcome.warnings = std::move(result.warnings);
 
   const std::string& of = request.min_distance_of;
-  if (of.empty()) return outcome;
+  if (of.empty()) return std::move(answer());
   const bool placed = std::any_of(scene.begin(), scene.end(),
                                   [&](const core::NamedEllipse& e) { return e.name == of; });
   if (!placed) {
     outcome.nearest_problem =
         "min_distance_of = '" + of + "': not measured, the ellipse could not be placed";
-    return outcome;
+    return std::move(answer());
   }
   const core::NearestResult nearest = core::nearestTo(scene, settings.rules, of);
   if (!nearest.ok()) {
@@ -143,7 +175,7 @@ CheckOutcome runCheck(const CheckRequest& request, const EllipseRegistry& regist
   } else {
     outcome.nearest = nearest.nearest;
   }
-  return outcome;
+  return std::move(answer());
 }
 
 std::string validateAttached(const std::vector<EllipseSpec>& specs, const std::string& field,

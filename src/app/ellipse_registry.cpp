@@ -104,6 +104,7 @@ std::string EllipseRegistry::addObstacles(const std::vector<EllipseSpec>& obstac
   for (const EllipseSpec& spec : obstacles) {
     entries_[spec.name] = StoredEllipse{spec, EllipseSource::ServiceObstacle};
   }
+  ++revision_;
   return {};
 }
 
@@ -123,6 +124,7 @@ std::string EllipseRegistry::removeObstacles(const std::vector<std::string>& nam
     }
   }
   for (const std::string& name : names) entries_.erase(name);
+  ++revision_;
   return {};
 }
 
@@ -146,6 +148,7 @@ std::string EllipseRegistry::replaceTopicObstacles(const std::vector<EllipseSpec
     entries_.emplace(spec.name, StoredEllipse{spec, EllipseSource::TopicObstacle});
   }
   topic_stamp_s_ = stamp_s;
+  ++revision_;
   return {};
 }
 
@@ -167,6 +170,7 @@ std::string EllipseRegistry::restore(const StoredObstacles& stored) {
   if (!error.empty()) {
     entries_ = before;
     topic_stamp_s_ = stamp_before;
+    ++revision_;
   }
   return error;
 }
@@ -178,6 +182,7 @@ std::size_t EllipseRegistry::dropExpiredTopicObstacles(double now_s, double time
     if (it->second.source == EllipseSource::TopicObstacle) {
       it = entries_.erase(it);
       ++dropped;
+      ++revision_;
     } else {
       ++it;
     }

@@ -35,22 +35,38 @@ double distanceLowerBound(const Ellipse& a, const Ellipse& b) {
 // obstacle's own size is covered by the margin of its boundingCircleBox().
 constexpr double kPadMargin = 1e-6;
 
-std::string validate(const std::vector<NamedEllipse>& ellipses, const SceneRules& rules) {
+std::string warningDistanceProblem(const SceneRules& rules) {
   if (!std::isfinite(rules.warning_distance) || rules.warning_distance < 0.0) {
     return "warning_distance = " + formatNumber(rules.warning_distance) +
            " must be finite and >= 0";
   }
+  return {};
+}
+
+/// What is wrong with entry `i`, or "". `names` collects the names for the duplicate rule; null
+/// when the caller vouches for them (checkSceneOfUniqueNames()): that set, a hash of every name
+/// on every call, is what it saves.
+std::string entryProblem(std::size_t i, const NamedEllipse& entry, detail::NameSet* names) {
+  // Built only for an error: per entry it would cost more than the whole check.
+  const auto where = [i] { return "ellipses[" + std::to_string(i) + "]"; };
+  if (names) {
+    if (entry.name.empty()) return where() + ".name is empty";
+    if (!names->insert(entry.name)) return where() + ".name = '" + entry.name + "' is a duplicate";
+  }
+  // The cheap test first: invalidReason() returns a string, called on every entry of every check.
+  if (isValid(entry.ellipse)) return {};
+  return where() + " ('" + entry.name + "'): " + invalidReason(entry.ellipse);
+}
+
+std::string validate(const std::vector<NamedEllipse>& ellipses, const SceneRules& rules) {
+  std::string problem = warningDistanceProblem(rules);
+  if (!problem.empty()) return problem;
   // One pass, entry by entry as a reader checks them (a second pass over 100,000 entries costs
   // as much as the pair tests); the set of names is the one findNameProblem() uses.
   detail::NameSet names(ellipses.size());
   for (std::size_t i = 0; i < ellipses.size(); ++i) {
-    const NamedEllipse& entry = ellipses[i];
-    // Built only for an error: per entry it would cost more than the whole check.
-    const auto where = [i] { return "ellipses[" + std::to_string(i) + "]"; };
-    if (entry.name.empty()) return where() + ".name is empty";
-    if (!names.insert(entry.name)) return where() + ".name = '" + entry.name + "' is a duplicate";
-    const std::string invalid = invalidReason(entry.ellipse);
-    if (!invalid.empty()) return where() + " ('" + entry.name + "'): " + invalid;
+    problem = entryProblem(i, ellipses[i], &names);
+    if (!problem.empty()) return problem;
   }
   return {};
 }
@@ -95,10 +111,19 @@ bool pairWanted(const NamedEllipse& a, const NamedEllipse& b, const SceneRules& 
   return only_names.empty() || only_names.count(a.name) != 0 || only_names.count(b.name) != 0;
 }
 
-SceneCheckResult checkScene(const std::vector<NamedEllipse>& ellipses, const SceneRules& rules,
-                            const std::set<std::string>& only_names) {
+namespace {
+
+/// checkScene() (`check_names`) and checkSceneOfUniqueNames(). Every entry is validated once, in
+/// index order, so the first problem reported is the same whichever way the scene is read.
+/// With `movers_first` it tries to read the scene once: the leading queries and links are
+/// gridded, then every later entry is validated and streamed in the same pass (at 100,000
+/// obstacles reading the scene costs as much as the pair tests). A query or link after an
+/// obstacle sends it back to the start in two passes: movers first, then obstacles.
+SceneCheckResult checkSceneWith(const std::vector<NamedEllipse>& ellipses,
+                                const SceneRules& rules, const std::set<std::string>& only_names,
+                                bool check_names, bool movers_first) {
   SceneCheckResult result;
-  result.error = validate(ellipses, rules);
+  result.error = warningDistanceProblem(rules);
   if (!result.error.empty()) return result;
   const double warning_distance = rules.warning_distance;
 
@@ -107,7 +132,16 @@ SceneCheckResult checkScene(const std::vector<NamedEllipse>& ellipses, const Sce
   std::vector<const NamedEllipse*> movers;
   std::vector<PreparedEllipse> prepared_movers;
   std::vector<BoundingBox> mover_boxes;
-  for (const NamedEllipse& entry : ellipses) {
+  detail::NameSet names(check_names ? ellipses.size() : 0);
+  std::size_t stream_from = movers_first ? ellipses.size() : 0;
+  for (std::size_t i = 0; i < ellipses.size(); ++i) {
+    const NamedEllipse& entry = ellipses[i];
+    if (movers_first && entry.role == EllipseRole::Obstacle) {
+      stream_from = i;  // validated as it streams
+      break;
+    }
+    result.error = entryProblem(i, entry, check_names ? &names : nullptr);
+    if (!result.error.empty()) return result;
     if (entry.role == EllipseRole::Obstacle) continue;
     movers.push_back(&entry);
     prepared_movers.emplace_back(entry.ellipse);
@@ -146,7 +180,15 @@ SceneCheckResult checkScene(const std::vector<NamedEllipse>& ellipses, const Sce
   // Movers against obstacles: a mover (query or link) always comes first in a pair with an
   // obstacle. The obstacle's box needs no trigonometry, and it is prepared only if needed.
   std::vector<std::size_t> found;
-  for (const NamedEllipse& obstacle : ellipses) {
+  for (std::size_t k = stream_from; k < ellipses.size(); ++k) {
+    const NamedEllipse& obstacle = ellipses[k];
+    if (movers_first) {
+      if (obstacle.role != EllipseRole::Obstacle) {
+        return checkSceneWith(ellipses, rules, only_names, check_names, /*movers_first=*/false);
+      }
+      result.error = entryProblem(k, obstacle, check_names ? &names : nullptr);
+      if (!result.error.empty()) return SceneCheckResult{{}, {}, result.error, 0};
+    }
     if (obstacle.role != EllipseRole::Obstacle) continue;
     grid.overlapping(boundingCircleBox(obstacle.ellipse), &found);
     std::optional<PreparedEllipse> prepared_obstacle;
@@ -179,6 +221,20 @@ SceneCheckResult checkScene(const std::vector<NamedEllipse>& ellipses, const Sce
     result.warnings.push_back(nearPair(*pair.first, *pair.second, pair.clearance));
   }
   return result;
+}
+
+}  // namespace
+
+SceneCheckResult checkScene(const std::vector<NamedEllipse>& ellipses, const SceneRules& rules,
+                            const std::set<std::string>& only_names) {
+  return checkSceneWith(ellipses, rules, only_names, /*check_names=*/true, /*movers_first=*/true);
+}
+
+SceneCheckResult checkSceneOfUniqueNames(const std::vector<NamedEllipse>& ellipses,
+                                         const SceneRules& rules,
+                                         const std::set<std::string>& only_names) {
+  return checkSceneWith(ellipses, rules, only_names, /*check_names=*/false,
+                        /*movers_first=*/true);
 }
 
 NearestResult nearestTo(const std::vector<NamedEllipse>& ellipses, const SceneRules& rules,

@@ -164,21 +164,23 @@ void CollisionNode::handleTimeJumpAndExpiry() {
   }
 }
 
-app::CheckOutcome CollisionNode::runFullCheck(const ros::Duration& timeout,
+const app::CheckOutcome& CollisionNode::runFullCheck(const ros::Duration& timeout,
                                               const std::string& min_distance_of) {
   handleTimeJumpAndExpiry();
   const auto start = std::chrono::steady_clock::now();
   app::CheckRequest request;
   request.min_distance_of = min_distance_of;
   const ros::Time now = ros::Time::now();
-  app::CheckOutcome outcome =
-      app::runCheck(request, registry_, settings_,
-                    tfLookup(tf_buffer_, config_.fixed_frame, ros::Time(0), timeout), now.toSec());
+  app::CheckOutcome outcome = app::runCheck(
+      request, registry_, settings_,
+      tfLookup(tf_buffer_, config_.fixed_frame, ros::Time(0), timeout), now.toSec(),
+      &placement_cache_);
   if (!outcome.error.empty()) {
     // Never publish a failed check as "clear": the topics keep the last good state.
     ROS_ERROR_STREAM_THROTTLE(5.0, "ellipse_collision: check failed: " << outcome.error);
     state_.failure = outcome.error;
-    return outcome;
+    failed_check_ = std::move(outcome);
+    return failed_check_;
   }
   predict(outcome, request, ros::Time(0), now);  // times from the state's stamp
   state_.failure.clear();
@@ -186,21 +188,22 @@ app::CheckOutcome CollisionNode::runFullCheck(const ros::Duration& timeout,
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   state_.valid = true;
   state_.stamp = now;
-  state_.outcome = outcome;
+  state_.outcome = std::move(outcome);
+  const app::CheckOutcome& checked = state_.outcome;
   // Since when each frame has been missing (unavailable or stale), for the diagnostics level.
-  std::set<std::string> missing(outcome.unavailable_frames.begin(), outcome.unavailable_frames.end());
-  missing.insert(outcome.stale_frames.begin(), outcome.stale_frames.end());
+  std::set<std::string> missing(checked.unavailable_frames.begin(), checked.unavailable_frames.end());
+  missing.insert(checked.stale_frames.begin(), checked.stale_frames.end());
   for (auto it = missing_since_.begin(); it != missing_since_.end();) {
     it = missing.count(it->first) ? std::next(it) : missing_since_.erase(it);
   }
   for (const std::string& frame : missing) missing_since_.emplace(frame, now);
   ++full_checks_;
-  if (!outcome.skipped.empty()) {
-    ROS_WARN_STREAM_THROTTLE(5.0, "ellipse_collision: skipped " << app::joinText(outcome.skipped, "; "));
+  if (!checked.skipped.empty()) {
+    ROS_WARN_STREAM_THROTTLE(5.0, "ellipse_collision: skipped " << app::joinText(checked.skipped, "; "));
   }
   publishState();
   publishMarkers();
-  return outcome;
+  return checked;
 }
 
 void CollisionNode::publishState() {
@@ -274,12 +277,16 @@ bool CollisionNode::onCheckCollisions(CheckCollisions::Request& request,
   if (!full_check) handleTimeJumpAndExpiry();
   // Freshness is measured against now for latest-transform checks, else the requested stamp.
   const double reference_s = (request.stamp.isZero() ? ros::Time::now() : request.stamp).toSec();
-  app::CheckOutcome outcome =
-      full_check ? runFullCheck(timeout, check.min_distance_of)
-                 : app::runCheck(check, registry_, settings_,
-                                 tfLookup(tf_buffer_, config_.fixed_frame, request.stamp, timeout),
-                                 reference_s);
-  if (!full_check && outcome.error.empty()) predict(outcome, check, request.stamp);
+  // A full check's outcome stays in state_ (no copy); a partial one lives here.
+  app::CheckOutcome partial;
+  if (!full_check) {
+    partial = app::runCheck(check, registry_, settings_,
+                            tfLookup(tf_buffer_, config_.fixed_frame, request.stamp, timeout),
+                            reference_s);
+    if (partial.error.empty()) predict(partial, check, request.stamp);
+  }
+  const app::CheckOutcome& outcome =
+      full_check ? runFullCheck(timeout, check.min_distance_of) : partial;
   if (!outcome.error.empty()) {
     ROS_ERROR_STREAM_COND(outcome.error.rfind("internal error", 0) == 0,
                           "ellipse_collision: " << outcome.error);

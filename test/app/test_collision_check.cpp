@@ -3,6 +3,7 @@
 // and the answer lists what was skipped and why. Expected values are worked out by hand.
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <map>
 
 #include "ellipse_collision/app/collision_check.h"
@@ -246,6 +247,125 @@ TEST_F(CollisionCheckTest, QueryInAStaleFrameFailsTheRequest) {
             "query[0].frame_id = 'arm': expected a transform to 'map' within max_transform_age, "
             "got a stale one (transform of frame 'arm' is 2 s old, older than max_transform_age "
             "0.5 s)");
+}
+
+}  // namespace
+}  // namespace ellipse_collision::app
+
+namespace ellipse_collision::app {
+namespace {
+
+/// Frames with rotation and translation, changeable between checks; counts lookups.
+struct PoseTable {
+  std::map<std::string, Eigen::Isometry3d> poses;
+  std::map<std::string, int>* lookups;
+  FrameTransform operator()(const std::string& frame) const {
+    ++(*lookups)[frame];
+    FrameTransform transform;
+    const auto found = poses.find(frame);
+    if (found == poses.end()) {
+      transform.error = "frame '" + frame + "' does not exist";
+      return transform;
+    }
+    transform.ok = true;
+    transform.fixed_from_frame = found->second;
+    return transform;
+  }
+};
+
+Eigen::Isometry3d pose(double x, double y, double yaw) {
+  Eigen::Isometry3d p = Eigen::Isometry3d::Identity();
+  p.translate(Eigen::Vector3d(x, y, 0.0));
+  p.rotate(Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()));
+  return p;
+}
+
+bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof(double)) == 0; }
+
+void expectSameOutcome(const CheckOutcome& cached, const CheckOutcome& fresh, int cycle) {
+  ASSERT_EQ(cached.error, fresh.error) << "cycle " << cycle;
+  ASSERT_EQ(cached.placed.size(), fresh.placed.size()) << "cycle " << cycle;
+  for (std::size_t i = 0; i < fresh.placed.size(); ++i) {
+    const core::NamedEllipse& a = cached.placed[i];
+    const core::NamedEllipse& b = fresh.placed[i];
+    EXPECT_EQ(a.name, b.name) << "cycle " << cycle;
+    EXPECT_TRUE(sameBits(a.ellipse.center.x(), b.ellipse.center.x()) &&
+                sameBits(a.ellipse.center.y(), b.ellipse.center.y()) &&
+                sameBits(a.ellipse.radius_x, b.ellipse.radius_x) &&
+                sameBits(a.ellipse.radius_y, b.ellipse.radius_y) &&
+                sameBits(a.ellipse.angle, b.ellipse.angle))
+        << "cycle " << cycle << " " << a.name;
+  }
+  EXPECT_EQ(cached.unavailable_frames, fresh.unavailable_frames) << "cycle " << cycle;
+  EXPECT_EQ(cached.skipped, fresh.skipped) << "cycle " << cycle;
+  ASSERT_EQ(cached.collisions.size(), fresh.collisions.size()) << "cycle " << cycle;
+  for (std::size_t i = 0; i < fresh.collisions.size(); ++i) {
+    EXPECT_EQ(cached.collisions[i].name_a, fresh.collisions[i].name_a);
+    EXPECT_EQ(cached.collisions[i].name_b, fresh.collisions[i].name_b);
+    EXPECT_TRUE(sameBits(cached.collisions[i].contact_scale, fresh.collisions[i].contact_scale));
+  }
+}
+
+TEST(PlacementCache, SameAnswerBitForBitAsProjectingEveryCycleWhileFramesMoveAndVanish) {
+  EllipseRegistry registry({circle("body", "base_link", 0.0, 0.0, 0.5),
+                            circle("hand", "arm", 0.3, 0.0, 0.1)},
+                           {});
+  std::vector<EllipseSpec> obstacles;
+  for (int i = 0; i < 40; ++i) {
+    obstacles.push_back(circle("rock" + std::to_string(i), i % 4 == 0 ? "cart" : "map",
+                               0.1 * i - 2.0, 0.05 * (i % 7) - 0.2, 0.15));
+  }
+  ASSERT_EQ(registry.addObstacles(obstacles, "obstacles"), "");
+  CheckSettings settings;
+  settings.fixed_frame = "map";
+  settings.global_padding_m = 0.01;
+  std::map<std::string, int> lookups;
+  PoseTable table{{{"map", Eigen::Isometry3d::Identity()}, {"base_link", pose(0, 0, 0)},
+                   {"arm", pose(0, 0, 0)}, {"cart", pose(0.5, 0, 0)}},
+                  &lookups};
+  PlacementCache cache;
+  std::size_t collisions = 0;
+  for (int cycle = 0; cycle < 60; ++cycle) {
+    // The arm moves every cycle, the base every third, the cart vanishes for a while and comes
+    // back at its old pose; obstacles are added and removed now and then.
+    table.poses["arm"] = pose(0.05 * cycle - 1.5, 0.01 * cycle, 0.1 * cycle);
+    if (cycle % 3 == 0) table.poses["base_link"] = pose(0.04 * cycle - 1.0, 0.0, 0.05 * cycle);
+    if (cycle == 20) table.poses.erase("cart");
+    if (cycle == 25) table.poses["cart"] = pose(0.5, 0, 0);
+    if (cycle == 30) {
+      ASSERT_EQ(registry.addObstacles({circle("late", "map", 0.2, 0.0, 0.3)}, "obstacles"), "");
+    }
+    if (cycle == 40) {
+      ASSERT_EQ(registry.removeObstacles({"rock3", "late"}, "names"), "");
+    }
+    const CheckOutcome cached = runCheck(CheckRequest{}, registry, settings,
+                                         TransformLookup(table), 0.0, &cache);
+    const CheckOutcome fresh =
+        runCheck(CheckRequest{}, registry, settings, TransformLookup(table), 0.0);
+    expectSameOutcome(cached, fresh, cycle);
+    if (HasFatalFailure()) return;
+    collisions += fresh.collisions.size();
+  }
+  EXPECT_GT(collisions, 20u) << "the comparison must see collisions";
+}
+
+TEST(PlacementCache, ReusedProjectionsLookUpEachFrameOncePerCheck) {
+  EllipseRegistry registry({circle("hand", "arm", 0.0, 0.0, 0.1)},
+                           {circle("a", "map", 1.0, 0.0, 0.2), circle("b", "map", 2.0, 0.0, 0.2),
+                            circle("c", "cart", 0.0, 0.0, 0.2)});
+  CheckSettings settings;
+  settings.fixed_frame = "map";
+  std::map<std::string, int> lookups;
+  PoseTable table{{{"map", Eigen::Isometry3d::Identity()}, {"arm", pose(0, 0, 0)},
+                   {"cart", pose(3, 0, 0)}},
+                  &lookups};
+  PlacementCache cache;
+  for (int cycle = 0; cycle < 3; ++cycle) {
+    runCheck(CheckRequest{}, registry, settings, TransformLookup(table), 0.0, &cache);
+  }
+  EXPECT_EQ(lookups["map"], 3);
+  EXPECT_EQ(lookups["arm"], 3);
+  EXPECT_EQ(lookups["cart"], 3);
 }
 
 }  // namespace

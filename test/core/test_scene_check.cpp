@@ -115,6 +115,19 @@ TEST(SceneCheck, MatchesBruteForceOnRandomCircleScenes) {
   EXPECT_GT(total_collisions, 1000u);
 }
 
+TEST(SceneCheck, UniqueNamesEntryPointStillRefusesInvalidEllipsesAndWarningDistance) {
+  Ellipse nan_centre{{std::nan(""), 0.0}, 1.0, 1.0, 0.0};
+  SceneCheckResult result = checkSceneOfUniqueNames(
+      {circle("arm", EllipseRole::Link, 0, 0, 1), {"rock", EllipseRole::Obstacle, nan_centre}},
+      SceneRules{});
+  EXPECT_EQ(result.error.rfind("ellipses[1] ('rock'): center.x", 0), 0u) << result.error;
+  SceneRules rules;
+  rules.warning_distance = -1.0;
+  result = checkSceneOfUniqueNames({circle("arm", EllipseRole::Link, 0, 0, 1)}, rules);
+  EXPECT_FALSE(result.ok());
+  EXPECT_NE(result.error.find("warning_distance"), std::string::npos) << result.error;
+}
+
 TEST(SceneCheck, ResultDoesNotDependOnInputOrder) {
   std::mt19937 rng(99);
   for (int trial = 0; trial < 50; ++trial) {

@@ -7,6 +7,7 @@
 
 #include "ellipse_collision/app/ellipse_registry.h"
 #include "ellipse_collision/app/ellipse_spec.h"
+#include "ellipse_collision/app/placement_cache.h"
 #include "ellipse_collision/app/transform_lookup.h"
 #include "ellipse_collision/core/contact_prediction.h"
 #include "ellipse_collision/core/scene_check.h"
@@ -32,7 +33,8 @@ struct CheckRequest {
 
 /// The answer of one check.
 struct CheckOutcome {
-  std::vector<core::NamedEllipse> placed;       ///< stored ellipses that could be placed
+  /// Stored ellipses that could be placed: links, then obstacles, each by name.
+  std::vector<core::NamedEllipse> placed;
   std::vector<std::string> unavailable_frames;  ///< sorted; their ellipses were skipped
   std::vector<std::string> stale_frames;        ///< sorted; transform too old, ellipses skipped
   std::vector<std::string> skipped;             ///< why each skipped ellipse was skipped
@@ -65,9 +67,12 @@ std::string validateCheckRequest(const CheckRequest& request, const EllipseRegis
 /// requested stamp otherwise; same clock as FrameTransform::stamp_s) is stale: a query ellipse in
 /// it fails the request, stored ones are skipped and the frame is listed in stale_frames.
 /// Expects a request that passed validateCheckRequest().
+/// With a `cache` (kept from one check to the next, PlacementCache), stored ellipses whose frame
+/// has the same transform as when they were last projected are not projected again; the answer
+/// is the same bit for bit.
 CheckOutcome runCheck(const CheckRequest& request, const EllipseRegistry& registry,
                       const CheckSettings& settings, const TransformLookup& lookup,
-                      double reference_time_s = 0.0);
+                      double reference_time_s = 0.0, PlacementCache* cache = nullptr);
 
 /// The window of the finite difference that estimates a frame's velocity from tf [s]: the pose at
 /// the frame's latest transform against the pose kVelocityWindowS earlier. Short enough to follow

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <map>
 #include <string>
 #include <vector>
@@ -65,6 +66,9 @@ class EllipseRegistry {
   const std::map<std::string, StoredEllipse>& entries() const { return entries_; }
   bool contains(const std::string& name) const { return entries_.count(name) != 0; }
   std::size_t count(EllipseSource source) const;
+  /// Changes with every change of entries(): while it is the same, the entries are the same
+  /// objects with the same specs (what PlacementCache relies on).
+  std::uint64_t revision() const { return revision_; }
 
  private:
   /// The limits' rule for one request or message: a name longer than max_name_length, or more
@@ -75,6 +79,7 @@ class EllipseRegistry {
   std::map<std::string, StoredEllipse> entries_;
   RegistryLimits limits_;
   double topic_stamp_s_{0.0};
+  std::uint64_t revision_{0};
 };
 
 }  // namespace ellipse_collision::app

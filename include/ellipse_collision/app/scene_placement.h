@@ -31,6 +31,9 @@ class ScenePlacement {
   /// The transform of `frame`, looked up at most once per placement.
   const FrameTransform& lookup(const std::string& frame);
 
+  /// Whether ellipses may be placed through `frame`: it was found and is not stale.
+  bool usable(const FrameTransform& frame) const { return frame.ok && !isStale(frame, freshness_); }
+
  private:
   TransformLookup lookup_;
   double global_padding_m_;

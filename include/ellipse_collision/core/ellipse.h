@@ -46,6 +46,12 @@ inline bool radiusOk(double value) { return value >= kMinRadius && value <= kMax
 /// An angle [rad]: finite.
 inline bool angleOk(double value) { return std::isfinite(value); }
 
+/// All five fields keep their rules: invalidReason() would be empty (and costs no string).
+inline bool isValid(const Ellipse& e) {
+  return coordinateOk(e.center.x()) && coordinateOk(e.center.y()) && radiusOk(e.radius_x) &&
+         radiusOk(e.radius_y) && angleOk(e.angle);
+}
+
 /// Which part of its field's rule a value breaks; nothing when it keeps it.
 std::optional<ValueViolation> coordinateViolation(double value);
 std::optional<ValueViolation> radiusViolation(double value);

@@ -42,7 +42,8 @@ class CollisionNode {
   /// Clears the tf buffer when ros::Time went backwards (a looping bag) and drops topic
   /// obstacles older than ~obstacle_timeout; every check starts here.
   void handleTimeJumpAndExpiry();
-  app::CheckOutcome runFullCheck(const ros::Duration& timeout,
+  /// The outcome is state_.outcome on success, failed_check_ otherwise (no copy per cycle).
+  const app::CheckOutcome& runFullCheck(const ros::Duration& timeout,
                                  const std::string& min_distance_of = "");
   /// Restores the runtime obstacles of an earlier run of this node in the same launch session
   /// (roslaunch's /run_id) from ~obstacle_store; a missing, corrupt or foreign store is logged and
@@ -73,6 +74,9 @@ class CollisionNode {
   NodeConfig config_;
   app::CheckSettings settings_;
   app::EllipseRegistry registry_;
+  /// Projections reused from one full check to the next while frames do not move.
+  app::PlacementCache placement_cache_;
+  app::CheckOutcome failed_check_;
 
   tf2_ros::Buffer tf_buffer_;
   tf2_ros::TransformListener tf_listener_;

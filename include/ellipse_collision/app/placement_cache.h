@@ -1,0 +1,56 @@
+#pragma once
+
+#include <Eigen/Geometry>
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "ellipse_collision/app/ellipse_registry.h"
+#include "ellipse_collision/app/scene_placement.h"
+#include "ellipse_collision/core/ellipse.h"
+
+namespace ellipse_collision::app {
+
+/// The stored ellipses' projections from earlier checks, kept by the node from one periodic check
+/// to the next so that ellipses in the fixed frame or in frames that did not move are not
+/// projected again. An entry is reused only while the registry is unchanged (its revision()), the
+/// padding is the same and its frame's transform is bit for bit the one it was projected through
+/// (and usable now: found and fresh), so the answer is exactly that of projecting again. Each
+/// frame is compared once per check, not once per ellipse.
+class PlacementCache {
+ public:
+  /// Starts one check of `registry`: forgets everything when the registry or the padding changed.
+  void begin(const EllipseRegistry& registry, double global_padding_m);
+
+  /// The projection of entry `index` (in registry().entries() order) made through the transform
+  /// `placement` now reports for its frame, or nullptr when it must be projected (again).
+  const core::Ellipse* reuse(std::size_t index, ScenePlacement& placement);
+
+  /// Remembers that entry `index`, in `frame`, projects to `ellipse` through `transform`.
+  void store(std::size_t index, const std::string& frame, const Eigen::Isometry3d& transform,
+             const core::Ellipse& ellipse);
+
+ private:
+  struct Frame {
+    std::string name;
+    Eigen::Isometry3d transform{Eigen::Isometry3d::Identity()};
+    std::uint64_t compared_in_check{0};  ///< check_ when `unchanged` was last decided
+    bool unchanged{false};               ///< in the current check
+  };
+  struct Entry {
+    bool valid{false};
+    std::uint32_t frame{0};  ///< index into frames_
+    core::Ellipse ellipse;
+  };
+
+  bool started_{false};
+  std::uint64_t revision_{0};
+  double global_padding_m_{0.0};
+  std::uint64_t check_{0};
+  std::vector<Frame> frames_;
+  std::map<std::string, std::uint32_t> frame_index_;
+  std::vector<Entry> entries_;
+};
+
+}  // namespace ellipse_collision::app

@@ -1,0 +1,91 @@
+#!/usr/bin/env bash
+# The node as a user runs it (issue 16), measured by bench/node_load.py: 20 links on moving tf
+# frames at 30 Hz, N obstacles in `map`, warnings on, a subscriber on ~markers. For each
+# (obstacles, rate) it starts a roscore of its own on a free port and the node, measures the
+# node's CPU (% of one core) and RSS over the window, and stops both. Prints one line per run.
+#
+#   scripts/node_load.sh [--smoke] [--node PATH] [--seconds S] [--runs "N@HZ N@HZ ..."]
+#                        [--no-markers]   (the check cycle alone, without a ~markers subscriber)
+#
+# Default runs: 200@30 2000@30 10000@30 100000@10 over 20 s each (goals: 10000@30 under 10 % of
+# a core and RSS under 100 MB, 100000@10 under 50 %). --smoke: 200@30 for 3 s (for CI).
+# --node compares another build of the node (e.g. main's) in the same run on the same machine.
+set -euo pipefail
+
+repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+node="${repo}/build/ws/devel/lib/ellipse_collision/ellipse_collision_node"
+seconds=20
+runs="200@30 2000@30 10000@30 100000@10"
+markers=()
+while [[ $# -gt 0 ]]; do
+  case "$1" in
+    --smoke) seconds=3; runs="200@30" ;;
+    --node) node="$2"; shift ;;
+    --seconds) seconds="$2"; shift ;;
+    --runs) runs="$2"; shift ;;
+    --no-markers) markers=(--no-markers) ;;
+    *) echo "usage: $0 [--smoke] [--node PATH] [--seconds S] [--runs \"N@HZ ...\"] [--no-markers]" >&2
+       exit 2 ;;
+  esac
+  shift
+done
+
+out="${repo}/build/benchmark/node_load"
+mkdir -p "${out}"
+export PATH="/usr/bin:${PATH}"
+# shellcheck disable=SC1091
+set +u  # the setup scripts read unset variables
+source "${repo}/build/ws/devel/setup.bash"
+set -u
+
+pids=()
+stop_all() {
+  local i
+  for ((i = ${#pids[@]} - 1; i >= 0; i--)); do
+    kill -INT "${pids[i]}" 2>/dev/null || true
+    wait "${pids[i]}" 2>/dev/null || true
+  done
+  pids=()
+}
+trap stop_all EXIT
+trap 'exit 130' INT TERM
+
+for run in ${runs}; do
+  obstacles="${run%@*}"
+  rate="${run#*@}"
+  port="$(/usr/bin/python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')"
+  export ROS_MASTER_URI="http://127.0.0.1:${port}" ROS_IP=127.0.0.1 ROS_LOG_DIR="${out}/ros_log"
+  roscore -p "${port}" > "${out}/roscore.txt" 2>&1 &
+  pids+=($!)
+  for _ in $(seq 100); do
+    rosparam get /run_id > /dev/null 2>&1 && break
+    sleep 0.2
+  done
+  {
+    echo "fixed_frame: map"
+    echo "rate: ${rate}"
+    echo "tf_timeout: 0.1"
+    echo "warning_distance: 0.1"
+    echo "self_collision: true"
+    echo "obstacle_store: ''"
+    echo "links:"
+    for i in $(seq 0 19); do
+      echo "  - {name: link_${i}, frame: link_${i}, x: 0.1, y: 0.0, angle: 0.0, radius_x: 0.25, radius_y: 0.1}"
+    done
+  } > "${out}/config.yaml"
+  rosparam load "${out}/config.yaml" /ellipse_collision
+  # The libraries of the node's own build (another worktree's node would otherwise load this
+  # build's libraries through the devel space's LD_LIBRARY_PATH).
+  LD_LIBRARY_PATH="$(dirname "$(dirname "${node}")"):${LD_LIBRARY_PATH:-}" \
+    "${node}" __name:=ellipse_collision > "${out}/node.txt" 2>&1 &
+  node_pid=$!
+  pids+=("${node_pid}")
+  if ! /usr/bin/python3 "${repo}/bench/node_load.py" --node /ellipse_collision --pid "${node_pid}" \
+      --obstacles "${obstacles}" --seconds "${seconds}" "${markers[@]}" 2> "${out}/node_load_err.txt" \
+      | sed "s/^/rate=${rate} /"; then
+    cat "${out}/node_load_err.txt" >&2
+    tail -n 20 "${out}/node.txt" >&2
+    exit 1
+  fi
+  stop_all
+done

@@ -1,0 +1,58 @@
+#include "ellipse_collision/app/placement_cache.h"
+
+#include <cstring>
+
+namespace ellipse_collision::app {
+namespace {
+
+/// Bit for bit: a transform that moved by any amount projects again.
+bool sameBits(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b) {
+  return std::memcmp(a.matrix().data(), b.matrix().data(), sizeof(double) * 16) == 0;
+}
+
+}  // namespace
+
+void PlacementCache::begin(const EllipseRegistry& registry, double global_padding_m) {
+  ++check_;
+  const bool same_bits_padding =
+      std::memcmp(&global_padding_m, &global_padding_m_, sizeof(double)) == 0;
+  if (started_ && registry.revision() == revision_ && same_bits_padding &&
+      entries_.size() == registry.entries().size()) {
+    return;
+  }
+  started_ = true;
+  revision_ = registry.revision();
+  global_padding_m_ = global_padding_m;
+  frames_.clear();
+  frame_index_.clear();
+  entries_.assign(registry.entries().size(), Entry{});
+}
+
+const core::Ellipse* PlacementCache::reuse(std::size_t index, ScenePlacement& placement) {
+  if (index >= entries_.size() || !entries_[index].valid) return nullptr;
+  const Entry& entry = entries_[index];
+  Frame& frame = frames_[entry.frame];
+  if (frame.compared_in_check != check_) {
+    frame.compared_in_check = check_;
+    const FrameTransform& now = placement.lookup(frame.name);
+    frame.unchanged = placement.usable(now) && sameBits(now.fixed_from_frame, frame.transform);
+  }
+  return frame.unchanged ? &entry.ellipse : nullptr;
+}
+
+void PlacementCache::store(std::size_t index, const std::string& frame,
+                           const Eigen::Isometry3d& transform, const core::Ellipse& ellipse) {
+  if (index >= entries_.size()) return;
+  auto found = frame_index_.find(frame);
+  if (found == frame_index_.end()) {
+    found = frame_index_.emplace(frame, static_cast<std::uint32_t>(frames_.size())).first;
+    frames_.push_back(Frame{frame, transform, 0, false});
+  }
+  Frame& slot = frames_[found->second];
+  // The frame moved since its other entries were stored: they project again in this check too
+  // (their reuse() found it changed), so the slot takes the new transform.
+  slot.transform = transform;
+  entries_[index] = Entry{true, found->second, ellipse};
+}
+
+}  // namespace ellipse_collision::app
