@@ -108,17 +108,8 @@ grep -E '^(Benchmark|BM_)' "${out}/bench_check_path.txt" | grep -vE '_(stddev|cv
 # ---- service round trip (issue 7) ---------------------------------------------------------------
 # Started here, stopped by the EXIT trap whatever ends the script: the node first, then roscore
 # (which stops its rosmaster and rosout on SIGINT).
-ros_pids=()
-stop_ros() {
-  local i
-  for ((i = ${#ros_pids[@]} - 1; i >= 0; i--)); do
-    kill -INT "${ros_pids[i]}" 2>/dev/null || true
-    wait "${ros_pids[i]}" 2>/dev/null || true
-  done
-  ros_pids=()
-}
-trap stop_ros EXIT
-trap 'exit 130' INT TERM
+# shellcheck source=scripts/tracked_processes.sh
+source "${repo}/scripts/tracked_processes.sh"
 
 export PATH="/usr/bin:${PATH}"
 port="$(/usr/bin/python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')"
@@ -126,7 +117,7 @@ export ROS_MASTER_URI="http://127.0.0.1:${port}" ROS_IP=127.0.0.1 ROS_LOG_DIR="$
 echo
 echo "Running bench_service_roundtrip against ellipse_collision_node (roscore on port ${port})"
 roscore -p "${port}" > "${out}/roscore.txt" 2>&1 &
-ros_pids+=($!)
+pids+=($!)
 for _ in $(seq 100); do
   rosparam get /run_id > /dev/null 2>&1 && break
   sleep 0.2
@@ -138,18 +129,18 @@ if ! rosparam get /run_id > /dev/null 2>&1; then
 fi
 rosparam load "${repo}/bench/service_roundtrip.yaml" /ellipse_collision
 "${bin}/ellipse_collision_node" __name:=ellipse_collision > "${out}/node.txt" 2>&1 &
-ros_pids+=($!)
+pids+=($!)
 # The ROS floor (issue 16): an empty std_srvs/Trigger service in a process of its own.
 "${bin}/bench_service_roundtrip" --serve-trigger /ros_floor __name:=ros_floor \
   > "${out}/ros_floor.txt" 2>&1 &
-ros_pids+=($!)
+pids+=($!)
 if ! "${bin}/bench_service_roundtrip" --calls "${roundtrip_calls}" --sizes 100,1000 \
     --node /ellipse_collision --trigger /ros_floor 2>&1 | tee "${out}/bench_service_roundtrip.txt"; then
   tail -n 20 "${out}/node.txt" >&2
   echo "bench_service_roundtrip failed" >&2
   exit 1
 fi
-stop_ros
+stop_all
 
 # ---- the node as a user runs it (issue 16) -------------------------------------------------------
 # 20 links on tf frames moving at 30 Hz, N obstacles in `map`, warnings on, a ~markers subscriber:

@@ -38,17 +38,8 @@ set +u  # the setup scripts read unset variables
 source "${repo}/build/ws/devel/setup.bash"
 set -u
 
-pids=()
-stop_all() {
-  local i
-  for ((i = ${#pids[@]} - 1; i >= 0; i--)); do
-    kill -INT "${pids[i]}" 2>/dev/null || true
-    wait "${pids[i]}" 2>/dev/null || true
-  done
-  pids=()
-}
-trap stop_all EXIT
-trap 'exit 130' INT TERM
+# shellcheck source=scripts/tracked_processes.sh
+source "${repo}/scripts/tracked_processes.sh"
 
 for run in ${runs}; do
   obstacles="${run%@*}"

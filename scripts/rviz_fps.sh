@@ -76,17 +76,8 @@ sed -e "s/@SCALE@/${scale}/" -e "s/@X@/${centre}/" -e "s/@Y@/${centre}/" \
   done
 } > "${out}/node.yaml"
 
-pids=()
-stop_all() {
-  local i
-  for ((i = ${#pids[@]} - 1; i >= 0; i--)); do
-    kill -INT "${pids[i]}" 2>/dev/null || true
-    wait "${pids[i]}" 2>/dev/null || true
-  done
-  pids=()
-}
-trap stop_all EXIT
-trap 'exit 130' INT TERM
+# shellcheck source=scripts/tracked_processes.sh
+source "${repo}/scripts/tracked_processes.sh"
 
 monotonic() { /usr/bin/python3 -c 'import time; print(time.monotonic())'; }
 cpu_ticks() { awk '{print $14 + $15}' "/proc/$1/stat"; }

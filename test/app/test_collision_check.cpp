@@ -7,21 +7,12 @@
 #include <map>
 
 #include "ellipse_collision/app/collision_check.h"
+#include "spec_builders.h"
 
 namespace ellipse_collision::app {
 namespace {
 
-EllipseSpec circle(const std::string& name, const std::string& frame, double x, double y,
-                   double radius) {
-  EllipseSpec spec;
-  spec.name = name;
-  spec.frame_id = frame;
-  spec.x = x;
-  spec.y = y;
-  spec.radius_x = radius;
-  spec.radius_y = radius;
-  return spec;
-}
+using test::circle;
 
 /// Frames translated in the plane; unknown frames are unavailable. Counts the lookups. A frame
 /// without an entry in `stamps` is timeless (static).

@@ -7,6 +7,7 @@
 #include <map>
 
 #include "ellipse_collision/app/collision_check.h"
+#include "spec_builders.h"
 #include "ellipse_collision/app/path_request.h"
 
 namespace ellipse_collision::app {
@@ -14,17 +15,7 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-EllipseSpec circle(const std::string& name, const std::string& frame, double x, double y,
-                   double radius) {
-  EllipseSpec spec;
-  spec.name = name;
-  spec.frame_id = frame;
-  spec.x = x;
-  spec.y = y;
-  spec.radius_x = radius;
-  spec.radius_y = radius;
-  return spec;
-}
+using test::circle;
 
 PathPoseInput pose(double x, double y, double yaw = 0.0, double stamp = 0.0) {
   PathPoseInput p;
