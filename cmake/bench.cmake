@@ -54,3 +54,8 @@ ellipse_collision_add_benchmark(bench_scan_obstacles bench/bench_scan_obstacles.
 
 # Continuous path checks at the size of issue 14: 10,000 poses x 1,000 obstacles x 20 links.
 ellipse_collision_add_benchmark(bench_check_path bench/bench_check_path.cpp)
+
+# One check of the application layer (placement through the cache, core check, answer), the
+# node's own work per ~check_collisions call without ROS, beside the core check alone.
+ellipse_collision_add_benchmark(bench_run_check bench/bench_run_check.cpp
+  LIBRARIES ellipse_collision_app)
