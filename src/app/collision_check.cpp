@@ -94,16 +94,12 @@ CheckOutcome runCheck(const CheckRequest& request, const EllipseRegistry& regist
   std::set<std::string> stale;
   if (cache) cache->begin(registry, settings.global_padding_m);
   outcome.placed.reserve(registry.entries().size() + queries.size());
-  // Links before obstacles, so the core reads the scene once (checkScene()); two walks of the
-  // registry, each entry's index counted in registry order for the cache.
-  for (const core::EllipseRole pass : {core::EllipseRole::Link, core::EllipseRole::Obstacle}) {
-  std::size_t index = 0;
-  for (const auto& [name, stored] : registry.entries()) {
-    const std::size_t entry = index++;
-    if (stored.role() != pass) continue;
+  // Links before obstacles, so the core reads the scene once (checkScene()); each entry's index
+  // counted in registry order for the cache.
+  const auto place = [&](std::size_t entry, const std::string& name, const StoredEllipse& stored) {
     if (const core::Ellipse* reused = cache ? cache->reuse(entry, placement) : nullptr) {
       outcome.placed.push_back({name, stored.role(), *reused});
-      continue;
+      return;
     }
     ScenePlacement::Placement placed = placement.place(stored.spec, stored.role());
     switch (placed.status) {
@@ -128,7 +124,19 @@ CheckOutcome runCheck(const CheckRequest& request, const EllipseRegistry& regist
         outcome.skipped.push_back(placed.error);
         break;
     }
-  }
+  };
+  if (cache) {
+    for (const PlacementCache::OrderedEntry& item : cache->placingOrder()) {
+      place(item.index, item.entry->first, item.entry->second);
+    }
+  } else {
+    for (const core::EllipseRole pass : {core::EllipseRole::Link, core::EllipseRole::Obstacle}) {
+      std::size_t index = 0;
+      for (const auto& [name, stored] : registry.entries()) {
+        const std::size_t entry = index++;
+        if (stored.role() == pass) place(entry, name, stored);
+      }
+    }
   }
   outcome.unavailable_frames.assign(unavailable.begin(), unavailable.end());
   outcome.stale_frames.assign(stale.begin(), stale.end());

@@ -26,18 +26,21 @@ void PlacementCache::begin(const EllipseRegistry& registry, double global_paddin
   frames_.clear();
   frame_index_.clear();
   entries_.assign(registry.entries().size(), Entry{});
+  order_.clear();
+  order_.reserve(registry.entries().size());
+  for (const core::EllipseRole pass : {core::EllipseRole::Link, core::EllipseRole::Obstacle}) {
+    std::size_t index = 0;
+    for (const auto& entry : registry.entries()) {
+      if (entry.second.role() == pass) order_.push_back({index, &entry});
+      ++index;
+    }
+  }
 }
 
-const core::Ellipse* PlacementCache::reuse(std::size_t index, ScenePlacement& placement) {
-  if (index >= entries_.size() || !entries_[index].valid) return nullptr;
-  const Entry& entry = entries_[index];
-  Frame& frame = frames_[entry.frame];
-  if (frame.compared_in_check != check_) {
-    frame.compared_in_check = check_;
-    const FrameTransform& now = placement.lookup(frame.name);
-    frame.unchanged = placement.usable(now) && sameBits(now.fixed_from_frame, frame.transform);
-  }
-  return frame.unchanged ? &entry.ellipse : nullptr;
+void PlacementCache::compare(Frame& frame, ScenePlacement& placement) {
+  frame.compared_in_check = check_;
+  const FrameTransform& now = placement.lookup(frame.name);
+  frame.unchanged = placement.usable(now) && sameBits(now.fixed_from_frame, frame.transform);
 }
 
 void PlacementCache::store(std::size_t index, const std::string& frame,

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "ellipse_collision/app/ellipse_registry.h"
@@ -23,9 +24,27 @@ class PlacementCache {
   /// Starts one check of `registry`: forgets everything when the registry or the padding changed.
   void begin(const EllipseRegistry& registry, double global_padding_m);
 
+  /// One stored ellipse in placing order: its index in registry.entries() order (the index
+  /// reuse() and store() take) and the entry itself.
+  struct OrderedEntry {
+    std::size_t index;
+    const std::pair<const std::string, StoredEllipse>* entry;
+  };
+  /// The registry's entries as a check places them, links before obstacles (so the core reads
+  /// the scene once), kept from begin() to begin(): walking the map twice per check cost as
+  /// much as the scene check at 1,000 ellipses.
+  const std::vector<OrderedEntry>& placingOrder() const { return order_; }
+
   /// The projection of entry `index` (in registry().entries() order) made through the transform
   /// `placement` now reports for its frame, or nullptr when it must be projected (again).
-  const core::Ellipse* reuse(std::size_t index, ScenePlacement& placement);
+  /// Inline: it is asked for every stored ellipse of every check.
+  const core::Ellipse* reuse(std::size_t index, ScenePlacement& placement) {
+    if (index >= entries_.size() || !entries_[index].valid) return nullptr;
+    const Entry& entry = entries_[index];
+    Frame& frame = frames_[entry.frame];
+    if (frame.compared_in_check != check_) compare(frame, placement);
+    return frame.unchanged ? &entry.ellipse : nullptr;
+  }
 
   /// Remembers that entry `index`, in `frame`, projects to `ellipse` through `transform`.
   void store(std::size_t index, const std::string& frame, const Eigen::Isometry3d& transform,
@@ -44,6 +63,9 @@ class PlacementCache {
     core::Ellipse ellipse;
   };
 
+  /// Decides once per check whether `frame` still has the transform its entries were made with.
+  void compare(Frame& frame, ScenePlacement& placement);
+
   bool started_{false};
   std::uint64_t revision_{0};
   double global_padding_m_{0.0};
@@ -51,6 +73,7 @@ class PlacementCache {
   std::vector<Frame> frames_;
   std::map<std::string, std::uint32_t> frame_index_;
   std::vector<Entry> entries_;
+  std::vector<OrderedEntry> order_;
 };
 
 }  // namespace ellipse_collision::app
