@@ -14,6 +14,9 @@
 //   checkScene_unique_names  checkSceneOfUniqueNames(), as the node calls it: names vouched
 //                      for by the registry, so not hashed every cycle
 //   checkScene_warn    the same with a warning distance of 0.1 m (warning pairs via distance())
+//   indexed_obstacles  checkMoversAgainst(): the obstacles gridded once before timing (as the
+//                      node keeps them while they do not move), the links looked up in that grid
+//   indexed_build      building that IndexedObstacles: what a check costs when obstacles moved
 // Counters: pair_tests = overlap() calls per cycle, collisions = colliding pairs per cycle.
 
 #include <benchmark/benchmark.h>
@@ -30,6 +33,7 @@
 
 #include "bench_scenes.h"
 #include "ellipse_collision/core/broadphase.h"
+#include "ellipse_collision/core/indexed_obstacles.h"
 #include "ellipse_collision/core/overlap.h"
 #include "ellipse_collision/core/prepared_ellipse.h"
 #include "ellipse_collision/core/scene_check.h"
@@ -256,6 +260,34 @@ int main(int argc, char** argv) {
         state.counters["warnings"] = static_cast<double>(check.warnings.size());
       })->Unit(benchmark::kMicrosecond);
     }
+
+    // The obstacles gridded once; movers are the links.
+    std::vector<NamedEllipse> movers(named.begin(), named.begin() + kLinks);
+    std::vector<NamedEllipse> obstacle_entries(named.begin() + kLinks, named.end());
+    static std::map<int, IndexedObstacles> indexes;
+    static std::map<int, std::vector<NamedEllipse>> mover_sets;
+    const IndexedObstacles& index = indexes[obstacles] = IndexedObstacles(obstacle_entries);
+    const std::vector<NamedEllipse>& link_set = mover_sets[obstacles] = movers;
+    const SceneCheckResult indexed = checkMoversAgainst(link_set, index, SceneRules{});
+    if (!indexed.ok() || static_cast<long>(indexed.collisions.size()) != collisions) {
+      std::fprintf(stderr, "indexed_obstacles finds %zu collisions with %d obstacles, brute force %ld %s\n",
+                   indexed.collisions.size(), obstacles, collisions, indexed.error.c_str());
+      return 1;
+    }
+    benchmark::RegisterBenchmark(
+        ("scene/indexed_obstacles/" + std::to_string(obstacles)).c_str(),
+        [&link_set, &index, indexed](benchmark::State& state) {
+          for (auto _ : state) benchmark::DoNotOptimize(checkMoversAgainst(link_set, index, SceneRules{}));
+          state.counters["pair_tests"] = static_cast<double>(indexed.pair_tests);
+          state.counters["collisions"] = static_cast<double>(indexed.collisions.size());
+        })
+        ->Unit(benchmark::kMicrosecond);
+    benchmark::RegisterBenchmark(
+        ("scene/indexed_build/" + std::to_string(obstacles)).c_str(),
+        [obstacle_entries](benchmark::State& state) {
+          for (auto _ : state) benchmark::DoNotOptimize(IndexedObstacles(obstacle_entries));
+        })
+        ->Unit(benchmark::kMicrosecond);
   }
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();

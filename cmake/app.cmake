@@ -4,7 +4,8 @@
 add_library(ellipse_collision_app ${ELLIPSE_COLLISION_APP_SOURCES})
 target_include_directories(ellipse_collision_app PUBLIC include)
 target_link_libraries(ellipse_collision_app PUBLIC ellipse_collision_core)
-target_compile_options(ellipse_collision_app PRIVATE ${ELLIPSE_COLLISION_WARNINGS})
+target_compile_options(ellipse_collision_app PRIVATE ${ELLIPSE_COLLISION_WARNINGS}
+  ${ELLIPSE_COLLISION_LIBRARY_OPTIONS})
 
 install(TARGETS ellipse_collision_app
   ARCHIVE DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION}

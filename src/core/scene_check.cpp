@@ -9,6 +9,7 @@
 #include "ellipse_collision/core/broadphase.h"
 #include "ellipse_collision/core/distance.h"
 #include "ellipse_collision/core/eigenvalue_test.h"
+#include "ellipse_collision/core/indexed_obstacles.h"
 #include "ellipse_collision/core/number_format.h"
 #include "ellipse_collision/core/overlap.h"
 #include "ellipse_collision/core/prepared_ellipse.h"
@@ -113,6 +114,76 @@ bool pairWanted(const NamedEllipse& a, const NamedEllipse& b, const SceneRules& 
 
 namespace {
 
+/// The narrow phase and the answer, shared by every entry point: each candidate pair is tested
+/// in canonical order (so neither the input order nor the broadphase can change a rounding bit)
+/// and the answer is sorted, so it depends only on the set of pairs tested.
+class PairCollector {
+ public:
+  explicit PairCollector(double warning_distance) : warning_distance_(warning_distance) {}
+
+  void check(const NamedEllipse& first, const PreparedEllipse& prepared_first,
+             const NamedEllipse& second, const PreparedEllipse& prepared_second) {
+    ++pair_tests_;
+    if (overlap(prepared_first, prepared_second)) {
+      collisions_.push_back({&first, &second, contactScale(prepared_first, prepared_second), {}});
+      return;
+    }
+    if (warning_distance_ <= 0.0 ||
+        distanceLowerBound(first.ellipse, second.ellipse) >= warning_distance_) {
+      return;
+    }
+    const Clearance clearance = distance(first.ellipse, second.ellipse);
+    if (clearance.separated && clearance.distance < warning_distance_) {
+      warnings_.push_back({&first, &second, 0.0, clearance});
+    }
+  }
+
+  /// Movers among themselves (query-link always, link-link with self collision): the pairs of
+  /// their gridded candidate boxes.
+  void checkMoverPairs(const BoxGrid& grid, const std::vector<const NamedEllipse*>& movers,
+                       const std::vector<PreparedEllipse>& prepared, const SceneRules& rules,
+                       const std::set<std::string>& only_names) {
+    for (const IndexPair& pair : grid.overlappingPairs()) {
+      std::size_t i = pair.first, j = pair.second;
+      if (!comesFirst(*movers[i], *movers[j])) std::swap(i, j);
+      if (!pairWanted(*movers[i], *movers[j], rules, only_names)) continue;
+      check(*movers[i], prepared[i], *movers[j], prepared[j]);
+    }
+  }
+
+  SceneCheckResult finish() {
+    const auto canonical = [](const Found& x, const Found& y) {
+      return std::tie(x.first->role, x.first->name, x.second->role, x.second->name) <
+             std::tie(y.first->role, y.first->name, y.second->role, y.second->name);
+    };
+    std::sort(collisions_.begin(), collisions_.end(), canonical);
+    std::sort(warnings_.begin(), warnings_.end(), canonical);
+    SceneCheckResult result;
+    result.pair_tests = pair_tests_;
+    result.collisions.reserve(collisions_.size());
+    for (const Found& pair : collisions_) {
+      result.collisions.push_back({pair.first->name, pair.second->name, pair.contact_scale});
+    }
+    result.warnings.reserve(warnings_.size());
+    for (const Found& pair : warnings_) {
+      result.warnings.push_back(nearPair(*pair.first, *pair.second, pair.clearance));
+    }
+    return result;
+  }
+
+ private:
+  struct Found {
+    const NamedEllipse* first;
+    const NamedEllipse* second;
+    double contact_scale;  // collisions only
+    Clearance clearance;   // warnings only
+  };
+  double warning_distance_;
+  std::size_t pair_tests_{0};
+  std::vector<Found> collisions_;
+  std::vector<Found> warnings_;
+};
+
 /// checkScene() (`check_names`) and checkSceneOfUniqueNames(). Every entry is validated once, in
 /// index order, so the first problem reported is the same whichever way the scene is read.
 /// With `movers_first` it tries to read the scene once: the leading queries and links are
@@ -148,34 +219,7 @@ SceneCheckResult checkSceneWith(const std::vector<NamedEllipse>& ellipses,
     mover_boxes.push_back(candidateBox(prepared_movers.back(), warning_distance));
   }
   const BoxGrid grid(std::move(mover_boxes));
-
-  // The sort below makes the answer independent of the order in which candidates arrive.
-  struct Found {
-    const NamedEllipse* first;
-    const NamedEllipse* second;
-    double contact_scale;  // collisions only
-    Clearance clearance;   // warnings only
-  };
-  std::vector<Found> collisions;
-  std::vector<Found> warnings;
-  // The narrow phase of one candidate pair, always in canonical order, so that neither the input
-  // order nor the broadphase can change a rounding bit.
-  const auto check = [&](const NamedEllipse& first, const PreparedEllipse& prepared_first,
-                         const NamedEllipse& second, const PreparedEllipse& prepared_second) {
-    ++result.pair_tests;
-    if (overlap(prepared_first, prepared_second)) {
-      collisions.push_back({&first, &second, contactScale(prepared_first, prepared_second), {}});
-      return;
-    }
-    if (warning_distance <= 0.0 ||
-        distanceLowerBound(first.ellipse, second.ellipse) >= warning_distance) {
-      return;
-    }
-    const Clearance clearance = distance(first.ellipse, second.ellipse);
-    if (clearance.separated && clearance.distance < warning_distance) {
-      warnings.push_back({&first, &second, 0.0, clearance});
-    }
-  };
+  PairCollector pairs(warning_distance);
 
   // Movers against obstacles: a mover (query or link) always comes first in a pair with an
   // obstacle. The obstacle's box needs no trigonometry, and it is prepared only if needed.
@@ -201,35 +245,66 @@ SceneCheckResult checkSceneWith(const std::vector<NamedEllipse>& ellipses,
     for (const std::size_t i : found) {
       if (!pairWanted(*movers[i], obstacle, rules, only_names)) continue;
       if (!prepared_obstacle) prepared_obstacle.emplace(obstacle.ellipse);
-      check(*movers[i], prepared_movers[i], obstacle, *prepared_obstacle);
+      pairs.check(*movers[i], prepared_movers[i], obstacle, *prepared_obstacle);
     }
   }
-  // Movers among themselves: query-link always, link-link with self collision.
-  for (const IndexPair& pair : grid.overlappingPairs()) {
-    std::size_t i = pair.first, j = pair.second;
-    if (!comesFirst(*movers[i], *movers[j])) std::swap(i, j);
-    if (!pairWanted(*movers[i], *movers[j], rules, only_names)) continue;
-    check(*movers[i], prepared_movers[i], *movers[j], prepared_movers[j]);
-  }
-
-  const auto canonical = [](const Found& x, const Found& y) {
-    return std::tie(x.first->role, x.first->name, x.second->role, x.second->name) <
-           std::tie(y.first->role, y.first->name, y.second->role, y.second->name);
-  };
-  std::sort(collisions.begin(), collisions.end(), canonical);
-  std::sort(warnings.begin(), warnings.end(), canonical);
-  result.collisions.reserve(collisions.size());
-  for (const Found& pair : collisions) {
-    result.collisions.push_back({pair.first->name, pair.second->name, pair.contact_scale});
-  }
-  result.warnings.reserve(warnings.size());
-  for (const Found& pair : warnings) {
-    result.warnings.push_back(nearPair(*pair.first, *pair.second, pair.clearance));
-  }
-  return result;
+  pairs.checkMoverPairs(grid, movers, prepared_movers, rules, only_names);
+  return pairs.finish();
 }
 
 }  // namespace
+
+SceneCheckResult checkMoversAgainst(const std::vector<NamedEllipse>& movers,
+                                    const IndexedObstacles& obstacles, const SceneRules& rules,
+                                    const std::set<std::string>& only_names) {
+  SceneCheckResult result;
+  result.error = warningDistanceProblem(rules);
+  if (result.error.empty() && !obstacles.error().empty()) {
+    result.error = "obstacles refused: " + obstacles.error();
+  }
+  if (!result.error.empty()) return result;
+  const double warning_distance = rules.warning_distance;
+
+  std::vector<const NamedEllipse*> mover_list;
+  std::vector<PreparedEllipse> prepared_movers;
+  std::vector<BoundingBox> mover_boxes;
+  mover_list.reserve(movers.size());
+  prepared_movers.reserve(movers.size());
+  mover_boxes.reserve(movers.size());
+  for (std::size_t i = 0; i < movers.size(); ++i) {
+    const NamedEllipse& entry = movers[i];
+    const auto where = [i] { return "movers[" + std::to_string(i) + "]"; };
+    if (entry.role == EllipseRole::Obstacle) {
+      result.error = where() + " ('" + entry.name + "') is an obstacle";
+      return result;
+    }
+    if (!isValid(entry.ellipse)) {
+      result.error = where() + " ('" + entry.name + "'): " + invalidReason(entry.ellipse);
+      return result;
+    }
+    mover_list.push_back(&entry);
+    prepared_movers.emplace_back(entry.ellipse);
+    mover_boxes.push_back(candidateBox(prepared_movers.back(), warning_distance));
+  }
+
+  // The pairs checkScene() finds by streaming each obstacle's box through the movers' grid,
+  // found the other way round: each mover's box looked up in the obstacles' grid (the overlap
+  // test of two boxes is symmetric). An obstacle is prepared per pair: few meet a mover.
+  PairCollector pairs(warning_distance);
+  const std::vector<NamedEllipse>& indexed = obstacles.obstacles();
+  std::vector<std::size_t> found;
+  for (std::size_t i = 0; i < mover_list.size(); ++i) {
+    obstacles.grid().overlapping(mover_boxes[i], &found);
+    for (const std::size_t k : found) {
+      const NamedEllipse& obstacle = indexed[k];
+      if (!pairWanted(*mover_list[i], obstacle, rules, only_names)) continue;
+      pairs.check(*mover_list[i], prepared_movers[i], obstacle, PreparedEllipse(obstacle.ellipse));
+    }
+  }
+  pairs.checkMoverPairs(BoxGrid(std::move(mover_boxes)), mover_list, prepared_movers, rules,
+                        only_names);
+  return pairs.finish();
+}
 
 SceneCheckResult checkScene(const std::vector<NamedEllipse>& ellipses, const SceneRules& rules,
                             const std::set<std::string>& only_names) {

@@ -14,6 +14,7 @@
 
 #include "ellipse_collision/core/distance.h"
 #include "ellipse_collision/core/eigenvalue_test.h"
+#include "ellipse_collision/core/indexed_obstacles.h"
 #include "ellipse_collision/core/overlap.h"
 #include "ellipse_collision/core/scene_check.h"
 #include "brute_force_scene.h"
@@ -24,6 +25,17 @@ namespace {
 SceneCheckResult bruteForce(const std::vector<NamedEllipse>& scene, const SceneRules& rules,
                             const std::set<std::string>& only_names) {
   return test::bruteForceScene(scene, rules, only_names);
+}
+
+/// The scene checked the node's way when its obstacles stay put: obstacles gridded once
+/// (IndexedObstacles), the queries and links looked up in that grid.
+SceneCheckResult checkIndexed(const std::vector<NamedEllipse>& scene, const SceneRules& rules,
+                              const std::set<std::string>& only_names) {
+  std::vector<NamedEllipse> movers, obstacles;
+  for (const NamedEllipse& entry : scene) {
+    (entry.role == EllipseRole::Obstacle ? obstacles : movers).push_back(entry);
+  }
+  return checkMoversAgainst(movers, IndexedObstacles(std::move(obstacles)), rules, only_names);
 }
 
 bool sameBits(double x, double y) { return std::memcmp(&x, &y, sizeof(double)) == 0; }
@@ -147,6 +159,11 @@ TEST(SceneBroadphase, MatchesBruteForceOnRandomScenesWithRulesAndWarnings) {
     const SceneCheckResult unique = checkSceneOfUniqueNames(scene, rules, only_names);
     expectSame(unique, expected, "checkSceneOfUniqueNames, trial " + std::to_string(trial));
     if (HasFatalFailure()) return;
+    // The obstacles gridded instead of streamed: the same bits and the same pairs tested.
+    const SceneCheckResult indexed = checkIndexed(scene, rules, only_names);
+    expectSame(indexed, expected, "checkMoversAgainst, trial " + std::to_string(trial));
+    if (HasFatalFailure()) return;
+    EXPECT_EQ(indexed.pair_tests, unique.pair_tests) << "trial " << trial;
     collisions += expected.collisions.size();
     warnings += expected.warnings.size();
     allowed_hits += unrestricted.collisions.size() + unrestricted.warnings.size() -
@@ -187,6 +204,8 @@ TEST(SceneBroadphase, WarningsAtTheWarningDistanceMatchBruteForce) {
     rules.warning_distance = warning_distance;
     const SceneCheckResult expected = bruteForce(scene, rules, {});
     expectSame(checkScene(scene, rules), expected, "w = " + std::to_string(warning_distance));
+    expectSame(checkIndexed(scene, rules, {}), expected,
+               "checkMoversAgainst, w = " + std::to_string(warning_distance));
     // The gaps fall on either side of the warning distance.
     std::size_t placed = 0;
     for (const NearPair& pair : expected.warnings) {
@@ -258,6 +277,37 @@ TEST(SceneBroadphase, FiftyLinksAmongTenThousandObstaclesTestFewPairs) {
               << all_pairs << " wanted pairs, " << actual.collisions.size() << " collisions, "
               << actual.warnings.size() << " warnings\n";
   }
+}
+
+TEST(SceneBroadphase, IndexedObstaclesRefuseBadEntriesAndTheCheckSaysSo) {
+  const Ellipse bad{{0.0, 0.0}, -1.0, 1.0, 0.0};
+  const IndexedObstacles refused({{"crate", EllipseRole::Obstacle, {{1, 0}, 1, 1, 0}},
+                                  {"rock", EllipseRole::Obstacle, bad}});
+  EXPECT_EQ(refused.error().rfind("obstacles[1] ('rock'): radius_x", 0), 0u) << refused.error();
+  EXPECT_TRUE(refused.obstacles().empty());
+  const std::vector<NamedEllipse> arm = {{"arm", EllipseRole::Link, {{0, 0}, 1, 1, 0}}};
+  SceneCheckResult result = checkMoversAgainst(arm, refused, SceneRules{});
+  EXPECT_EQ(result.error.rfind("obstacles refused: obstacles[1] ('rock')", 0), 0u) << result.error;
+
+  const IndexedObstacles link_among_obstacles({{"arm2", EllipseRole::Link, {{0, 0}, 1, 1, 0}}});
+  EXPECT_EQ(link_among_obstacles.error(), "obstacles[0] ('arm2'): role must be Obstacle");
+
+  const IndexedObstacles crate({{"crate", EllipseRole::Obstacle, {{1, 0}, 1, 1, 0}}});
+  ASSERT_TRUE(crate.error().empty());
+  result = checkMoversAgainst({{"crate2", EllipseRole::Obstacle, {{0, 0}, 1, 1, 0}}}, crate,
+                              SceneRules{});
+  EXPECT_EQ(result.error, "movers[0] ('crate2') is an obstacle");
+  result = checkMoversAgainst({{"arm", EllipseRole::Link, bad}}, crate, SceneRules{});
+  EXPECT_EQ(result.error.rfind("movers[0] ('arm'): radius_x", 0), 0u) << result.error;
+  SceneRules negative;
+  negative.warning_distance = -1.0;
+  EXPECT_NE(checkMoversAgainst(arm, crate, negative).error.find("warning_distance"),
+            std::string::npos);
+  // And a good one answers: the arm meets the crate.
+  result = checkMoversAgainst(arm, crate, SceneRules{});
+  ASSERT_TRUE(result.ok()) << result.error;
+  ASSERT_EQ(result.collisions.size(), 1u);
+  EXPECT_EQ(result.collisions[0].name_b, "crate");
 }
 
 }  // namespace

@@ -1,0 +1,45 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "ellipse_collision/core/broadphase.h"
+#include "ellipse_collision/core/scene_check.h"
+
+namespace ellipse_collision::core {
+
+/// Obstacles validated and gridded once, for a caller whose obstacles stay put from one check to
+/// the next while its links move (obstacles in the map, a robot driving through them): each check
+/// then costs in proportion to the movers and the obstacles near them (checkMoversAgainst()),
+/// not to all obstacles. The grid is a BoxGrid over the obstacles' boundingCircleBox()es, the
+/// very boxes checkScene() streams, so the pairs tested and the answer are the same bit for bit.
+class IndexedObstacles {
+ public:
+  /// No obstacles.
+  IndexedObstacles();
+  /// Validates every entry (role Obstacle and a valid ellipse; the names the caller vouches for,
+  /// as for checkSceneOfUniqueNames()) and grids them. A refused set keeps no obstacle and says
+  /// why in error(), naming the entry: "obstacles[3] ('rock'): radius_x = -1 must be > 0".
+  explicit IndexedObstacles(std::vector<NamedEllipse> obstacles);
+
+  const std::vector<NamedEllipse>& obstacles() const { return obstacles_; }
+  const BoxGrid& grid() const { return grid_; }
+  /// Empty unless the obstacles were refused.
+  const std::string& error() const { return error_; }
+
+ private:
+  std::vector<NamedEllipse> obstacles_;
+  std::string error_;  // before grid_: the grid's initialiser fills it
+  BoxGrid grid_;
+};
+
+/// checkSceneOfUniqueNames() of the scene `movers` (queries and links) plus obstacles.obstacles(),
+/// the same answer bit for bit (pair_tests included), with each mover's candidate box looked up
+/// in the obstacles' grid instead of every obstacle streamed past the movers. Refused like
+/// checkSceneOfUniqueNames() (entries named "movers[i]"), also for an obstacle among the movers
+/// or obstacles that were refused.
+SceneCheckResult checkMoversAgainst(const std::vector<NamedEllipse>& movers,
+                                    const IndexedObstacles& obstacles, const SceneRules& rules,
+                                    const std::set<std::string>& only_names = {});
+
+}  // namespace ellipse_collision::core
