@@ -165,7 +165,8 @@ void CollisionNode::handleTimeJumpAndExpiry() {
 }
 
 const app::CheckOutcome& CollisionNode::runFullCheck(const ros::Duration& timeout,
-                                              const std::string& min_distance_of) {
+                                                     StatePublishing publishing,
+                                                     const std::string& min_distance_of) {
   handleTimeJumpAndExpiry();
   const auto start = std::chrono::steady_clock::now();
   app::CheckRequest request;
@@ -201,12 +202,24 @@ const app::CheckOutcome& CollisionNode::runFullCheck(const ros::Duration& timeou
   if (!checked.skipped.empty()) {
     ROS_WARN_STREAM_THROTTLE(5.0, "ellipse_collision: skipped " << app::joinText(checked.skipped, "; "));
   }
-  publishState();
+  publishState(config_.rate_hz > 0.0 ? publishing : StatePublishing::Always);
   publishMarkers();
   return checked;
 }
 
-void CollisionNode::publishState() {
+namespace {
+
+/// Everything of the state but its stamp.
+bool sameContent(const CollisionState& a, const CollisionState& b) {
+  return a.header.frame_id == b.header.frame_id && a.in_collision == b.in_collision &&
+         a.complete == b.complete && a.collisions == b.collisions && a.warnings == b.warnings &&
+         a.unavailable_frames == b.unavailable_frames && a.stale_frames == b.stale_frames &&
+         a.predicted == b.predicted;
+}
+
+}  // namespace
+
+void CollisionNode::publishState(StatePublishing publishing) {
   CollisionState msg;
   msg.header.stamp = state_.stamp;
   msg.header.frame_id = config_.fixed_frame;
@@ -217,7 +230,13 @@ void CollisionNode::publishState() {
   msg.stale_frames = state_.outcome.stale_frames;
   msg.complete = state_.outcome.complete;
   msg.predicted = toMsg(state_.outcome.predicted);
+  if (publishing == StatePublishing::OnChange && state_published_ &&
+      sameContent(msg, last_state_msg_)) {
+    return;
+  }
   collisions_pub_.publish(msg);
+  last_state_msg_ = std::move(msg);
+  state_published_ = true;
 }
 
 void CollisionNode::publishMarkers() {
@@ -236,7 +255,7 @@ void CollisionNode::publishMarkers() {
 
 void CollisionNode::onTimer(const ros::TimerEvent& /*event*/) {
   // No waiting for transforms: a periodic check must not stall on a missing frame.
-  runFullCheck(ros::Duration(0));
+  runFullCheck(ros::Duration(0), StatePublishing::Always);
 }
 
 void CollisionNode::onMarkerSubscriber(const ros::SingleSubscriberPublisher& subscriber) {
@@ -270,8 +289,8 @@ bool CollisionNode::onCheckCollisions(CheckCollisions::Request& request,
   response.message = app::validateCheckRequest(check, registry_, settings_.global_padding_m);
   if (!response.message.empty()) return true;
 
-  // A full check at the latest time is what the topics show: record and publish it too (with
-  // rate = 0 this is the only way they are updated).
+  // A full check at the latest time is what the topics show: record it, publish the state when
+  // it changed (with rate = 0, every time: then this is the only way the topics are updated).
   const ros::Duration timeout(config_.tf_timeout_s);
   const bool full_check = request.names.empty() && request.query.empty() && request.stamp.isZero();
   if (!full_check) handleTimeJumpAndExpiry();
@@ -286,7 +305,8 @@ bool CollisionNode::onCheckCollisions(CheckCollisions::Request& request,
     if (partial.error.empty()) predict(partial, check, request.stamp);
   }
   const app::CheckOutcome& outcome =
-      full_check ? runFullCheck(timeout, check.min_distance_of) : partial;
+      full_check ? runFullCheck(timeout, StatePublishing::OnChange, check.min_distance_of)
+                 : partial;
   if (!outcome.error.empty()) {
     ROS_ERROR_STREAM_COND(outcome.error.rfind("internal error", 0) == 0,
                           "ellipse_collision: " << outcome.error);

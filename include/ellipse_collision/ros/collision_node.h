@@ -42,8 +42,14 @@ class CollisionNode {
   /// Clears the tf buffer when ros::Time went backwards (a looping bag) and drops topic
   /// obstacles older than ~obstacle_timeout; every check starts here.
   void handleTimeJumpAndExpiry();
+  /// When a full check publishes ~collisions: the periodic check every time (the topic's rhythm
+  /// is `rate`); a service call only when the state differs from the one last published, or
+  /// always when there is no periodic check (rate 0). A client calling at 1 kHz then neither
+  /// floods the topic nor pays a serialisation and a wake-up of the publishing thread per call.
+  enum class StatePublishing { Always, OnChange };
   /// The outcome is state_.outcome on success, failed_check_ otherwise (no copy per cycle).
   const app::CheckOutcome& runFullCheck(const ros::Duration& timeout,
+                                 StatePublishing publishing,
                                  const std::string& min_distance_of = "");
   /// Restores the runtime obstacles of an earlier run of this node in the same launch session
   /// (roslaunch's /run_id) from ~obstacle_store; a missing, corrupt or foreign store is logged and
@@ -51,7 +57,7 @@ class CollisionNode {
   void restoreObstacles();
   /// Writes the runtime obstacles to ~obstacle_store (atomically, durable on return); "" or why not.
   std::string persistObstacles();
-  void publishState();
+  void publishState(StatePublishing publishing);
   void publishMarkers();
 
   void onTimer(const ros::TimerEvent& event);
@@ -94,6 +100,8 @@ class CollisionNode {
 
   CollisionMarkers markers_;
   PublishedState state_;
+  CollisionState last_state_msg_;  ///< the ~collisions message last published
+  bool state_published_{false};
   std::string last_obstacles_error_;  ///< why the last ~obstacles message was refused, if it was
   std::uint64_t full_checks_{0};
   std::map<std::string, ros::Time> missing_since_;  ///< frame -> first full check it was missing
