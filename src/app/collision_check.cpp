@@ -96,9 +96,13 @@ CheckOutcome runCheck(const CheckRequest& request, const EllipseRegistry& regist
   outcome.placed.reserve(registry.entries().size() + queries.size());
   // Links before obstacles, so the core reads the scene once (checkScene()); each entry's index
   // counted in registry order for the cache.
+  std::size_t reused_obstacles = 0, obstacles = 0;
   const auto place = [&](std::size_t entry, const std::string& name, const StoredEllipse& stored) {
+    const bool obstacle = stored.role() == core::EllipseRole::Obstacle;
+    obstacles += obstacle;
     if (const core::Ellipse* reused = cache ? cache->reuse(entry, placement) : nullptr) {
       outcome.placed.push_back({name, stored.role(), *reused});
+      reused_obstacles += obstacle;
       return;
     }
     ScenePlacement::Placement placed = placement.place(stored.spec, stored.role());
@@ -155,8 +159,21 @@ CheckOutcome runCheck(const CheckRequest& request, const EllipseRegistry& regist
     return outcome;
   };
   const std::set<std::string> only_names(request.names.begin(), request.names.end());
+  // Obstacles that stood still since the last check need not stream past the links again: the
+  // cache's grid of them answers the same bits (core::checkMoversAgainst()).
+  const core::IndexedObstacles* standing = nullptr;
+  const auto first_obstacle =
+      std::find_if(scene.begin(), scene.end(), [](const core::NamedEllipse& e) {
+        return e.role == core::EllipseRole::Obstacle;
+      });
+  if (cache) {
+    standing = cache->standingObstacles().update(
+        reused_obstacles == obstacles, first_obstacle, scene.cend());
+  }
   core::SceneCheckResult result =
-      core::checkSceneOfUniqueNames(scene, settings.rules, only_names);
+      standing ? core::checkMoversAgainst(std::vector<core::NamedEllipse>(scene.begin(), first_obstacle),
+                                          *standing, settings.rules, only_names)
+               : core::checkSceneOfUniqueNames(scene, settings.rules, only_names);
   if (!result.ok()) {
     // Requests are validated before they get here, so this is a bug: say so.
     outcome.error = "internal error: " + result.error;

@@ -3,6 +3,8 @@
 // and the answer lists what was skipped and why. Expected values are worked out by hand.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <cstring>
 #include <map>
 
@@ -295,6 +297,17 @@ void expectSameOutcome(const CheckOutcome& cached, const CheckOutcome& fresh, in
     EXPECT_EQ(cached.collisions[i].name_b, fresh.collisions[i].name_b);
     EXPECT_TRUE(sameBits(cached.collisions[i].contact_scale, fresh.collisions[i].contact_scale));
   }
+  ASSERT_EQ(cached.warnings.size(), fresh.warnings.size()) << "cycle " << cycle;
+  for (std::size_t i = 0; i < fresh.warnings.size(); ++i) {
+    const core::NearPair& a = cached.warnings[i];
+    const core::NearPair& b = fresh.warnings[i];
+    EXPECT_EQ(a.name_a, b.name_a) << "cycle " << cycle;
+    EXPECT_EQ(a.name_b, b.name_b) << "cycle " << cycle;
+    EXPECT_TRUE(sameBits(a.distance, b.distance) && sameBits(a.point_a.x(), b.point_a.x()) &&
+                sameBits(a.point_a.y(), b.point_a.y()) && sameBits(a.point_b.x(), b.point_b.x()) &&
+                sameBits(a.point_b.y(), b.point_b.y()))
+        << "cycle " << cycle << " " << a.name_a << " / " << a.name_b;
+  }
 }
 
 TEST(PlacementCache, SameAnswerBitForBitAsProjectingEveryCycleWhileFramesMoveAndVanish) {
@@ -338,6 +351,58 @@ TEST(PlacementCache, SameAnswerBitForBitAsProjectingEveryCycleWhileFramesMoveAnd
     collisions += fresh.collisions.size();
   }
   EXPECT_GT(collisions, 20u) << "the comparison must see collisions";
+}
+
+TEST(PlacementCache, StandingObstaclesAreGriddedOnceAndGiveTheSameBits) {
+  // A robot arm sweeping through 300 obstacles that stand still in the map, except for a cart
+  // that moves at cycle 60 and an obstacle added at cycle 90: after kChecksBeforeIndexing still
+  // checks the cache checks the links against its grid of the obstacles; every answer, warnings
+  // included, is the one of projecting and streaming everything afresh.
+  EllipseRegistry registry({circle("body", "base_link", 0.0, 0.0, 0.5),
+                            circle("hand", "arm", 0.6, 0.0, 0.15)},
+                           {});
+  std::vector<EllipseSpec> obstacles;
+  for (int i = 0; i < 300; ++i) {
+    obstacles.push_back(circle("rock" + std::to_string(i), i % 50 == 0 ? "cart" : "map",
+                               0.13 * (i % 30) - 2.0, 0.21 * (i / 30) - 1.0, 0.04 + 0.01 * (i % 5)));
+  }
+  ASSERT_EQ(registry.addObstacles(obstacles, "obstacles"), "");
+  CheckSettings settings;
+  settings.fixed_frame = "map";
+  settings.rules.warning_distance = 0.05;
+  std::map<std::string, int> lookups;
+  PoseTable table{{{"map", Eigen::Isometry3d::Identity()}, {"base_link", pose(0, 0, 0)},
+                   {"arm", pose(0, 0, 0)}, {"cart", pose(0.1, 0, 0)}},
+                  &lookups};
+  PlacementCache cache;
+  std::size_t collisions = 0, warnings = 0, indexed_checks = 0;
+  const std::size_t still = StandingObstacles::kChecksBeforeIndexing;
+  for (int cycle = 0; cycle < 130; ++cycle) {
+    table.poses["arm"] = pose(0.03 * cycle - 1.5, 0.4 * std::sin(0.2 * cycle), 0.1 * cycle);
+    if (cycle == 60) table.poses["cart"] = pose(0.3, 0.05, 0.2);
+    if (cycle == 90) {
+      ASSERT_EQ(registry.addObstacles({circle("late", "map", 0.2, 0.0, 0.3)}, "obstacles"), "");
+    }
+    const CheckOutcome cached = runCheck(CheckRequest{}, registry, settings,
+                                         TransformLookup(table), 0.0, &cache);
+    const CheckOutcome fresh =
+        runCheck(CheckRequest{}, registry, settings, TransformLookup(table), 0.0);
+    expectSameOutcome(cached, fresh, cycle);
+    if (HasFatalFailure()) return;
+    collisions += fresh.collisions.size();
+    warnings += fresh.warnings.size();
+    const bool indexed = cache.standingObstacles().indexed();
+    indexed_checks += indexed;
+    // Gridded exactly when the obstacles have stood still long enough: from cycle `still`
+    // (cycle 0 projects everything), not right after the cart moved or the registry changed.
+    const bool expected = (cycle >= static_cast<int>(still) && cycle < 60) ||
+                          (cycle >= 60 + static_cast<int>(still) && cycle < 90) ||
+                          cycle >= 90 + static_cast<int>(still);
+    EXPECT_EQ(indexed, expected) << "cycle " << cycle;
+  }
+  EXPECT_GT(collisions, 50u) << "the comparison must see collisions";
+  EXPECT_GT(warnings, 50u) << "the comparison must see warnings";
+  EXPECT_GT(indexed_checks, 60u);
 }
 
 TEST(PlacementCache, ReusedProjectionsLookUpEachFrameOncePerCheck) {

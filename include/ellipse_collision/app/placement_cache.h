@@ -9,6 +9,7 @@
 
 #include "ellipse_collision/app/ellipse_registry.h"
 #include "ellipse_collision/app/scene_placement.h"
+#include "ellipse_collision/app/standing_obstacles.h"
 #include "ellipse_collision/core/ellipse.h"
 
 namespace ellipse_collision::app {
@@ -46,6 +47,9 @@ class PlacementCache {
     return frame.unchanged ? &entry.ellipse : nullptr;
   }
 
+  /// The obstacles' grid, kept with the projections it was made of.
+  StandingObstacles& standingObstacles() { return standing_; }
+
   /// Remembers that entry `index`, in `frame`, projects to `ellipse` through `transform`.
   void store(std::size_t index, const std::string& frame, const Eigen::Isometry3d& transform,
              const core::Ellipse& ellipse);
@@ -74,6 +78,7 @@ class PlacementCache {
   std::map<std::string, std::uint32_t> frame_index_;
   std::vector<Entry> entries_;
   std::vector<OrderedEntry> order_;
+  StandingObstacles standing_;
 };
 
 }  // namespace ellipse_collision::app

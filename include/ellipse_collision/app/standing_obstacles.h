@@ -1,0 +1,38 @@
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+#include "ellipse_collision/core/indexed_obstacles.h"
+
+namespace ellipse_collision::app {
+
+/// The obstacles' grid (core::IndexedObstacles), kept from one full check to the next while the
+/// obstacles stand still, so that a check costs in proportion to the links and the obstacles near
+/// them, not to all obstacles. Gridding costs about ten streamed checks (bench_scene_check:
+/// indexed_build), so the grid is built only once the obstacles have stood still for
+/// kChecksBeforeIndexing checks: obstacles that change every few checks (a scan-fed topic) keep
+/// the streamed check and pay nothing for gridding.
+class StandingObstacles {
+ public:
+  static constexpr std::size_t kChecksBeforeIndexing = 16;
+
+  /// After one check's placement: `unchanged` says whether its obstacles are exactly the ones
+  /// of the previous check (same registry, every obstacle reused bit for bit), `obstacles` are
+  /// this check's placed obstacles. Returns the grid to check the movers against, or nullptr to
+  /// stream the obstacles.
+  const core::IndexedObstacles* update(bool unchanged,
+                                       std::vector<core::NamedEllipse>::const_iterator begin,
+                                       std::vector<core::NamedEllipse>::const_iterator end);
+
+  /// Checks in a row whose obstacles stood still (for tests and diagnostics).
+  std::size_t standingChecks() const { return standing_checks_; }
+  bool indexed() const { return index_.has_value(); }
+
+ private:
+  std::size_t standing_checks_{0};
+  std::optional<core::IndexedObstacles> index_;
+};
+
+}  // namespace ellipse_collision::app
