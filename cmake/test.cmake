@@ -116,6 +116,9 @@ ellipse_collision_add_rostest(test_node_services test/ros/node_services.test
   test/ros/test_node_services.cpp)
 ellipse_collision_add_rostest(test_node_topics test/ros/node_topics.test
   test/ros/test_node_topics.cpp)
+# When ~collisions is published: at `rate`, and on a full call only when the state changed.
+ellipse_collision_add_rostest(test_state_publishing test/ros/state_publishing.test
+  test/ros/test_state_publishing.cpp)
 ellipse_collision_add_rostest(test_stale_data test/ros/stale_data.test
   test/ros/test_stale_data.cpp)
 ellipse_collision_add_rostest(test_time_jump test/ros/time_jump.test

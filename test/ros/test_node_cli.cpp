@@ -304,6 +304,21 @@ TEST_F(NodeCli, WithRateZeroTheTopicsChangeOnlyOnAFullCheck) {
         },
         10.0));
   }
+  {
+    // With rate 0 every full call is the topic's only update, so each one publishes, even with
+    // nothing changed: the stamp says how fresh the state is.
+    Recorder<CollisionState> collisions(nh_, nodeTopic("collisions"));
+    ASSERT_TRUE(waitUntil([&] { return collisions.count() >= 1; }, 10.0));  // the latched one
+    ros::ServiceClient check = nh_.serviceClient<CheckCollisions>(nodeTopic("check_collisions"));
+    for (int call = 0; call < 2; ++call) {
+      CheckCollisions srv;
+      ASSERT_TRUE(check.call(srv) && srv.response.success);
+    }
+    ASSERT_TRUE(waitUntil([&] { return collisions.count() >= 3; }, 10.0))
+        << "an unchanged full call was not published with rate 0";
+    const std::vector<CollisionState> states = collisions.all();
+    EXPECT_LT(states[states.size() - 2].header.stamp, states.back().header.stamp);
+  }
   RemoveObstacles remove;
   remove.request.names = {"cli_rock"};
   ASSERT_TRUE(ros::service::call(nodeTopic("remove_obstacles"), remove) && remove.response.success);
