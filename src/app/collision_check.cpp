@@ -92,8 +92,25 @@ CheckOutcome runCheck(const CheckRequest& request, const EllipseRegistry& regist
 
   std::set<std::string> unavailable;
   std::set<std::string> stale;
-  if (cache) cache->begin(registry, settings.global_padding_m);
+  if (cache) {
+    cache->begin(registry, settings.global_padding_m);
+    outcome.placed = cache->takeRecycled();
+  }
+  // A recycled vector holds every stored ellipse's name and role in placing order: entry after
+  // entry only the geometry is written, until an entry is not placed (then the rest is dropped
+  // and appended as without one).
+  std::size_t rewrite_end = outcome.placed.size();
   outcome.placed.reserve(registry.entries().size() + queries.size());
+  std::size_t position = 0;
+  const auto put = [&](const std::string& name, core::EllipseRole role,
+                       const core::Ellipse& ellipse) {
+    if (position < rewrite_end) {
+      outcome.placed[position++].ellipse = ellipse;
+    } else {
+      outcome.placed.push_back({name, role, ellipse});
+      ++position;
+    }
+  };
   // Links before obstacles, so the core reads the scene once (checkScene()); each entry's index
   // counted in registry order for the cache.
   std::size_t reused_obstacles = 0, obstacles = 0;
@@ -101,11 +118,15 @@ CheckOutcome runCheck(const CheckRequest& request, const EllipseRegistry& regist
     const bool obstacle = stored.role() == core::EllipseRole::Obstacle;
     obstacles += obstacle;
     if (const core::Ellipse* reused = cache ? cache->reuse(entry, placement) : nullptr) {
-      outcome.placed.push_back({name, stored.role(), *reused});
+      put(name, stored.role(), *reused);
       reused_obstacles += obstacle;
       return;
     }
-    ScenePlacement::Placement placed = placement.place(stored.spec, stored.role());
+    const ScenePlacement::Placement placed = placement.place(stored.spec, stored.role());
+    if (placed.status != ScenePlacement::Status::Placed && position < rewrite_end) {
+      outcome.placed.resize(position);
+      rewrite_end = position;
+    }
     switch (placed.status) {
       case ScenePlacement::Status::Placed:
         if (cache) {
@@ -113,7 +134,7 @@ CheckOutcome runCheck(const CheckRequest& request, const EllipseRegistry& regist
                        placement.lookup(stored.spec.frame_id).fixed_from_frame,
                        placed.ellipse.ellipse);
         }
-        outcome.placed.push_back(std::move(placed.ellipse));
+        put(name, stored.role(), placed.ellipse.ellipse);
         break;
       case ScenePlacement::Status::FrameUnavailable:
         unavailable.insert(stored.spec.frame_id);
@@ -142,6 +163,7 @@ CheckOutcome runCheck(const CheckRequest& request, const EllipseRegistry& regist
       }
     }
   }
+  if (cache && outcome.skipped.empty()) cache->produced(outcome.placed);
   outcome.unavailable_frames.assign(unavailable.begin(), unavailable.end());
   outcome.stale_frames.assign(stale.begin(), stale.end());
   outcome.complete = outcome.skipped.empty();

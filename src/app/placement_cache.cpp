@@ -1,5 +1,6 @@
 #include "ellipse_collision/app/placement_cache.h"
 
+#include <algorithm>
 #include <cstring>
 
 namespace ellipse_collision::app {
@@ -25,6 +26,8 @@ void PlacementCache::begin(const EllipseRegistry& registry, double global_paddin
   global_padding_m_ = global_padding_m;
   frames_.clear();
   frame_index_.clear();
+  produced_.clear();
+  recycled_.clear();
   entries_.assign(registry.entries().size(), Entry{});
   order_.clear();
   order_.reserve(registry.entries().size());
@@ -35,6 +38,30 @@ void PlacementCache::begin(const EllipseRegistry& registry, double global_paddin
       ++index;
     }
   }
+}
+
+void PlacementCache::produced(const std::vector<core::NamedEllipse>& placed) {
+  if (placed.size() != order_.size() || placed.empty()) return;
+  if (std::find(produced_.begin(), produced_.end(), placed.data()) != produced_.end()) return;
+  // A few at most: the node's current and previous state. More means buffers were dropped.
+  if (produced_.size() >= 4) produced_.erase(produced_.begin());
+  produced_.push_back(placed.data());
+}
+
+void PlacementCache::recycle(std::vector<core::NamedEllipse> placed) {
+  const bool ours = placed.size() == order_.size() && !placed.empty() &&
+                    std::find(produced_.begin(), produced_.end(), placed.data()) != produced_.end();
+  if (ours) recycled_ = std::move(placed);
+}
+
+std::vector<core::NamedEllipse> PlacementCache::takeRecycled() {
+  std::vector<core::NamedEllipse> taken = std::move(recycled_);
+  recycled_.clear();
+  // Handed out to be refilled: it is no longer a complete placement until produced() again.
+  produced_.erase(std::remove(produced_.begin(), produced_.end(), taken.data()), produced_.end());
+  if (taken.size() != order_.size()) taken.clear();
+  refilled_checks_ += taken.empty() ? 0 : 1;
+  return taken;
 }
 
 void PlacementCache::compare(Frame& frame, ScenePlacement& placement) {

@@ -189,7 +189,11 @@ const app::CheckOutcome& CollisionNode::runFullCheck(const ros::Duration& timeou
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   state_.valid = true;
   state_.stamp = now;
+  // The replaced state's placement goes back to the cache: the next check refills it instead of
+  // copying every name again.
+  std::vector<core::NamedEllipse> replaced = std::move(state_.outcome.placed);
   state_.outcome = std::move(outcome);
+  placement_cache_.recycle(std::move(replaced));
   const app::CheckOutcome& checked = state_.outcome;
   // Since when each frame has been missing (unavailable or stale), for the diagnostics level.
   std::set<std::string> missing(checked.unavailable_frames.begin(), checked.unavailable_frames.end());

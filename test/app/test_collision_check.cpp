@@ -329,6 +329,7 @@ TEST(PlacementCache, SameAnswerBitForBitAsProjectingEveryCycleWhileFramesMoveAnd
                   &lookups};
   PlacementCache cache;
   std::size_t collisions = 0;
+  CheckOutcome previous;  // the node's state: handed back to the cache when replaced
   for (int cycle = 0; cycle < 60; ++cycle) {
     // The arm moves every cycle, the base every third, the cart vanishes for a while and comes
     // back at its old pose; obstacles are added and removed now and then.
@@ -342,13 +343,19 @@ TEST(PlacementCache, SameAnswerBitForBitAsProjectingEveryCycleWhileFramesMoveAnd
     if (cycle == 40) {
       ASSERT_EQ(registry.removeObstacles({"rock3", "late"}, "names"), "");
     }
-    const CheckOutcome cached = runCheck(CheckRequest{}, registry, settings,
-                                         TransformLookup(table), 0.0, &cache);
+    if (cycle == 50) {  // as many stored ellipses as before, one name different
+      ASSERT_EQ(registry.removeObstacles({"rock5"}, "names"), "");
+      ASSERT_EQ(registry.addObstacles({circle("rock5b", "map", 0.3, 0.0, 0.15)}, "obstacles"), "");
+    }
+    CheckOutcome cached = runCheck(CheckRequest{}, registry, settings,
+                                   TransformLookup(table), 0.0, &cache);
     const CheckOutcome fresh =
         runCheck(CheckRequest{}, registry, settings, TransformLookup(table), 0.0);
     expectSameOutcome(cached, fresh, cycle);
     if (HasFatalFailure()) return;
     collisions += fresh.collisions.size();
+    cache.recycle(std::move(previous.placed));
+    previous = std::move(cached);
   }
   EXPECT_GT(collisions, 20u) << "the comparison must see collisions";
 }
@@ -377,20 +384,25 @@ TEST(PlacementCache, StandingObstaclesAreGriddedOnceAndGiveTheSameBits) {
   PlacementCache cache;
   std::size_t collisions = 0, warnings = 0, indexed_checks = 0;
   const std::size_t still = StandingObstacles::kChecksBeforeIndexing;
+  // The node's state, handed back to the cache when a newer check replaces it: two buffers
+  // alternate, refilled in place (names kept, geometry rewritten).
+  CheckOutcome previous;
   for (int cycle = 0; cycle < 130; ++cycle) {
     table.poses["arm"] = pose(0.03 * cycle - 1.5, 0.4 * std::sin(0.2 * cycle), 0.1 * cycle);
     if (cycle == 60) table.poses["cart"] = pose(0.3, 0.05, 0.2);
     if (cycle == 90) {
       ASSERT_EQ(registry.addObstacles({circle("late", "map", 0.2, 0.0, 0.3)}, "obstacles"), "");
     }
-    const CheckOutcome cached = runCheck(CheckRequest{}, registry, settings,
-                                         TransformLookup(table), 0.0, &cache);
+    CheckOutcome cached = runCheck(CheckRequest{}, registry, settings,
+                                   TransformLookup(table), 0.0, &cache);
     const CheckOutcome fresh =
         runCheck(CheckRequest{}, registry, settings, TransformLookup(table), 0.0);
     expectSameOutcome(cached, fresh, cycle);
     if (HasFatalFailure()) return;
     collisions += fresh.collisions.size();
     warnings += fresh.warnings.size();
+    cache.recycle(std::move(previous.placed));
+    previous = std::move(cached);
     const bool indexed = cache.standingObstacles().indexed();
     indexed_checks += indexed;
     // Gridded exactly when the obstacles have stood still long enough: from cycle `still`
@@ -403,6 +415,9 @@ TEST(PlacementCache, StandingObstaclesAreGriddedOnceAndGiveTheSameBits) {
   EXPECT_GT(collisions, 50u) << "the comparison must see collisions";
   EXPECT_GT(warnings, 50u) << "the comparison must see warnings";
   EXPECT_GT(indexed_checks, 60u);
+  // Every check refills the buffer of two checks before, except the first two and the two after
+  // the registry changed (cycle 90).
+  EXPECT_EQ(cache.refilledChecks(), 126u);
 }
 
 TEST(PlacementCache, ReusedProjectionsLookUpEachFrameOncePerCheck) {
