@@ -310,6 +310,21 @@ void expectSameOutcome(const CheckOutcome& cached, const CheckOutcome& fresh, in
   }
 }
 
+/// One full check as the node makes it (through `cache`, then handing the placement of the state
+/// it replaces back to the cache) beside one made afresh without a cache: the same bits. Returns
+/// the fresh one.
+CheckOutcome checkAsTheNodeAndAfresh(const EllipseRegistry& registry, const CheckSettings& settings,
+                                     const PoseTable& table, PlacementCache& cache,
+                                     CheckOutcome& node_state, int cycle) {
+  CheckOutcome cached =
+      runCheck(CheckRequest{}, registry, settings, TransformLookup(table), 0.0, &cache);
+  CheckOutcome fresh = runCheck(CheckRequest{}, registry, settings, TransformLookup(table), 0.0);
+  expectSameOutcome(cached, fresh, cycle);
+  cache.recycle(std::move(node_state.placed));
+  node_state = std::move(cached);
+  return fresh;
+}
+
 TEST(PlacementCache, SameAnswerBitForBitAsProjectingEveryCycleWhileFramesMoveAndVanish) {
   EllipseRegistry registry({circle("body", "base_link", 0.0, 0.0, 0.5),
                             circle("hand", "arm", 0.3, 0.0, 0.1)},
@@ -347,15 +362,10 @@ TEST(PlacementCache, SameAnswerBitForBitAsProjectingEveryCycleWhileFramesMoveAnd
       ASSERT_EQ(registry.removeObstacles({"rock5"}, "names"), "");
       ASSERT_EQ(registry.addObstacles({circle("rock5b", "map", 0.3, 0.0, 0.15)}, "obstacles"), "");
     }
-    CheckOutcome cached = runCheck(CheckRequest{}, registry, settings,
-                                   TransformLookup(table), 0.0, &cache);
     const CheckOutcome fresh =
-        runCheck(CheckRequest{}, registry, settings, TransformLookup(table), 0.0);
-    expectSameOutcome(cached, fresh, cycle);
+        checkAsTheNodeAndAfresh(registry, settings, table, cache, previous, cycle);
     if (HasFatalFailure()) return;
     collisions += fresh.collisions.size();
-    cache.recycle(std::move(previous.placed));
-    previous = std::move(cached);
   }
   EXPECT_GT(collisions, 20u) << "the comparison must see collisions";
 }
@@ -393,16 +403,11 @@ TEST(PlacementCache, StandingObstaclesAreGriddedOnceAndGiveTheSameBits) {
     if (cycle == 90) {
       ASSERT_EQ(registry.addObstacles({circle("late", "map", 0.2, 0.0, 0.3)}, "obstacles"), "");
     }
-    CheckOutcome cached = runCheck(CheckRequest{}, registry, settings,
-                                   TransformLookup(table), 0.0, &cache);
     const CheckOutcome fresh =
-        runCheck(CheckRequest{}, registry, settings, TransformLookup(table), 0.0);
-    expectSameOutcome(cached, fresh, cycle);
+        checkAsTheNodeAndAfresh(registry, settings, table, cache, previous, cycle);
     if (HasFatalFailure()) return;
     collisions += fresh.collisions.size();
     warnings += fresh.warnings.size();
-    cache.recycle(std::move(previous.placed));
-    previous = std::move(cached);
     const bool indexed = cache.standingObstacles().indexed();
     indexed_checks += indexed;
     // Gridded exactly when the obstacles have stood still long enough: from cycle `still`
