@@ -4,6 +4,8 @@
 //   brute_force        overlap() on all 50 N + 1225 pairs
 //   grid_streamed      the core's BoxGrid over the links' tight boxes; each obstacle's
 //                      trigonometry-free bounding-circle box is made as it streams through
+//   grid_streamed_with_scale  the same plus contactScale() of every colliding pair: what the
+//                      answer itself costs, names and rules aside
 //   grid_batch         overlappingBoxPairs() on stored boxes: tight for the links, bounding-circle
 //                      for the obstacles; the links among themselves by the one-set variant
 //   grid_tight_boxes   the same with tight boxes (one sincos each) for the obstacles too
@@ -33,6 +35,7 @@
 
 #include "bench_scenes.h"
 #include "ellipse_collision/core/broadphase.h"
+#include "ellipse_collision/core/eigenvalue_test.h"
 #include "ellipse_collision/core/indexed_obstacles.h"
 #include "ellipse_collision/core/overlap.h"
 #include "ellipse_collision/core/prepared_ellipse.h"
@@ -99,6 +102,33 @@ CycleResult gridStreamed(const RobotScene& scene) {
     result.pair_tests += static_cast<long>(found.size());
   }
   return checkCandidates(scene.links, scene.links, grid.overlappingPairs(), result);
+}
+
+/// grid_streamed plus the contact scale of every colliding pair, which checkScene()'s answer
+/// carries: the bare cost of the answer itself, names and rules aside.
+CycleResult gridStreamedWithScale(const RobotScene& scene) {
+  std::vector<BoundingBox> link_boxes;
+  link_boxes.reserve(scene.links.size());
+  for (const Ellipse& link : scene.links) link_boxes.push_back(boundingBox(link));
+  const BoxGrid grid(std::move(link_boxes));
+  CycleResult result;
+  double scales = 0.0;
+  const auto test = [&](const Ellipse& a, const Ellipse& b) {
+    ++result.pair_tests;
+    if (!overlap(a, b)) return;
+    ++result.collisions;
+    scales += contactScale(a, b);
+  };
+  std::vector<std::size_t> found;
+  for (const Ellipse& obstacle : scene.obstacles) {
+    grid.overlapping(boundingCircleBox(obstacle), &found);
+    for (const std::size_t i : found) test(scene.links[i], obstacle);
+  }
+  for (const IndexPair& pair : grid.overlappingPairs()) {
+    test(scene.links[pair.first], scene.links[pair.second]);
+  }
+  benchmark::DoNotOptimize(scales);
+  return result;
 }
 
 CycleResult gridPrepared(const RobotScene& scene) {
@@ -190,6 +220,7 @@ using Method = CycleResult (*)(const RobotScene&);
 const std::pair<const char*, Method> kMethods[] = {
     {"brute_force", bruteForce},
     {"grid_streamed", gridStreamed},
+    {"grid_streamed_with_scale", gridStreamedWithScale},
     {"grid_batch", [](const RobotScene& s) { return grid(s, boundingCircleBox); }},
     {"grid_tight_boxes",
      [](const RobotScene& s) { return grid(s, [](const Ellipse& e) { return boundingBox(e); }); }},
