@@ -102,27 +102,31 @@ CheckOutcome runCheck(const CheckRequest& request, const EllipseRegistry& regist
   std::size_t rewrite_end = outcome.placed.size();
   outcome.placed.reserve(registry.entries().size() + queries.size());
   std::size_t position = 0;
-  const auto put = [&](const std::string& name, core::EllipseRole role,
+  using RegistryEntry = std::pair<const std::string, StoredEllipse>;
+  const auto put = [&](const RegistryEntry& item, core::EllipseRole role,
                        const core::Ellipse& ellipse) {
     if (position < rewrite_end) {
       outcome.placed[position++].ellipse = ellipse;
     } else {
-      outcome.placed.push_back({name, role, ellipse});
+      outcome.placed.push_back({item.first, role, ellipse});
       ++position;
     }
   };
   // Links before obstacles, so the core reads the scene once (checkScene()); each entry's index
-  // counted in registry order for the cache.
+  // counted in registry order for the cache. A reused entry in a recycled vector touches neither
+  // its name nor its spec.
   std::size_t reused_obstacles = 0, obstacles = 0;
-  const auto place = [&](std::size_t entry, const std::string& name, const StoredEllipse& stored) {
-    const bool obstacle = stored.role() == core::EllipseRole::Obstacle;
+  const auto place = [&](std::size_t entry, const RegistryEntry& item, core::EllipseRole role) {
+    const bool obstacle = role == core::EllipseRole::Obstacle;
     obstacles += obstacle;
     if (const core::Ellipse* reused = cache ? cache->reuse(entry, placement) : nullptr) {
-      put(name, stored.role(), *reused);
+      put(item, role, *reused);
       reused_obstacles += obstacle;
       return;
     }
-    const ScenePlacement::Placement placed = placement.place(stored.spec, stored.role());
+    const std::string& name = item.first;
+    const StoredEllipse& stored = item.second;
+    const ScenePlacement::Placement placed = placement.place(stored.spec, role);
     if (placed.status != ScenePlacement::Status::Placed && position < rewrite_end) {
       outcome.placed.resize(position);
       rewrite_end = position;
@@ -134,7 +138,7 @@ CheckOutcome runCheck(const CheckRequest& request, const EllipseRegistry& regist
                        placement.lookup(stored.spec.frame_id).fixed_from_frame,
                        placed.ellipse.ellipse);
         }
-        put(name, stored.role(), placed.ellipse.ellipse);
+        put(item, role, placed.ellipse.ellipse);
         break;
       case ScenePlacement::Status::FrameUnavailable:
         unavailable.insert(stored.spec.frame_id);
@@ -152,14 +156,14 @@ CheckOutcome runCheck(const CheckRequest& request, const EllipseRegistry& regist
   };
   if (cache) {
     for (const PlacementCache::OrderedEntry& item : cache->placingOrder()) {
-      place(item.index, item.entry->first, item.entry->second);
+      place(item.index, *item.entry, item.role);
     }
   } else {
     for (const core::EllipseRole pass : {core::EllipseRole::Link, core::EllipseRole::Obstacle}) {
       std::size_t index = 0;
-      for (const auto& [name, stored] : registry.entries()) {
+      for (const RegistryEntry& item : registry.entries()) {
         const std::size_t entry = index++;
-        if (stored.role() == pass) place(entry, name, stored);
+        if (item.second.role() == pass) place(entry, item, pass);
       }
     }
   }

@@ -34,7 +34,7 @@ void PlacementCache::begin(const EllipseRegistry& registry, double global_paddin
   for (const core::EllipseRole pass : {core::EllipseRole::Link, core::EllipseRole::Obstacle}) {
     std::size_t index = 0;
     for (const auto& entry : registry.entries()) {
-      if (entry.second.role() == pass) order_.push_back({index, &entry});
+      if (entry.second.role() == pass) order_.push_back({index, &entry, pass});
       ++index;
     }
   }

@@ -30,6 +30,7 @@ class PlacementCache {
   struct OrderedEntry {
     std::size_t index;
     const std::pair<const std::string, StoredEllipse>* entry;
+    core::EllipseRole role;  ///< entry's, kept here: a reused entry's map node is not read
   };
   /// The registry's entries as a check places them, links before obstacles (so the core reads
   /// the scene once), kept from begin() to begin(): walking the map twice per check cost as
