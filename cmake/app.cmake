@@ -6,6 +6,7 @@ target_include_directories(ellipse_collision_app PUBLIC include)
 target_link_libraries(ellipse_collision_app PUBLIC ellipse_collision_core)
 target_compile_options(ellipse_collision_app PRIVATE ${ELLIPSE_COLLISION_WARNINGS}
   ${ELLIPSE_COLLISION_LIBRARY_OPTIONS})
+target_link_options(ellipse_collision_app PRIVATE ${ELLIPSE_COLLISION_LIBRARY_LINK_OPTIONS})
 
 install(TARGETS ellipse_collision_app
   ARCHIVE DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION}

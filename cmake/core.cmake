@@ -5,6 +5,7 @@ target_include_directories(ellipse_collision_core PUBLIC include)
 target_link_libraries(ellipse_collision_core PUBLIC Eigen3::Eigen)
 target_compile_options(ellipse_collision_core PRIVATE ${ELLIPSE_COLLISION_WARNINGS}
   ${ELLIPSE_COLLISION_LIBRARY_OPTIONS})
+target_link_options(ellipse_collision_core PRIVATE ${ELLIPSE_COLLISION_LIBRARY_LINK_OPTIONS})
 
 add_executable(check_ellipses src/tools/check_ellipses.cpp)
 target_link_libraries(check_ellipses ellipse_collision_core)
