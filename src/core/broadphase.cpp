@@ -10,10 +10,6 @@
 namespace ellipse_collision::core {
 namespace {
 
-// Relative widening of every box: far above the rounding of its bounds, far below any size that
-// matters.
-constexpr double kBoxMargin = 1e-12;
-
 // At most this many cells per element of the gridded set: bounds the memory and the cells a huge
 // query box has to visit.
 constexpr std::size_t kCellsPerBox = 4;
@@ -26,12 +22,6 @@ constexpr long kMaxCellsSpanned = 16;
 // grid's cell walk and sort, and building no grid saves more: measured on 50 clustered links.
 constexpr std::size_t kLinearScanMaxBoxes = 64;
 
-BoundingBox boxAround(const Eigen::Vector2d& center, double half_width, double half_height) {
-  const double margin_x = kBoxMargin * (half_width + std::abs(center.x()));
-  const double margin_y = kBoxMargin * (half_height + std::abs(center.y()));
-  return {center.x() - half_width - margin_x, center.y() - half_height - margin_y,
-          center.x() + half_width + margin_x, center.y() + half_height + margin_y};
-}
 
 /// min <= max on both axes; false for NaN bounds: such a box overlaps nothing and is left out.
 bool isOrdered(const BoundingBox& box) { return box.min_x <= box.max_x && box.min_y <= box.max_y; }
@@ -61,7 +51,7 @@ BoundingBox boundingBoxFromTrig(const Ellipse& ellipse, double cos_angle, double
   // Half-extents of the rotated ellipse: the support function along x and y.
   const double rx_cos = ellipse.radius_x * cos_angle, rx_sin = ellipse.radius_x * sin_angle;
   const double ry_cos = ellipse.radius_y * cos_angle, ry_sin = ellipse.radius_y * sin_angle;
-  return boxAround(ellipse.center, std::sqrt(rx_cos * rx_cos + ry_sin * ry_sin),
+  return detail::boxAround(ellipse.center, std::sqrt(rx_cos * rx_cos + ry_sin * ry_sin),
                    std::sqrt(rx_sin * rx_sin + ry_cos * ry_cos));
 }
 
@@ -70,11 +60,6 @@ BoundingBox boundingBoxFromTrig(const Ellipse& ellipse, double cos_angle, double
 BoundingBox boundingBox(const Ellipse& ellipse) {
   const detail::SinCos trig = detail::sinCos(ellipse.angle);
   return detail::boundingBoxFromTrig(ellipse, trig.cos, trig.sin);
-}
-
-BoundingBox boundingCircleBox(const Ellipse& ellipse) {
-  const double radius = boundingRadius(ellipse);
-  return boxAround(ellipse.center, radius, radius);
 }
 
 BoxGrid::BoxGrid(std::vector<BoundingBox> boxes) : boxes_(std::move(boxes)) {

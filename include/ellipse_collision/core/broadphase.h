@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 #include <vector>
 
@@ -22,14 +23,35 @@ inline bool boxesOverlap(const BoundingBox& a, const BoundingBox& b) {
   return (a.min_x <= b.max_x) & (b.min_x <= a.max_x) & (a.min_y <= b.max_y) & (b.min_y <= a.max_y);
 }
 
+namespace detail {
+
+/// Relative widening of every box: far above the rounding of its bounds, far below any size that
+/// matters.
+inline constexpr double kBoxMargin = 1e-12;
+
+/// The box [center -+ half sizes], widened by kBoxMargin of the half size and the coordinate.
+inline BoundingBox boxAround(const Eigen::Vector2d& center, double half_width,
+                             double half_height) {
+  const double margin_x = kBoxMargin * (half_width + std::abs(center.x()));
+  const double margin_y = kBoxMargin * (half_height + std::abs(center.y()));
+  return {center.x() - half_width - margin_x, center.y() - half_height - margin_y,
+          center.x() + half_width + margin_x, center.y() + half_height + margin_y};
+}
+
+}  // namespace detail
+
 /// The smallest box around the ellipse (one sincos), widened by a relative 1e-12 so that rounding
 /// never separates the boxes of two ellipses that touch.
 BoundingBox boundingBox(const Ellipse& ellipse);
 
 /// The box around the ellipse's bounding circle, equally widened: up to the axis ratio larger than
 /// boundingBox() but free of trigonometry, so the cheaper choice for large sets that are mostly
-/// far apart. Ellipses that overlap always have overlapping boxes of either kind.
-BoundingBox boundingCircleBox(const Ellipse& ellipse);
+/// far apart. Ellipses that overlap always have overlapping boxes of either kind. Inline: scene
+/// checks make one per obstacle per check.
+inline BoundingBox boundingCircleBox(const Ellipse& ellipse) {
+  const double radius = boundingRadius(ellipse);
+  return detail::boxAround(ellipse.center, radius, radius);
+}
 
 /// A candidate pair: `first` indexes the first set, `second` the second set (or, for pairs within
 /// one set, first < second).
