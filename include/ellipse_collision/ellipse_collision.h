@@ -10,6 +10,7 @@
 #include "ellipse_collision/core/enclosing_ellipse.h"
 #include "ellipse_collision/core/first_contact.h"
 #include "ellipse_collision/core/frame_projection.h"
+#include "ellipse_collision/core/indexed_obstacles.h"
 #include "ellipse_collision/core/motion_line_parser.h"
 #include "ellipse_collision/core/number_fields.h"
 #include "ellipse_collision/core/number_format.h"
