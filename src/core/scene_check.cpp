@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <optional>
 #include <string_view>
 #include <tuple>
@@ -116,45 +118,50 @@ namespace {
 
 /// The narrow phase and the answer, shared by every entry point: each candidate pair is tested
 /// in canonical order (so neither the input order nor the broadphase can change a rounding bit)
-/// and the answer is sorted, so it depends only on the set of pairs tested.
+/// and the answer is sorted, so it depends only on the set of pairs tested. Every pair has a
+/// mover (query or link) first; the movers are ranked in canonical order once, so that sorting
+/// the pairs compares two names only for pairs of one mover with two obstacles.
 class PairCollector {
  public:
-  explicit PairCollector(double warning_distance) : warning_distance_(warning_distance) {}
+  PairCollector(double warning_distance, const std::vector<const NamedEllipse*>& movers,
+                const std::vector<PreparedEllipse>& prepared_movers)
+      : warning_distance_(warning_distance),
+        movers_(movers),
+        prepared_movers_(prepared_movers),
+        rank_(movers.size()) {
+    std::vector<std::uint32_t> order(movers.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<std::uint32_t>(i);
+    std::sort(order.begin(), order.end(), [&movers](std::uint32_t a, std::uint32_t b) {
+      return comesFirst(*movers[a], *movers[b]);
+    });
+    for (std::size_t k = 0; k < order.size(); ++k) rank_[order[k]] = static_cast<std::uint32_t>(k);
+  }
 
-  void check(const NamedEllipse& first, const PreparedEllipse& prepared_first,
-             const NamedEllipse& second, const PreparedEllipse& prepared_second) {
-    ++pair_tests_;
-    if (overlap(prepared_first, prepared_second)) {
-      collisions_.push_back({&first, &second, contactScale(prepared_first, prepared_second), {}});
-      return;
-    }
-    if (warning_distance_ <= 0.0 ||
-        distanceLowerBound(first.ellipse, second.ellipse) >= warning_distance_) {
-      return;
-    }
-    const Clearance clearance = distance(first.ellipse, second.ellipse);
-    if (clearance.separated && clearance.distance < warning_distance_) {
-      warnings_.push_back({&first, &second, 0.0, clearance});
-    }
+  /// Mover `i` (always first in its pair with an obstacle) against `obstacle`.
+  void checkWithObstacle(std::size_t i, const NamedEllipse& obstacle,
+                         const PreparedEllipse& prepared_obstacle) {
+    check(i, kObstacle, obstacle, prepared_obstacle);
   }
 
   /// Movers among themselves (query-link always, link-link with self collision): the pairs of
   /// their gridded candidate boxes.
-  void checkMoverPairs(const BoxGrid& grid, const std::vector<const NamedEllipse*>& movers,
-                       const std::vector<PreparedEllipse>& prepared, const SceneRules& rules,
+  void checkMoverPairs(const BoxGrid& grid, const SceneRules& rules,
                        const std::set<std::string>& only_names) {
     for (const IndexPair& pair : grid.overlappingPairs()) {
       std::size_t i = pair.first, j = pair.second;
-      if (!comesFirst(*movers[i], *movers[j])) std::swap(i, j);
-      if (!pairWanted(*movers[i], *movers[j], rules, only_names)) continue;
-      check(*movers[i], prepared[i], *movers[j], prepared[j]);
+      if (rank_[j] < rank_[i]) std::swap(i, j);
+      if (!pairWanted(*movers_[i], *movers_[j], rules, only_names)) continue;
+      check(i, j, *movers_[j], prepared_movers_[j]);
     }
   }
 
   SceneCheckResult finish() {
+    // (first, second) in (role, name) order: the first's rank, then a mover second before an
+    // obstacle second (roles Query, Link < Obstacle), movers by rank, obstacles by name.
     const auto canonical = [](const Found& x, const Found& y) {
-      return std::tie(x.first->role, x.first->name, x.second->role, x.second->name) <
-             std::tie(y.first->role, y.first->name, y.second->role, y.second->name);
+      if (x.first_rank != y.first_rank) return x.first_rank < y.first_rank;
+      if (x.second_rank != y.second_rank) return x.second_rank < y.second_rank;
+      return x.second_rank == kObstacle && x.second->name < y.second->name;
     };
     std::sort(collisions_.begin(), collisions_.end(), canonical);
     std::sort(warnings_.begin(), warnings_.end(), canonical);
@@ -172,13 +179,44 @@ class PairCollector {
   }
 
  private:
+  /// The second rank of an obstacle: after every mover.
+  static constexpr std::uint32_t kObstacle = std::numeric_limits<std::uint32_t>::max();
+
   struct Found {
     const NamedEllipse* first;
     const NamedEllipse* second;
-    double contact_scale;  // collisions only
-    Clearance clearance;   // warnings only
+    std::uint32_t first_rank;
+    std::uint32_t second_rank;  // kObstacle for an obstacle
+    double contact_scale;       // collisions only
+    Clearance clearance;        // warnings only
   };
+
+  /// Mover `i` first, then `second`: mover `j`, or an obstacle (j == kObstacle).
+  void check(std::size_t i, std::size_t j, const NamedEllipse& second,
+             const PreparedEllipse& prepared_second) {
+    ++pair_tests_;
+    const NamedEllipse& first = *movers_[i];
+    const PreparedEllipse& prepared_first = prepared_movers_[i];
+    const std::uint32_t second_rank = j == kObstacle ? kObstacle : rank_[j];
+    if (overlap(prepared_first, prepared_second)) {
+      collisions_.push_back({&first, &second, rank_[i], second_rank,
+                             contactScale(prepared_first, prepared_second), {}});
+      return;
+    }
+    if (warning_distance_ <= 0.0 ||
+        distanceLowerBound(first.ellipse, second.ellipse) >= warning_distance_) {
+      return;
+    }
+    const Clearance clearance = distance(first.ellipse, second.ellipse);
+    if (clearance.separated && clearance.distance < warning_distance_) {
+      warnings_.push_back({&first, &second, rank_[i], second_rank, 0.0, clearance});
+    }
+  }
+
   double warning_distance_;
+  const std::vector<const NamedEllipse*>& movers_;
+  const std::vector<PreparedEllipse>& prepared_movers_;
+  std::vector<std::uint32_t> rank_;  ///< each mover's place in (role, name) order
   std::size_t pair_tests_{0};
   std::vector<Found> collisions_;
   std::vector<Found> warnings_;
@@ -219,7 +257,7 @@ SceneCheckResult checkSceneWith(const std::vector<NamedEllipse>& ellipses,
     mover_boxes.push_back(candidateBox(prepared_movers.back(), warning_distance));
   }
   const BoxGrid grid(std::move(mover_boxes));
-  PairCollector pairs(warning_distance);
+  PairCollector pairs(warning_distance, movers, prepared_movers);
 
   // Movers against obstacles: a mover (query or link) always comes first in a pair with an
   // obstacle. The obstacle's box needs no trigonometry, and it is prepared only if needed.
@@ -245,10 +283,10 @@ SceneCheckResult checkSceneWith(const std::vector<NamedEllipse>& ellipses,
     for (const std::size_t i : found) {
       if (!pairWanted(*movers[i], obstacle, rules, only_names)) continue;
       if (!prepared_obstacle) prepared_obstacle.emplace(obstacle.ellipse);
-      pairs.check(*movers[i], prepared_movers[i], obstacle, *prepared_obstacle);
+      pairs.checkWithObstacle(i, obstacle, *prepared_obstacle);
     }
   }
-  pairs.checkMoverPairs(grid, movers, prepared_movers, rules, only_names);
+  pairs.checkMoverPairs(grid, rules, only_names);
   return pairs.finish();
 }
 
@@ -290,7 +328,7 @@ SceneCheckResult checkMoversAgainst(const std::vector<NamedEllipse>& movers,
   // The pairs checkScene() finds by streaming each obstacle's box through the movers' grid,
   // found the other way round: each mover's box looked up in the obstacles' grid (the overlap
   // test of two boxes is symmetric). An obstacle is prepared per pair: few meet a mover.
-  PairCollector pairs(warning_distance);
+  PairCollector pairs(warning_distance, mover_list, prepared_movers);
   const std::vector<NamedEllipse>& indexed = obstacles.obstacles();
   std::vector<std::size_t> found;
   for (std::size_t i = 0; i < mover_list.size(); ++i) {
@@ -298,11 +336,10 @@ SceneCheckResult checkMoversAgainst(const std::vector<NamedEllipse>& movers,
     for (const std::size_t k : found) {
       const NamedEllipse& obstacle = indexed[k];
       if (!pairWanted(*mover_list[i], obstacle, rules, only_names)) continue;
-      pairs.check(*mover_list[i], prepared_movers[i], obstacle, PreparedEllipse(obstacle.ellipse));
+      pairs.checkWithObstacle(i, obstacle, PreparedEllipse(obstacle.ellipse));
     }
   }
-  pairs.checkMoverPairs(BoxGrid(std::move(mover_boxes)), mover_list, prepared_movers, rules,
-                        only_names);
+  pairs.checkMoverPairs(BoxGrid(std::move(mover_boxes)), rules, only_names);
   return pairs.finish();
 }
 
