@@ -76,13 +76,15 @@ def scene_table(runs):
         rows[(method, int(obstacles))] = entry
     sizes = sorted({n for _, n in rows})
     methods = ordered({method for method, _ in rows},
-                      ["brute_force", "grid_streamed", "grid_batch", "grid_tight_boxes",
-                       "grid_prepared", "sort_and_sweep", "checkScene", "checkScene_unique_names",
-                       "checkScene_warn"])
+                      ["brute_force", "grid_streamed", "grid_streamed_with_scale", "grid_batch",
+                       "grid_tight_boxes", "grid_prepared", "sort_and_sweep", "checkScene",
+                       "checkScene_unique_names", "checkScene_warn", "indexed_obstacles",
+                       "indexed_build"])
     print("Scene checks: 50 links vs N obstacles, plus link-link pairs, per cycle on one core")
-    # x bare: time over grid_streamed (the bare broadphase + overlap(), same pairs) at the same N.
-    header = (f"{'obstacles':>9} {'method':<23} {'us/cycle':>10} {'x bare':>7} {'pair tests':>11} "
-              f"{'collisions':>10} {'growth vs N/10':>15}")
+    # x bare: time over grid_streamed (the bare broadphase + overlap(), same pairs) at the same N;
+    # x +scale: over grid_streamed_with_scale (the same plus the colliding pairs' contact scales).
+    header = (f"{'obstacles':>9} {'method':<24} {'us/cycle':>10} {'x bare':>7} {'x +scale':>8} "
+              f"{'pair tests':>11} {'collisions':>10} {'growth vs N/10':>15}")
     print(header)
     print("-" * len(header))
     for n in sizes:
@@ -95,8 +97,13 @@ def scene_table(runs):
             growth = f"{us / to_microseconds(previous):.1f}x" if previous else ""
             bare = rows.get(("grid_streamed", n))
             versus = f"{us / to_microseconds(bare):.2f}" if bare else "-"
-            print(f"{n:>9} {method:<23} {us:>10.1f} {versus:>7} {int(entry['pair_tests']):>11} "
-                  f"{int(entry['collisions']):>10} {growth:>15}")
+            scaled = rows.get(("grid_streamed_with_scale", n))
+            versus_scaled = f"{us / to_microseconds(scaled):.2f}" if scaled else "-"
+            # indexed_build builds the grid and tests no pair.
+            pair_tests = f"{int(entry['pair_tests'])}" if "pair_tests" in entry else "-"
+            collisions = f"{int(entry['collisions'])}" if "collisions" in entry else "-"
+            print(f"{n:>9} {method:<24} {us:>10.1f} {versus:>7} {versus_scaled:>8} "
+                  f"{pair_tests:>11} {collisions:>10} {growth:>15}")
 
 
 def ordered(names, preferred):

@@ -4,8 +4,10 @@
 # speed relative to FCL 0.7 and its misclassifications against the quad-precision oracle; the
 # polygonal iteration-cap study; then scene checks of 50 links against 100 to 100,000 obstacles
 # (us per cycle, pair tests done, growth with N); scan_obstacles' cost per 720-beam LaserScan;
-# continuous path checks of 10,000 poses x 1,000 obstacles x 20 links (issue 14, budget 100 ms). Times are CPU times, medians of repetitions
-# interleaved at random, so that the methods share the machine's noise within one run.
+# continuous path checks of 10,000 poses x 1,000 obstacles x 20 links (issue 14, budget 100 ms);
+# one app::runCheck with the node's cache (the node's own work per call). Times are CPU times,
+# medians of repetitions interleaved at random, so that the methods share the machine's noise
+# within one run.
 # Last, the service round trip (issue 7): a roscore of its own on a free port, the node with
 # bench/service_roundtrip.yaml, and bench_service_roundtrip calling ~check_collisions 10,000 times
 # with 100 and 1,000 ellipses stored (p50/p99 latency, calls per second, wall time), in alternating
@@ -35,7 +37,8 @@ mkdir -p "${out}"
 echo "Building the benchmarks (log: build/benchmark/build.txt)"
 if ! bash "${repo}/scripts/build.sh" -DELLIPSE_COLLISION_BENCHMARKS=ON bench_pair_tests \
     bench_scene_check bench_distance bench_first_contact bench_scan_obstacles \
-    bench_service_roundtrip bench_check_path ellipse_collision_node > "${out}/build.txt" 2>&1; then
+    bench_service_roundtrip bench_check_path bench_run_check ellipse_collision_node \
+    > "${out}/build.txt" 2>&1; then
   cat "${out}/build.txt" >&2
   exit 1
 fi
@@ -47,6 +50,7 @@ if "${smoke}"; then
   contact_args=(--pairs=64 --benchmark_min_time=0.01)
   scan_args=(--benchmark_min_time=0.01)
   path_args=(--benchmark_min_time=0.01)
+  run_check_args=(--benchmark_min_time=0.01)
   roundtrip_calls=200
 else
   repeat=(--benchmark_repetitions=5 --benchmark_enable_random_interleaving=true
@@ -57,6 +61,7 @@ else
   contact_args=(--pairs=2000 --benchmark_min_time=0.3 "${repeat[@]}")
   scan_args=(--benchmark_min_time=0.5 "${repeat[@]}")
   path_args=(--benchmark_min_time=0.5 "${repeat[@]}")
+  run_check_args=(--benchmark_min_time=0.3 "${repeat[@]}")
   roundtrip_calls=10000
 fi
 
@@ -104,6 +109,12 @@ echo
 echo "Running bench_check_path (ms per path of 10,000 poses, 1,000 obstacles, 20 links; budget 100 ms)"
 run bench_check_path "${path_args[@]}"
 grep -E '^(Benchmark|BM_)' "${out}/bench_check_path.txt" | grep -vE '_(stddev|cv)( |$)' || true
+
+# ---- one check of the application layer, the node's own work per ~check_collisions call -------
+echo
+echo "Running bench_run_check (us per app::runCheck with the node's cache, beside the core check alone)"
+run bench_run_check "${run_check_args[@]}"
+grep -E '^(Benchmark|run_check)' "${out}/bench_run_check.txt" | grep -vE '_(stddev|cv)( |$)' || true
 
 # ---- service round trip (issue 7) ---------------------------------------------------------------
 # Started here, stopped by the EXIT trap whatever ends the script: the node first, then roscore
