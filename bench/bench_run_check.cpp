@@ -1,11 +1,14 @@
 // One check of the application layer (app::runCheck()), as the node's ~check_collisions and
 // periodic check run it: the stored ellipses placed (through the PlacementCache, as the node keeps
-// it between checks), the scene checked by the core, the answer collected. Ten links and N
-// obstacles, all in the fixed frame as bench_service_roundtrip stores them, so that this is the
-// node's own work per call without ROS. Beside it, the core's checkSceneOfUniqueNames() alone on
-// the same placed scene: the difference is what placing and collecting cost.
+// it between checks, handing back the placement of the check it replaces), the scene checked by
+// the core, the answer collected: the node's own work per call without ROS.
+//   cached        ten links and N obstacles, all in the fixed frame (as bench_service_roundtrip
+//                 stores them): nothing moves
+//   moving_links  the same with the links on a base that moves every check among the obstacles
+//   core_only     checkSceneOfUniqueNames() alone on the placed scene of `cached`, streamed
 #include <benchmark/benchmark.h>
 
+#include <cmath>
 #include <cstdio>
 #include <random>
 #include <string>
@@ -20,7 +23,7 @@ namespace ellipse_collision::app {
 namespace {
 
 // The links of bench/service_roundtrip.yaml: a small mobile manipulator about the origin.
-std::vector<EllipseSpec> links() {
+std::vector<EllipseSpec> links(const std::string& frame) {
   struct Link {
     const char* name;
     double x, y, angle, radius_x, radius_y;
@@ -36,7 +39,7 @@ std::vector<EllipseSpec> links() {
   for (const Link& link : table) {
     EllipseSpec spec;
     spec.name = link.name;
-    spec.frame_id = "map";
+    spec.frame_id = frame;
     spec.x = link.x;
     spec.y = link.y;
     spec.angle = link.angle;
@@ -81,9 +84,39 @@ FrameTransform fixedFrame(const std::string& frame) {
   return transform;
 }
 
+/// The links' frame driving around the map: a new pose every check.
+struct MovingBase {
+  int step{0};
+  FrameTransform operator()(const std::string& frame) const {
+    if (frame != "base_link") return fixedFrame(frame);
+    FrameTransform transform;
+    transform.ok = true;
+    // Back and forth about the origin, among the obstacles.
+    transform.fixed_from_frame.translate(
+        Eigen::Vector3d(std::sin(0.01 * step), 0.5 * std::cos(0.013 * step), 0.0));
+    transform.fixed_from_frame.rotate(Eigen::AngleAxisd(0.02 * step, Eigen::Vector3d::UnitZ()));
+    return transform;
+  }
+};
+
+/// runCheck as the node runs it, the replaced check's placement handed back to the cache.
+void runLikeTheNode(benchmark::State& state, const EllipseRegistry& registry,
+                    const CheckSettings& settings, PlacementCache* cache, MovingBase* base) {
+  CheckOutcome previous;
+  for (auto _ : state) {
+    if (base) ++base->step;
+    CheckOutcome outcome =
+        base ? runCheck({}, registry, settings, TransformLookup(*base), 0.0, cache)
+             : runCheck({}, registry, settings, fixedFrame, 0.0, cache);
+    benchmark::DoNotOptimize(outcome);
+    cache->recycle(std::move(previous.placed));
+    previous = std::move(outcome);
+  }
+}
+
 void registerSize(int count) {
   // Kept for the whole run: the benchmarks hold references.
-  auto* registry = new EllipseRegistry(links(), obstacles(count));
+  auto* registry = new EllipseRegistry(links("map"), obstacles(count));
   const CheckSettings* check_settings = new CheckSettings(settings());
   auto* cache = new PlacementCache;
   const CheckOutcome first = runCheck({}, *registry, *check_settings, fixedFrame, 0.0, cache);
@@ -93,17 +126,21 @@ void registerSize(int count) {
   }
   const std::string size = std::to_string(count + 10);
   benchmark::RegisterBenchmark(("run_check/cached/" + size).c_str(), [=](benchmark::State& state) {
-    // As the node does: the replaced check's placement goes back to the cache.
-    CheckOutcome previous;
-    for (auto _ : state) {
-      CheckOutcome outcome = runCheck({}, *registry, *check_settings, fixedFrame, 0.0, cache);
-      benchmark::DoNotOptimize(outcome);
-      cache->recycle(std::move(previous.placed));
-      previous = std::move(outcome);
-    }
+    runLikeTheNode(state, *registry, *check_settings, cache, nullptr);
     state.counters["collisions"] = static_cast<double>(first.collisions.size());
     state.counters["warnings"] = static_cast<double>(first.warnings.size());
   })->Unit(benchmark::kMicrosecond);
+  // The same scene with the links on a base that moves every check: the links are projected
+  // again, the obstacles stand still.
+  auto* moving_registry = new EllipseRegistry(links("base_link"), obstacles(count));
+  auto* moving_cache = new PlacementCache;
+  auto* base = new MovingBase;
+  benchmark::RegisterBenchmark(("run_check/moving_links/" + size).c_str(),
+                               [=](benchmark::State& state) {
+                                 runLikeTheNode(state, *moving_registry, *check_settings,
+                                                moving_cache, base);
+                               })
+      ->Unit(benchmark::kMicrosecond);
   auto* placed = new std::vector<core::NamedEllipse>(first.placed);
   benchmark::RegisterBenchmark(("run_check/core_only/" + size).c_str(),
                                [=](benchmark::State& state) {

@@ -154,7 +154,22 @@ CheckOutcome runCheck(const CheckRequest& request, const EllipseRegistry& regist
         break;
     }
   };
-  if (cache) {
+  // A recycled vector, frame by frame: the entries of frames that stood still are not visited.
+  const auto project = [&](std::size_t at) {
+    const PlacementCache::OrderedEntry& item = cache->placingOrder()[at];
+    const EllipseSpec& spec = item.entry->second.spec;
+    const ScenePlacement::Placement placed = placement.place(spec, item.role);
+    if (placed.status != ScenePlacement::Status::Placed) return false;
+    cache->store(item.index, spec.frame_id, placement.lookup(spec.frame_id).fixed_from_frame,
+                 placed.ellipse.ellipse);
+    outcome.placed[at].ellipse = placed.ellipse.ellipse;
+    return true;
+  };
+  if (cache && rewrite_end > 0 &&
+      cache->refillByFrame(outcome.placed, placement, project, &reused_obstacles)) {
+    obstacles = cache->obstacleCount();
+  } else if (cache) {
+    reused_obstacles = 0;  // the frame-by-frame refill may have counted some
     for (const PlacementCache::OrderedEntry& item : cache->placingOrder()) {
       place(item.index, *item.entry, item.role);
     }

@@ -28,9 +28,12 @@ void PlacementCache::begin(const EllipseRegistry& registry, double global_paddin
   frame_index_.clear();
   produced_.clear();
   recycled_.clear();
+  recycled_check_ = 0;
+  by_frame_ = false;
   entries_.assign(registry.entries().size(), Entry{});
   order_.clear();
   order_.reserve(registry.entries().size());
+  obstacle_count_ = 0;
   for (const core::EllipseRole pass : {core::EllipseRole::Link, core::EllipseRole::Obstacle}) {
     std::size_t index = 0;
     for (const auto& entry : registry.entries()) {
@@ -38,36 +41,91 @@ void PlacementCache::begin(const EllipseRegistry& registry, double global_paddin
       ++index;
     }
   }
+  for (const OrderedEntry& entry : order_) obstacle_count_ += entry.role == core::EllipseRole::Obstacle;
 }
 
 void PlacementCache::produced(const std::vector<core::NamedEllipse>& placed) {
   if (placed.size() != order_.size() || placed.empty()) return;
-  if (std::find(produced_.begin(), produced_.end(), placed.data()) != produced_.end()) return;
+  const auto same = [&placed](const Produced& p) { return p.data == placed.data(); };
+  produced_.erase(std::remove_if(produced_.begin(), produced_.end(), same), produced_.end());
   // A few at most: the node's current and previous state. More means buffers were dropped.
   if (produced_.size() >= 4) produced_.erase(produced_.begin());
-  produced_.push_back(placed.data());
+  produced_.push_back({placed.data(), check_});
 }
 
 void PlacementCache::recycle(std::vector<core::NamedEllipse> placed) {
-  const bool ours = placed.size() == order_.size() && !placed.empty() &&
-                    std::find(produced_.begin(), produced_.end(), placed.data()) != produced_.end();
-  if (ours) recycled_ = std::move(placed);
+  if (placed.size() != order_.size() || placed.empty()) return;
+  for (const Produced& p : produced_) {
+    if (p.data != placed.data()) continue;
+    recycled_ = std::move(placed);
+    recycled_check_ = p.check;
+    return;
+  }
 }
 
 std::vector<core::NamedEllipse> PlacementCache::takeRecycled() {
   std::vector<core::NamedEllipse> taken = std::move(recycled_);
   recycled_.clear();
   // Handed out to be refilled: it is no longer a complete placement until produced() again.
-  produced_.erase(std::remove(produced_.begin(), produced_.end(), taken.data()), produced_.end());
+  const auto same = [&taken](const Produced& p) { return p.data == taken.data(); };
+  produced_.erase(std::remove_if(produced_.begin(), produced_.end(), same), produced_.end());
   if (taken.size() != order_.size()) taken.clear();
   refilled_checks_ += taken.empty() ? 0 : 1;
+  if (taken.empty()) recycled_check_ = 0;
   return taken;
 }
 
 void PlacementCache::compare(Frame& frame, ScenePlacement& placement) {
   frame.compared_in_check = check_;
   const FrameTransform& now = placement.lookup(frame.name);
-  frame.unchanged = placement.usable(now) && sameBits(now.fixed_from_frame, frame.transform);
+  frame.usable = placement.usable(now);
+  frame.unchanged = frame.usable && sameBits(now.fixed_from_frame, frame.transform);
+}
+
+bool PlacementCache::byFrameReady() {
+  if (by_frame_) return true;
+  for (const OrderedEntry& entry : order_) {
+    if (!entries_[entry.index].valid) return false;
+  }
+  for (Frame& frame : frames_) {
+    frame.positions.clear();
+    frame.obstacles = 0;
+  }
+  for (std::size_t position = 0; position < order_.size(); ++position) {
+    Frame& frame = frames_[entries_[order_[position].index].frame];
+    frame.positions.push_back(static_cast<std::uint32_t>(position));
+    frame.obstacles += order_[position].role == core::EllipseRole::Obstacle;
+  }
+  by_frame_ = true;
+  return true;
+}
+
+bool PlacementCache::refillByFrame(std::vector<core::NamedEllipse>& placed,
+                                   ScenePlacement& placement,
+                                   const std::function<bool(std::size_t position)>& project,
+                                   std::size_t* reused_obstacles) {
+  *reused_obstacles = 0;
+  if (recycled_check_ == 0 || placed.size() != order_.size() || !byFrameReady()) return false;
+  for (Frame& frame : frames_) {
+    if (frame.compared_in_check != check_) compare(frame, placement);
+    if (!frame.usable) return false;  // its entries are skipped: entry by entry
+  }
+  for (Frame& frame : frames_) {
+    if (frame.unchanged) {
+      *reused_obstacles += frame.obstacles;
+      // Stored after the recycled vector was made: its projections there are stale.
+      if (frame.stored_in_check <= recycled_check_) continue;
+      for (const std::uint32_t position : frame.positions) {
+        placed[position].ellipse = entries_[order_[position].index].ellipse;
+      }
+      continue;
+    }
+    for (const std::uint32_t position : frame.positions) {
+      if (!project(position)) return false;
+    }
+  }
+  ++frame_refills_;
+  return true;
 }
 
 void PlacementCache::store(std::size_t index, const std::string& frame,
@@ -76,12 +134,17 @@ void PlacementCache::store(std::size_t index, const std::string& frame,
   auto found = frame_index_.find(frame);
   if (found == frame_index_.end()) {
     found = frame_index_.emplace(frame, static_cast<std::uint32_t>(frames_.size())).first;
-    frames_.push_back(Frame{frame, transform, 0, false});
+    Frame added;
+    added.name = frame;
+    frames_.push_back(std::move(added));
   }
   Frame& slot = frames_[found->second];
   // The frame moved since its other entries were stored: they project again in this check too
   // (their reuse() found it changed), so the slot takes the new transform.
   slot.transform = transform;
+  slot.stored_in_check = check_;
+  // An entry projected for the first time changes the frames' position lists.
+  if (!entries_[index].valid) by_frame_ = false;
   entries_[index] = Entry{true, found->second, ellipse};
 }
 

@@ -368,6 +368,9 @@ TEST(PlacementCache, SameAnswerBitForBitAsProjectingEveryCycleWhileFramesMoveAnd
     collisions += fresh.collisions.size();
   }
   EXPECT_GT(collisions, 20u) << "the comparison must see collisions";
+  // Both refills ran: frame by frame mostly, entry by entry when the cart had vanished.
+  EXPECT_GT(cache.frameRefills(), 30u);
+  EXPECT_LT(cache.frameRefills(), cache.refilledChecks());
 }
 
 TEST(PlacementCache, StandingObstaclesAreGriddedOnceAndGiveTheSameBits) {
@@ -421,8 +424,9 @@ TEST(PlacementCache, StandingObstaclesAreGriddedOnceAndGiveTheSameBits) {
   EXPECT_GT(warnings, 50u) << "the comparison must see warnings";
   EXPECT_GT(indexed_checks, 60u);
   // Every check refills the buffer of two checks before, except the first two and the two after
-  // the registry changed (cycle 90).
+  // the registry changed (cycle 90); all of those frame by frame (every frame is usable).
   EXPECT_EQ(cache.refilledChecks(), 126u);
+  EXPECT_EQ(cache.frameRefills(), 126u);
 }
 
 TEST(PlacementCache, ReusedProjectionsLookUpEachFrameOncePerCheck) {

@@ -2,6 +2,7 @@
 
 #include <Eigen/Geometry>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <string>
 #include <utility>
@@ -63,6 +64,22 @@ class PlacementCache {
   /// ellipse, in placingOrder(), no query), so that it may be recycled later.
   void produced(const std::vector<core::NamedEllipse>& placed);
 
+  /// Refills `placed`, the vector takeRecycled() returned, frame by frame: the entries of a frame
+  /// that did not move since the recycled vector was made are not visited at all, those of a
+  /// frame that moved only since then get their cached projection, and those of a frame that
+  /// moved now are handed to `project(position)`, which projects, store()s and writes the entry
+  /// at that position of placingOrder() (false if it could not be placed). Returns false, with
+  /// `placed` partly written, unless every stored entry has a projection, every frame is usable
+  /// now and every projection succeeded: then refill entry by entry. `reused_obstacles` counts
+  /// the obstacles whose projection was reused.
+  bool refillByFrame(std::vector<core::NamedEllipse>& placed, ScenePlacement& placement,
+                     const std::function<bool(std::size_t position)>& project,
+                     std::size_t* reused_obstacles);
+  /// Obstacles among placingOrder().
+  std::size_t obstacleCount() const { return obstacle_count_; }
+  /// Checks refilled frame by frame (for tests and benchmarks).
+  std::size_t frameRefills() const { return frame_refills_; }
+
   /// The obstacles' grid, kept with the projections it was made of.
   StandingObstacles& standingObstacles() { return standing_; }
 
@@ -76,6 +93,10 @@ class PlacementCache {
     Eigen::Isometry3d transform{Eigen::Isometry3d::Identity()};
     std::uint64_t compared_in_check{0};  ///< check_ when `unchanged` was last decided
     bool unchanged{false};               ///< in the current check
+    bool usable{false};                  ///< found and fresh in the current check
+    std::uint64_t stored_in_check{0};    ///< check_ of the last store() of one of its entries
+    std::vector<std::uint32_t> positions;  ///< its entries' places in order_ (byFrameReady())
+    std::size_t obstacles{0};              ///< obstacles among them
   };
   struct Entry {
     bool valid{false};
@@ -85,6 +106,8 @@ class PlacementCache {
 
   /// Decides once per check whether `frame` still has the transform its entries were made with.
   void compare(Frame& frame, ScenePlacement& placement);
+  /// Whether every entry has a projection; then each frame lists its entries' positions.
+  bool byFrameReady();
 
   bool started_{false};
   std::uint64_t revision_{0};
@@ -97,9 +120,17 @@ class PlacementCache {
   StandingObstacles standing_;
   /// The buffers of the complete placements produced since the last reset (a vector keeps its
   /// buffer when moved): the node alternates between two.
-  std::vector<const core::NamedEllipse*> produced_;
+  struct Produced {
+    const core::NamedEllipse* data;
+    std::uint64_t check;  ///< check_ that made it: entries stored later are stale in it
+  };
+  std::vector<Produced> produced_;
   std::vector<core::NamedEllipse> recycled_;
+  std::uint64_t recycled_check_{0};
   std::size_t refilled_checks_{0};
+  std::size_t frame_refills_{0};
+  std::size_t obstacle_count_{0};
+  bool by_frame_{false};  ///< frames' positions are complete (byFrameReady())
 };
 
 }  // namespace ellipse_collision::app
