@@ -9,6 +9,8 @@
 //    contactScale(), and exactly the wanted separated pairs whose distance() is below the warning
 //    distance, with its distance and points (brute force over all pairs, so a broadphase or bound
 //    that drops a pair is caught), in the documented order, the same bits whatever the input order;
+//  - checkMoversAgainst() with the obstacles in IndexedObstacles answers the same bits and tests
+//    the same number of pairs;
 //  - nearestTo() answers what a brute force over all partners answers (colliding partner of the
 //    smallest contact scale, else the smallest distance, ties in pair order);
 //  - projectToPlane() refuses an invalid ellipse or a non-finite transform naming the ellipse; an
@@ -164,6 +166,17 @@ void checkScenes(FuzzInput& input) {
   std::vector<core::NamedEllipse> reversed(scene.rbegin(), scene.rend());
   FUZZ_REQUIRE(sameResult(result, core::checkScene(reversed, rules, only_names)),
                "checkScene depends on the order of the ellipses");
+
+  // The node's path for standing obstacles: the obstacles gridded once, the movers looked up.
+  std::vector<core::NamedEllipse> movers, obstacles;
+  for (const core::NamedEllipse& entry : scene) {
+    (entry.role == core::EllipseRole::Obstacle ? obstacles : movers).push_back(entry);
+  }
+  const core::IndexedObstacles indexed(std::move(obstacles));
+  FUZZ_REQUIRE(indexed.error().empty(), "IndexedObstacles refused good obstacles: " + indexed.error());
+  const core::SceneCheckResult against = core::checkMoversAgainst(movers, indexed, rules, only_names);
+  FUZZ_REQUIRE(sameResult(against, expected) && against.pair_tests == result.pair_tests,
+               "checkMoversAgainst differs from checkScene");
 }
 
 void checkProjection(FuzzInput& input) {
