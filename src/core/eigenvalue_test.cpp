@@ -98,10 +98,12 @@ QMaximum maximizeQ(const QFunction& q, double decision_threshold) {
   Sample lo{{0.0, 1.0}, 0.0, q.weight[0] / q.lambda[0] + q.weight[1] / q.lambda[1]};
   Sample hi{{1.0, 0.0}, 0.0, -total_weight};
 
-  // For two circles the maximiser satisfies s / (1 - s) = sqrt(lambda); blend that by weight.
-  const double ratio =
-      (q.weight[0] * q.root_lambda[0] + q.weight[1] * q.root_lambda[1]) / total_weight;
-  Param at = ratio <= 1.0 ? fromS(ratio / (1.0 + ratio)) : fromComplement(1.0 / (1.0 + ratio));
+  // For two circles the maximiser satisfies s / (1 - s) = sqrt(lambda); blend that by weight:
+  // s / (1 - s) = blend / total_weight, with s from a single division.
+  const double blend = q.weight[0] * q.root_lambda[0] + q.weight[1] * q.root_lambda[1];
+  const double inverse_sum = 1.0 / (blend + total_weight);
+  Param at = blend <= total_weight ? fromS(blend * inverse_sum)
+                                   : fromComplement(total_weight * inverse_sum);
 
   constexpr int kMaxIterations = 100;
   constexpr double kRelativeTolerance = 1e-16;
