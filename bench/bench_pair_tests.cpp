@@ -5,6 +5,13 @@
 // carries, as counters, the seconds per pair and its misclassifications against the
 // quad-precision oracle on those very pairs (computed once, before timing).
 //
+// contact_scale/*: contactScale() on the colliding pairs of a robot scene (50 links, 100,000
+// obstacles in 50 m x 50 m, the links among themselves too), every one of which a scene check must
+// give a contact scale; plain and prepared, and the principal axes alone, so that the maximisation
+// of Q is the difference, with its mean Newton iterations as a counter. The core is a shared
+// library: the same binary with LD_LIBRARY_PATH at another build of it compares two versions on
+// the same pairs.
+//
 // Extra flag: --pairs_per_mix=N (default 2000). The oracle takes about 1 ms per pair.
 
 #include <benchmark/benchmark.h>
@@ -13,15 +20,18 @@
 #include <cstring>
 #include <deque>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "bench_scenes.h"
+#include "eigenvalue_test_detail.h"
 #include "ellipse_collision/core/eigenvalue_test.h"
 #include "ellipse_collision/core/overlap.h"
 #include "ellipse_collision/core/polygonal_test.h"
 #include "ellipse_collision/core/prepared_ellipse.h"
 #include "overlap_detail.h"
 #include "reference_methods.h"
+#include "relative_shape.h"
 
 namespace ellipse_collision::core::bench {
 namespace {
@@ -123,6 +133,80 @@ void registerMix(MixData* data) {
   }
 }
 
+/// The pairs of robotScene(50, 100000, 50, 7) that overlap() reports, and the mean Newton
+/// iterations of the fully converged maximisation of Q behind their contact scales.
+struct CollidingPairs {
+  std::vector<std::pair<Ellipse, Ellipse>> plain;
+  std::vector<std::pair<PreparedEllipse, PreparedEllipse>> prepared;
+  double mean_iterations{0.0};
+};
+
+/// Built on first use, so that runs filtered to other benchmarks do not pay for the scene.
+const CollidingPairs& collidingPairs() {
+  static const CollidingPairs pairs = [] {
+    CollidingPairs result;
+    const RobotScene scene = robotScene(50, 100000, 50.0, 7);
+    const auto keep = [&result](const Ellipse& a, const Ellipse& b) {
+      if (!overlap(a, b)) return;
+      result.plain.emplace_back(a, b);
+      result.prepared.emplace_back(PreparedEllipse(a), PreparedEllipse(b));
+    };
+    for (std::size_t i = 0; i < scene.links.size(); ++i) {
+      for (const Ellipse& obstacle : scene.obstacles) keep(scene.links[i], obstacle);
+      for (std::size_t j = i + 1; j < scene.links.size(); ++j) keep(scene.links[i], scene.links[j]);
+    }
+    long iterations = 0;
+    for (const auto& [a, b] : result.plain) {
+      const detail::QFunction q = detail::QFunction::fromPrincipal(
+          detail::principalShape(detail::canonicalRelativeShape(a, b)));
+      iterations += detail::maximizeQ(q, detail::kNoDecision).iterations;
+    }
+    result.mean_iterations = static_cast<double>(iterations) / result.plain.size();
+    return result;
+  }();
+  return pairs;
+}
+
+/// Registers "contact_scale/<name>": `measure(a, b)` summed over all the colliding pairs.
+template <typename Pairs, typename Measure>
+void registerContactScale(const std::string& name, const Pairs& (*pairs_of)(), Measure measure) {
+  const std::string full_name = "contact_scale/" + name;
+  benchmark::RegisterBenchmark(full_name.c_str(), [pairs_of, measure](benchmark::State& state) {
+    const Pairs& pairs = pairs_of();
+    for (auto _ : state) {
+      double sum = 0.0;
+      for (const auto& [a, b] : pairs) sum += measure(a, b);
+      benchmark::DoNotOptimize(sum);
+    }
+    using benchmark::Counter;
+    state.counters["sec_per_pair"] = Counter(static_cast<double>(pairs.size()),
+                                             Counter::kIsIterationInvariantRate | Counter::kInvert);
+    state.counters["pairs"] = static_cast<double>(pairs.size());
+    state.counters["newton_iterations"] = collidingPairs().mean_iterations;
+  });
+}
+
+const std::vector<std::pair<Ellipse, Ellipse>>& plainCollidingPairs() {
+  return collidingPairs().plain;
+}
+const std::vector<std::pair<PreparedEllipse, PreparedEllipse>>& preparedCollidingPairs() {
+  return collidingPairs().prepared;
+}
+
+void registerContactScales() {
+  registerContactScale("plain", &plainCollidingPairs,
+                       [](const Ellipse& a, const Ellipse& b) { return contactScale(a, b); });
+  registerContactScale("prepared", &preparedCollidingPairs,
+                       [](const PreparedEllipse& a, const PreparedEllipse& b) {
+                         return contactScale(a, b);
+                       });
+  registerContactScale("principal_shape_alone", &preparedCollidingPairs,
+                       [](const PreparedEllipse& a, const PreparedEllipse& b) {
+                         return detail::principalShape(detail::canonicalRelativeShape(a, b))
+                             .lambda[0];
+                       });
+}
+
 /// Removes --pairs_per_mix=N from argv (Google Benchmark rejects unknown flags) and returns N.
 int takePairsFlag(int* argc, char** argv) {
   constexpr const char* kFlag = "--pairs_per_mix=";
@@ -153,6 +237,7 @@ int main(int argc, char** argv) {
   mixes.push_back({nearMix(pairs, 2), {}, {}});
   mixes.push_back({tangencyMix(pairs, 3), {}, {}});
   for (MixData& data : mixes) registerMix(&data);
+  registerContactScales();
 
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();

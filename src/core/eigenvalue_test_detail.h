@@ -31,8 +31,9 @@ struct QMaximum {
 /// Pass as decision_threshold to converge fully, without the decision exits.
 inline constexpr double kNoDecision = std::numeric_limits<double>::quiet_NaN();
 
-/// Bracketed, safeguarded Newton on Q'. Stops as soon as lower > decision_threshold or
-/// upper <= decision_threshold (certified decisions), or when the bounds agree to ~1e-15.
+/// Bracketed, safeguarded Halley iteration on Q'. Stops as soon as lower > decision_threshold or
+/// upper <= decision_threshold (certified decisions), or when the bounds agree to 1e-16
+/// (relative).
 QMaximum maximizeQ(const QFunction& q, double decision_threshold);
 
 bool eigenvalueOverlapPrincipal(const PrincipalShape& shape);

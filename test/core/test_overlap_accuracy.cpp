@@ -30,6 +30,9 @@ constexpr double kPi = 3.14159265358979323846;
 
 // contactScale() must match the oracle's t* to this relative error.
 constexpr double kContactScaleRelTolerance = 1e-9;
+// ... and, on the hard pairs of ContactScaleAccuracy, stay within the worst error of the former
+// iteration (tangent-crossing bound, 1e-15): 2.937e-15 there.
+constexpr double kHardPairsWorstRelativeError = 2.94e-15;
 // ... and be (almost) exactly 0 when the centres coincide.
 constexpr double kZeroContactScaleTolerance = 1e-300;
 // Pairs whose t* is this close to 1 (relative) cannot be classified from double inputs.
@@ -564,6 +567,56 @@ TEST(OverlapAccuracy, CirclesAreClassifiedLikeTheOracle) {
   }
   const FamilyReport r = checkFamily("circles", pairs);
   expectFamilyCorrect(r);
+}
+
+// Worst relative error of contactScale() over pairs that are hard for the maximisation of Q:
+// axis ratios to 1e5, near tangency, nearly coincident centres, far apart, deep overlap. A faster
+// iteration must not cost accuracy: the bound is what the former iteration reached on these very
+// pairs (2.937e-15, set by the rounding of the inputs of a thin ellipse nearly centred on another;
+// the local curvature bounds reach 2.767e-15 there, and the same mean 1.58e-16).
+TEST(ContactScaleAccuracy, WorstRelativeErrorOnHardPairsStaysWithinTheFormerIterations) {
+  Generator gen(109);
+  double worst = 0.0, sum = 0.0;
+  int measured_count = 0;
+  std::string worst_pair;
+  for (int i = 0; i < 3000; ++i) {
+    const double size_a = gen.logUniform(1e-3, 1e2), size_b = size_a * gen.logUniform(1e-2, 1e2);
+    const Ellipse a = gen.ellipse(gen.point(1e3), size_a, 1.0, gen.coin() ? 1e5 : 10.0);
+    Ellipse b = gen.ellipse({0, 0}, size_b, 1.0, gen.coin() ? 1e5 : 10.0);
+    Pair p;
+    switch (i % 4) {
+      case 0:  // near tangency or clear, as the other families
+        p = gen.placed(a, b, gen.target());
+        break;
+      case 1:  // nearly coincident centres
+        b.center = a.center + gen.direction() * size_a * gen.logUniform(1e-12, 1e-3);
+        p = {a, b};
+        break;
+      case 2:  // far apart
+        p = gen.placed(a, b, gen.logUniform(10.0, 1e4));
+        break;
+      default:  // deep overlap
+        p = gen.placed(a, b, gen.logUniform(1e-3, 0.5));
+        break;
+    }
+    const quad truth = oracleContactScale(p.a, p.b).quad;
+    if (truth == 0) continue;
+    // The canonical frame makes the two argument orders compute the very same numbers.
+    EXPECT_EQ(contactScale(p.a, p.b), contactScale(p.b, p.a)) << describePair(p.a, p.b);
+    for (const bool swapped : {false, true}) {
+      const double measured = swapped ? contactScale(p.b, p.a) : contactScale(p.a, p.b);
+      const double rel = static_cast<double>(fabsq((static_cast<quad>(measured) - truth) / truth));
+      sum += rel;
+      ++measured_count;
+      if (!(rel <= worst)) {
+        worst = rel;
+        worst_pair = describePair(p.a, p.b);
+      }
+    }
+  }
+  std::printf("[ accuracy ] contactScale relative error: mean %.3g, worst %.4g at %s\n",
+              sum / measured_count, worst, worst_pair.c_str());
+  EXPECT_LE(worst, kHardPairsWorstRelativeError) << worst_pair;
 }
 
 }  // namespace
