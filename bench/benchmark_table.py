@@ -28,7 +28,10 @@ def load_runs(path):
 def pair_table(runs):
     rows = {}  # (method, mix) -> entry
     for name, entry in runs.items():
-        _, method, mix = name.split("/")
+        parts = name.split("/")
+        if parts[0] != "pair":
+            continue  # contact_scale/* has a table of its own
+        _, method, mix = parts
         rows[(method, mix)] = entry
     mixes = ordered({mix for _, mix in rows}, ["scene-like", "near", "tangent"])
     methods = ["ours_overlap", "ours_prepared", "eigenvalue_alone", "polygonal_alone", "fcl",
@@ -116,10 +119,29 @@ def to_microseconds(entry):
     return entry["cpu_time"] * scale
 
 
+def contact_scale_table(runs):
+    rows = {name.split("/", 1)[1]: entry for name, entry in runs.items()
+            if name.startswith("contact_scale/")}
+    if not rows:
+        return
+    print("contactScale() on the colliding pairs of a robot scene (50 links, 100,000 obstacles)")
+    header = f"{'variant':<24} {'ns/pair':>9} {'pairs':>7} {'iterations':>11}"
+    print(header)
+    print("-" * len(header))
+    for name, entry in sorted(rows.items()):
+        ns = entry["sec_per_pair"] * 1e9
+        pairs = int(entry.get("pairs", 0))
+        iterations = entry.get("newton_iterations", 0.0)
+        print(f"{name:<24} {ns:>9.1f} {pairs:>7} {iterations:>11.2f}")
+
+
 def main():
     if len(sys.argv) != 3:
         sys.exit(__doc__)
-    pair_table(load_runs(sys.argv[1]))
+    pair_runs = load_runs(sys.argv[1])
+    pair_table(pair_runs)
+    print()
+    contact_scale_table(pair_runs)
     print()
     scene_table(load_runs(sys.argv[2]))
 
