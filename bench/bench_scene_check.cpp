@@ -89,24 +89,10 @@ CycleResult grid(const RobotScene& scene, BoxOf obstacle_box) {
   return checkCandidates(scene.links, scene.links, overlappingBoxPairs(link_boxes), result);
 }
 
+/// grid_streamed; with kWithScale also the contact scale of every colliding pair, which
+/// checkScene()'s answer carries: the bare cost of the answer itself, names and rules aside.
+template <bool kWithScale>
 CycleResult gridStreamed(const RobotScene& scene) {
-  std::vector<BoundingBox> link_boxes;
-  link_boxes.reserve(scene.links.size());
-  for (const Ellipse& link : scene.links) link_boxes.push_back(boundingBox(link));
-  const BoxGrid grid(std::move(link_boxes));
-  CycleResult result;
-  std::vector<std::size_t> found;
-  for (const Ellipse& obstacle : scene.obstacles) {
-    grid.overlapping(boundingCircleBox(obstacle), &found);
-    for (const std::size_t i : found) result.collisions += overlap(scene.links[i], obstacle);
-    result.pair_tests += static_cast<long>(found.size());
-  }
-  return checkCandidates(scene.links, scene.links, grid.overlappingPairs(), result);
-}
-
-/// grid_streamed plus the contact scale of every colliding pair, which checkScene()'s answer
-/// carries: the bare cost of the answer itself, names and rules aside.
-CycleResult gridStreamedWithScale(const RobotScene& scene) {
   std::vector<BoundingBox> link_boxes;
   link_boxes.reserve(scene.links.size());
   for (const Ellipse& link : scene.links) link_boxes.push_back(boundingBox(link));
@@ -117,7 +103,7 @@ CycleResult gridStreamedWithScale(const RobotScene& scene) {
     ++result.pair_tests;
     if (!overlap(a, b)) return;
     ++result.collisions;
-    scales += contactScale(a, b);
+    if constexpr (kWithScale) scales += contactScale(a, b);
   };
   std::vector<std::size_t> found;
   for (const Ellipse& obstacle : scene.obstacles) {
@@ -219,8 +205,8 @@ using Method = CycleResult (*)(const RobotScene&);
 
 const std::pair<const char*, Method> kMethods[] = {
     {"brute_force", bruteForce},
-    {"grid_streamed", gridStreamed},
-    {"grid_streamed_with_scale", gridStreamedWithScale},
+    {"grid_streamed", gridStreamed<false>},
+    {"grid_streamed_with_scale", gridStreamed<true>},
     {"grid_batch", [](const RobotScene& s) { return grid(s, boundingCircleBox); }},
     {"grid_tight_boxes",
      [](const RobotScene& s) { return grid(s, [](const Ellipse& e) { return boundingBox(e); }); }},
