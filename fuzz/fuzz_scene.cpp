@@ -173,8 +173,10 @@ void checkScenes(FuzzInput& input) {
     (entry.role == core::EllipseRole::Obstacle ? obstacles : movers).push_back(entry);
   }
   const core::IndexedObstacles indexed(std::move(obstacles));
-  FUZZ_REQUIRE(indexed.error().empty(), "IndexedObstacles refused good obstacles: " + indexed.error());
-  const core::SceneCheckResult against = core::checkMoversAgainst(movers, indexed, rules, only_names);
+  FUZZ_REQUIRE(indexed.error().empty(),
+               "IndexedObstacles refused good obstacles: " + indexed.error());
+  const core::SceneCheckResult against =
+      core::checkMoversAgainst(movers, indexed, rules, only_names);
   FUZZ_REQUIRE(sameResult(against, expected) && against.pair_tests == result.pair_tests,
                "checkMoversAgainst differs from checkScene");
 }

@@ -212,8 +212,8 @@ CheckOutcome runCheck(const CheckRequest& request, const EllipseRegistry& regist
         reused_obstacles == obstacles, first_obstacle, scene.cend());
   }
   core::SceneCheckResult result =
-      standing ? core::checkMoversAgainst(std::vector<core::NamedEllipse>(scene.begin(), first_obstacle),
-                                          *standing, settings.rules, only_names)
+      standing ? core::checkMoversAgainst({scene.begin(), first_obstacle}, *standing,
+                                          settings.rules, only_names)
                : core::checkSceneOfUniqueNames(scene, settings.rules, only_names);
   if (!result.ok()) {
     // Requests are validated before they get here, so this is a bug: say so.

@@ -41,7 +41,9 @@ void PlacementCache::begin(const EllipseRegistry& registry, double global_paddin
       ++index;
     }
   }
-  for (const OrderedEntry& entry : order_) obstacle_count_ += entry.role == core::EllipseRole::Obstacle;
+  for (const OrderedEntry& entry : order_) {
+    obstacle_count_ += entry.role == core::EllipseRole::Obstacle;
+  }
 }
 
 void PlacementCache::produced(const std::vector<core::NamedEllipse>& placed) {

@@ -12,7 +12,9 @@ std::vector<BoundingBox> obstacleBoxes(const std::vector<NamedEllipse>& obstacle
   boxes.reserve(obstacles.size());
   for (std::size_t i = 0; i < obstacles.size(); ++i) {
     const NamedEllipse& entry = obstacles[i];
-    const auto where = [&] { return "obstacles[" + std::to_string(i) + "] ('" + entry.name + "')"; };
+    const auto where = [&] {
+      return "obstacles[" + std::to_string(i) + "] ('" + entry.name + "')";
+    };
     if (entry.role != EllipseRole::Obstacle) {
       *error = where() + ": role must be Obstacle";
       return {};
