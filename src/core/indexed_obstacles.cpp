@@ -2,6 +2,8 @@
 
 #include <utility>
 
+#include "scene_entry.h"
+
 namespace ellipse_collision::core {
 namespace {
 
@@ -12,15 +14,12 @@ std::vector<BoundingBox> obstacleBoxes(const std::vector<NamedEllipse>& obstacle
   boxes.reserve(obstacles.size());
   for (std::size_t i = 0; i < obstacles.size(); ++i) {
     const NamedEllipse& entry = obstacles[i];
-    const auto where = [&] {
-      return "obstacles[" + std::to_string(i) + "] ('" + entry.name + "')";
-    };
     if (entry.role != EllipseRole::Obstacle) {
-      *error = where() + ": role must be Obstacle";
+      *error = detail::entryLabel("obstacles", i, entry) + ": role must be Obstacle";
       return {};
     }
     if (!isValid(entry.ellipse)) {
-      *error = where() + ": " + invalidReason(entry.ellipse);
+      *error = detail::invalidEntryReason("obstacles", i, entry);
       return {};
     }
     boxes.push_back(boundingCircleBox(entry.ellipse));

@@ -16,6 +16,7 @@
 #include "ellipse_collision/core/overlap.h"
 #include "ellipse_collision/core/prepared_ellipse.h"
 #include "ellipse_collision/core/unique_names.h"
+#include "scene_entry.h"
 
 namespace ellipse_collision::core {
 namespace {
@@ -58,7 +59,7 @@ std::string entryProblem(std::size_t i, const NamedEllipse& entry, detail::NameS
   }
   // The cheap test first: invalidReason() returns a string, called on every entry of every check.
   if (isValid(entry.ellipse)) return {};
-  return where() + " ('" + entry.name + "'): " + invalidReason(entry.ellipse);
+  return detail::invalidEntryReason("ellipses", i, entry);
 }
 
 std::string validate(const std::vector<NamedEllipse>& ellipses, const SceneRules& rules) {
@@ -116,6 +117,20 @@ bool pairWanted(const NamedEllipse& a, const NamedEllipse& b, const SceneRules& 
 
 namespace {
 
+/// The queries and links of one check ("movers": every pair has one), each prepared once with the
+/// box its partners must meet (candidateBox()).
+struct Movers {
+  std::vector<const NamedEllipse*> entries;
+  std::vector<PreparedEllipse> prepared;
+  std::vector<BoundingBox> boxes;
+
+  void add(const NamedEllipse& entry, double warning_distance) {
+    entries.push_back(&entry);
+    prepared.emplace_back(entry.ellipse);
+    boxes.push_back(candidateBox(prepared.back(), warning_distance));
+  }
+};
+
 /// The narrow phase and the answer, shared by every entry point: each candidate pair is tested
 /// in canonical order (so neither the input order nor the broadphase can change a rounding bit)
 /// and the answer is sorted, so it depends only on the set of pairs tested. Every pair has a
@@ -123,16 +138,15 @@ namespace {
 /// the pairs compares two names only for pairs of one mover with two obstacles.
 class PairCollector {
  public:
-  PairCollector(double warning_distance, const std::vector<const NamedEllipse*>& movers,
-                const std::vector<PreparedEllipse>& prepared_movers)
+  PairCollector(double warning_distance, const Movers& movers)
       : warning_distance_(warning_distance),
-        movers_(movers),
-        prepared_movers_(prepared_movers),
-        rank_(movers.size()) {
-    std::vector<std::uint32_t> order(movers.size());
+        movers_(movers.entries),
+        prepared_movers_(movers.prepared),
+        rank_(movers.entries.size()) {
+    std::vector<std::uint32_t> order(movers_.size());
     for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<std::uint32_t>(i);
-    std::sort(order.begin(), order.end(), [&movers](std::uint32_t a, std::uint32_t b) {
-      return comesFirst(*movers[a], *movers[b]);
+    std::sort(order.begin(), order.end(), [this](std::uint32_t a, std::uint32_t b) {
+      return comesFirst(*movers_[a], *movers_[b]);
     });
     for (std::size_t k = 0; k < order.size(); ++k) rank_[order[k]] = static_cast<std::uint32_t>(k);
   }
@@ -238,9 +252,7 @@ SceneCheckResult checkSceneWith(const std::vector<NamedEllipse>& ellipses,
 
   // Every pair involves a query or a link (obstacle-obstacle is never checked): grid those few
   // "movers", prepared once, and stream the obstacles through the grid.
-  std::vector<const NamedEllipse*> movers;
-  std::vector<PreparedEllipse> prepared_movers;
-  std::vector<BoundingBox> mover_boxes;
+  Movers movers;
   detail::NameSet names(check_names ? ellipses.size() : 0);
   std::size_t stream_from = movers_first ? ellipses.size() : 0;
   for (std::size_t i = 0; i < ellipses.size(); ++i) {
@@ -252,12 +264,10 @@ SceneCheckResult checkSceneWith(const std::vector<NamedEllipse>& ellipses,
     result.error = entryProblem(i, entry, check_names ? &names : nullptr);
     if (!result.error.empty()) return result;
     if (entry.role == EllipseRole::Obstacle) continue;
-    movers.push_back(&entry);
-    prepared_movers.emplace_back(entry.ellipse);
-    mover_boxes.push_back(candidateBox(prepared_movers.back(), warning_distance));
+    movers.add(entry, warning_distance);
   }
-  const BoxGrid grid(std::move(mover_boxes));
-  PairCollector pairs(warning_distance, movers, prepared_movers);
+  PairCollector pairs(warning_distance, movers);
+  const BoxGrid grid(std::move(movers.boxes));
 
   // Movers against obstacles: a mover (query or link) always comes first in a pair with an
   // obstacle. The obstacle's box needs no trigonometry, and it is prepared only if needed.
@@ -281,7 +291,7 @@ SceneCheckResult checkSceneWith(const std::vector<NamedEllipse>& ellipses,
     if (found.empty()) continue;
     std::optional<PreparedEllipse> prepared_obstacle;
     for (const std::size_t i : found) {
-      if (!pairWanted(*movers[i], obstacle, rules, only_names)) continue;
+      if (!pairWanted(*movers.entries[i], obstacle, rules, only_names)) continue;
       if (!prepared_obstacle) prepared_obstacle.emplace(obstacle.ellipse);
       pairs.checkWithObstacle(i, obstacle, *prepared_obstacle);
     }
@@ -303,43 +313,35 @@ SceneCheckResult checkMoversAgainst(const std::vector<NamedEllipse>& movers,
   if (!result.error.empty()) return result;
   const double warning_distance = rules.warning_distance;
 
-  std::vector<const NamedEllipse*> mover_list;
-  std::vector<PreparedEllipse> prepared_movers;
-  std::vector<BoundingBox> mover_boxes;
-  mover_list.reserve(movers.size());
-  prepared_movers.reserve(movers.size());
-  mover_boxes.reserve(movers.size());
+  Movers mover_list;
   for (std::size_t i = 0; i < movers.size(); ++i) {
     const NamedEllipse& entry = movers[i];
-    const auto where = [i] { return "movers[" + std::to_string(i) + "]"; };
     if (entry.role == EllipseRole::Obstacle) {
-      result.error = where() + " ('" + entry.name + "') is an obstacle";
+      result.error = detail::entryLabel("movers", i, entry) + " is an obstacle";
       return result;
     }
     if (!isValid(entry.ellipse)) {
-      result.error = where() + " ('" + entry.name + "'): " + invalidReason(entry.ellipse);
+      result.error = detail::invalidEntryReason("movers", i, entry);
       return result;
     }
-    mover_list.push_back(&entry);
-    prepared_movers.emplace_back(entry.ellipse);
-    mover_boxes.push_back(candidateBox(prepared_movers.back(), warning_distance));
+    mover_list.add(entry, warning_distance);
   }
 
   // The pairs checkScene() finds by streaming each obstacle's box through the movers' grid,
   // found the other way round: each mover's box looked up in the obstacles' grid (the overlap
   // test of two boxes is symmetric). An obstacle is prepared per pair: few meet a mover.
-  PairCollector pairs(warning_distance, mover_list, prepared_movers);
+  PairCollector pairs(warning_distance, mover_list);
   const std::vector<NamedEllipse>& indexed = obstacles.obstacles();
   std::vector<std::size_t> found;
-  for (std::size_t i = 0; i < mover_list.size(); ++i) {
-    obstacles.grid().overlapping(mover_boxes[i], &found);
+  for (std::size_t i = 0; i < mover_list.entries.size(); ++i) {
+    obstacles.grid().overlapping(mover_list.boxes[i], &found);
     for (const std::size_t k : found) {
       const NamedEllipse& obstacle = indexed[k];
-      if (!pairWanted(*mover_list[i], obstacle, rules, only_names)) continue;
+      if (!pairWanted(*mover_list.entries[i], obstacle, rules, only_names)) continue;
       pairs.checkWithObstacle(i, obstacle, PreparedEllipse(obstacle.ellipse));
     }
   }
-  pairs.checkMoverPairs(BoxGrid(std::move(mover_boxes)), rules, only_names);
+  pairs.checkMoverPairs(BoxGrid(std::move(mover_list.boxes)), rules, only_names);
   return pairs.finish();
 }
 
