@@ -213,12 +213,14 @@ const app::CheckOutcome& CollisionNode::runFullCheck(const ros::Duration& timeou
 
 namespace {
 
-/// Everything of the state but its stamp.
-bool sameContent(const CollisionState& a, const CollisionState& b) {
-  return a.header.frame_id == b.header.frame_id && a.in_collision == b.in_collision &&
-         a.complete == b.complete && a.collisions == b.collisions && a.warnings == b.warnings &&
-         a.unavailable_frames == b.unavailable_frames && a.stale_frames == b.stale_frames &&
-         a.predicted == b.predicted;
+/// Everything of the state but its stamp: the message's own operator==, so that a field added to
+/// CollisionState later is compared too.
+bool sameContent(CollisionState& a, const CollisionState& b) {
+  const ros::Time stamp = a.header.stamp;
+  a.header.stamp = b.header.stamp;
+  const bool same = a == b;
+  a.header.stamp = stamp;
+  return same;
 }
 
 }  // namespace
