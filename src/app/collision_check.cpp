@@ -116,6 +116,11 @@ CheckOutcome runCheck(const CheckRequest& request, const EllipseRegistry& regist
   // counted in registry order for the cache. A reused entry in a recycled vector touches neither
   // its name nor its spec.
   std::size_t reused_obstacles = 0, obstacles = 0;
+  // A projection made now, kept for the next check.
+  const auto remember = [&](std::size_t entry, const EllipseSpec& spec,
+                            const core::Ellipse& ellipse) {
+    cache->store(entry, spec.frame_id, placement.lookup(spec.frame_id).fixed_from_frame, ellipse);
+  };
   const auto place = [&](std::size_t entry, const RegistryEntry& item, core::EllipseRole role) {
     const bool obstacle = role == core::EllipseRole::Obstacle;
     obstacles += obstacle;
@@ -133,11 +138,7 @@ CheckOutcome runCheck(const CheckRequest& request, const EllipseRegistry& regist
     }
     switch (placed.status) {
       case ScenePlacement::Status::Placed:
-        if (cache) {
-          cache->store(entry, stored.spec.frame_id,
-                       placement.lookup(stored.spec.frame_id).fixed_from_frame,
-                       placed.ellipse.ellipse);
-        }
+        if (cache) remember(entry, stored.spec, placed.ellipse.ellipse);
         put(item, role, placed.ellipse.ellipse);
         break;
       case ScenePlacement::Status::FrameUnavailable:
@@ -160,8 +161,7 @@ CheckOutcome runCheck(const CheckRequest& request, const EllipseRegistry& regist
     const EllipseSpec& spec = item.entry->second.spec;
     const ScenePlacement::Placement placed = placement.place(spec, item.role);
     if (placed.status != ScenePlacement::Status::Placed) return false;
-    cache->store(item.index, spec.frame_id, placement.lookup(spec.frame_id).fixed_from_frame,
-                 placed.ellipse.ellipse);
+    remember(item.index, spec, placed.ellipse.ellipse);
     outcome.placed[at].ellipse = placed.ellipse.ellipse;
     return true;
   };
