@@ -182,6 +182,37 @@ TEST(FirstContact, GrazingTranslationMatchesOracleOutsideTheBand) {
   EXPECT_EQ(report.wrong, 0);
 }
 
+TEST(FirstContact, NearlyStraightGaugeFromCloseSamplesIsNeverLate) {
+  // Fuzzer finding: axis ratios 5.6e14 and 2.6e9, the gauge nearly straight along the path and the
+  // first two samples 3e-10 s apart. Their secant, from values exact to a few ulps, put the
+  // contact 1.1e-6 s late. Reference: bisection of overlap() along the path.
+  const Ellipse a{{1.8512501431811046e-07, 1.702238531242628e-07}, 1.8512501431811046e-07,
+                  104216118.1875, 70530100.1875};
+  const Ellipse b{{70530100.1875, 70530100.1875}, 70530100.1875, 0.027203810444916598,
+                  572194610744781.88};
+  const Motion motion_a{{1.8512501076539678e-07, 0.001518093838058121}, 0.0};
+  const Motion motion_b{{-49371070.131249674, -49371070.129731782}, 0.0};
+  const double horizon = 1.0000000000000002;
+  const FirstContact contact = firstContact(a, motion_a, b, motion_b, horizon);
+  ASSERT_TRUE(contact.contact);
+  const auto overlapAt = [&](double t) {
+    Ellipse moved_a = a, moved_b = b;
+    moved_a.center += motion_a.velocity * t;
+    moved_b.center += motion_b.velocity * t;
+    return overlap(moved_a, moved_b);
+  };
+  double lo = 0.5, hi = 0.8;  // clear at 0.5, overlapping at 0.8
+  ASSERT_FALSE(overlapAt(lo));
+  ASSERT_TRUE(overlapAt(hi));
+  for (int i = 0; i < 200 && hi - lo > 0.0; ++i) {
+    const double mid = lo + 0.5 * (hi - lo);
+    if (mid <= lo || mid >= hi) break;
+    (overlapAt(mid) ? hi : lo) = mid;
+  }
+  EXPECT_LE(contact.time, hi);                       // never late
+  EXPECT_NEAR(contact.time, hi, 1e-9 * horizon);     // and not early beyond rounding
+}
+
 TEST(FirstContact, OverlapAndContainmentAtStartGiveTimeZero) {
   Generator g(1303);
   Report report("overlap/containment at t=0");
