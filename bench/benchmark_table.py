@@ -81,7 +81,7 @@ def scene_table(runs):
     methods = ordered({method for method, _ in rows},
                       ["brute_force", "grid_streamed", "grid_streamed_with_scale", "grid_batch",
                        "grid_tight_boxes", "grid_prepared", "sort_and_sweep", "checkScene",
-                       "checkScene_unique_names", "checkScene_warn", "indexed_obstacles",
+                       "checkScene_vouched", "checkScene_warn", "indexed_obstacles",
                        "indexed_build"])
     print("Scene checks: 50 links vs N obstacles, plus link-link pairs, per cycle on one core")
     # x bare: time over grid_streamed (the bare broadphase + overlap(), same pairs) at the same N;

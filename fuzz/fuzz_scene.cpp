@@ -10,7 +10,9 @@
 //    distance, with its distance and points (brute force over all pairs, so a broadphase or bound
 //    that drops a pair is caught), in the documented order, the same bits whatever the input order;
 //  - checkMoversAgainst() with the obstacles in IndexedObstacles answers the same bits and tests
-//    the same number of pairs;
+//    the same number of pairs; so does checkVouchedScene() with the movers first;
+//  - checkVouchedScene() returns (unspecified answer, no crash or sanitizer report) on any scene,
+//    however broken its promise (bad entries, obstacles before first_obstacle or links after);
 //  - nearestTo() answers what a brute force over all partners answers (colliding partner of the
 //    smallest contact scale, else the smallest distance, ties in pair order);
 //  - projectToPlane() refuses an invalid ellipse or a non-finite transform naming the ellipse; an
@@ -119,6 +121,15 @@ void checkScenes(FuzzInput& input) {
   }
   const std::string nearest_name = kNames[input.integer(0, kNameCount - 1)];
 
+  // The vouched entry point on whatever the input is: bad entries, any roles on either side of
+  // first_obstacle. Only that it returns is checked here; the bits are checked below when the
+  // promise holds.
+  const std::size_t first_obstacle =
+      static_cast<std::size_t>(input.integer(0, static_cast<int>(scene.size()) + 1));
+  const core::SceneCheckResult broken =
+      core::checkVouchedScene(scene, first_obstacle, rules, only_names);
+  FUZZ_REQUIRE(broken.ok() || !broken.error.empty(), "checkVouchedScene: an error with no text");
+
   const core::SceneCheckResult result = core::checkScene(scene, rules, only_names);
   const core::NearestResult nearest = core::nearestTo(scene, rules, nearest_name);
   if (!(std::isfinite(rules.warning_distance) && rules.warning_distance >= 0.0)) {
@@ -179,6 +190,13 @@ void checkScenes(FuzzInput& input) {
       core::checkMoversAgainst(movers, indexed, rules, only_names);
   FUZZ_REQUIRE(sameResult(against, expected) && against.pair_tests == result.pair_tests,
                "checkMoversAgainst differs from checkScene");
+  // The node's path for moving obstacles: the movers first, every entry vouched for.
+  std::vector<core::NamedEllipse> ordered = movers;
+  ordered.insert(ordered.end(), indexed.obstacles().begin(), indexed.obstacles().end());
+  const core::SceneCheckResult vouched =
+      core::checkVouchedScene(ordered, movers.size(), rules, only_names);
+  FUZZ_REQUIRE(sameResult(vouched, expected) && vouched.pair_tests == result.pair_tests,
+               "checkVouchedScene differs from checkScene");
 }
 
 void checkProjection(FuzzInput& input) {

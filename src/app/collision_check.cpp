@@ -211,10 +211,15 @@ CheckOutcome runCheck(const CheckRequest& request, const EllipseRegistry& regist
     standing = cache->standingObstacles().update(
         reused_obstacles == obstacles, first_obstacle, scene.cend());
   }
+  // Every entry was validated where it was made (ScenePlacement refuses an invalid projection,
+  // the registry and validateCheckRequest() duplicate names) and the movers come first: the
+  // core need not test every entry again on every check.
   core::SceneCheckResult result =
       standing ? core::checkMoversAgainst({scene.begin(), first_obstacle}, *standing,
                                           settings.rules, only_names)
-               : core::checkSceneOfUniqueNames(scene, settings.rules, only_names);
+               : core::checkVouchedScene(
+                     scene, static_cast<std::size_t>(first_obstacle - scene.begin()),
+                     settings.rules, only_names);
   if (!result.ok()) {
     // Requests are validated before they get here, so this is a bug: say so.
     outcome.error = "internal error: " + result.error;

@@ -47,16 +47,12 @@ std::string warningDistanceProblem(const SceneRules& rules) {
   return {};
 }
 
-/// What is wrong with entry `i`, or "". `names` collects the names for the duplicate rule; null
-/// when the caller vouches for them (checkSceneOfUniqueNames()): that set, a hash of every name
-/// on every call, is what it saves.
-std::string entryProblem(std::size_t i, const NamedEllipse& entry, detail::NameSet* names) {
+/// What is wrong with entry `i`, or "". `names` collects the names for the duplicate rule.
+std::string entryProblem(std::size_t i, const NamedEllipse& entry, detail::NameSet& names) {
   // Built only for an error: per entry it would cost more than the whole check.
   const auto where = [i] { return "ellipses[" + std::to_string(i) + "]"; };
-  if (names) {
-    if (entry.name.empty()) return where() + ".name is empty";
-    if (!names->insert(entry.name)) return where() + ".name = '" + entry.name + "' is a duplicate";
-  }
+  if (entry.name.empty()) return where() + ".name is empty";
+  if (!names.insert(entry.name)) return where() + ".name = '" + entry.name + "' is a duplicate";
   // The cheap test first: invalidReason() returns a string, called on every entry of every check.
   if (isValid(entry.ellipse)) return {};
   return detail::invalidEntryReason("ellipses", i, entry);
@@ -69,7 +65,7 @@ std::string validate(const std::vector<NamedEllipse>& ellipses, const SceneRules
   // as much as the pair tests); the set of names is the one findNameProblem() uses.
   detail::NameSet names(ellipses.size());
   for (std::size_t i = 0; i < ellipses.size(); ++i) {
-    problem = entryProblem(i, ellipses[i], &names);
+    problem = entryProblem(i, ellipses[i], names);
     if (!problem.empty()) return problem;
   }
   return {};
@@ -124,6 +120,11 @@ struct Movers {
   std::vector<PreparedEllipse> prepared;
   std::vector<BoundingBox> boxes;
 
+  void reserve(std::size_t count) {
+    entries.reserve(count);
+    prepared.reserve(count);
+    boxes.reserve(count);
+  }
   void add(const NamedEllipse& entry, double warning_distance) {
     entries.push_back(&entry);
     prepared.emplace_back(entry.ellipse);
@@ -149,6 +150,8 @@ class PairCollector {
       return comesFirst(*movers_[a], *movers_[b]);
     });
     for (std::size_t k = 0; k < order.size(); ++k) rank_[order[k]] = static_cast<std::uint32_t>(k);
+    // Enough for a robot's self collisions without growing the vector on the way.
+    collisions_.reserve(kExpectedPairs);
   }
 
   /// Mover `i` (always first in its pair with an obstacle) against `obstacle`.
@@ -193,6 +196,7 @@ class PairCollector {
   }
 
  private:
+  static constexpr std::size_t kExpectedPairs = 128;
   /// The second rank of an obstacle: after every mover.
   static constexpr std::uint32_t kObstacle = std::numeric_limits<std::uint32_t>::max();
 
@@ -236,15 +240,32 @@ class PairCollector {
   std::vector<Found> warnings_;
 };
 
-/// checkScene() (`check_names`) and checkSceneOfUniqueNames(). Every entry is validated once, in
-/// index order, so the first problem reported is the same whichever way the scene is read.
-/// With `movers_first` it tries to read the scene once: the leading queries and links are
-/// gridded, then every later entry is validated and streamed in the same pass (at 100,000
-/// obstacles reading the scene costs as much as the pair tests). A query or link after an
-/// obstacle sends it back to the start in two passes: movers first, then obstacles.
+/// Every wanted pair of `obstacle` with the movers whose candidate boxes its bounding-circle box
+/// meets (a mover always comes first in a pair with an obstacle). The box needs no trigonometry,
+/// and the obstacle is prepared only if a pair needs it. `found` is scratch space.
+inline void checkObstacle(const NamedEllipse& obstacle, const BoxGrid& grid, const Movers& movers,
+                          const SceneRules& rules, const std::set<std::string>& only_names,
+                          PairCollector& pairs, std::vector<std::size_t>& found) {
+  grid.overlapping(boundingCircleBox(obstacle.ellipse), &found);
+  // Most obstacles meet no mover: leave before the optional, whose storage GCC zeroes.
+  if (found.empty()) return;
+  std::optional<PreparedEllipse> prepared_obstacle;
+  for (const std::size_t i : found) {
+    if (!pairWanted(*movers.entries[i], obstacle, rules, only_names)) continue;
+    if (!prepared_obstacle) prepared_obstacle.emplace(obstacle.ellipse);
+    pairs.checkWithObstacle(i, obstacle, *prepared_obstacle);
+  }
+}
+
+/// checkScene(). Every entry is validated once, in index order, so the first problem reported is
+/// the same whichever way the scene is read. With `movers_first` it tries to read the scene
+/// once: the leading queries and links are gridded, then every later entry is validated and
+/// streamed in the same pass (at 100,000 obstacles reading the scene costs as much as the pair
+/// tests). A query or link after an obstacle sends it back to the start in two passes: movers
+/// first, then obstacles.
 SceneCheckResult checkSceneWith(const std::vector<NamedEllipse>& ellipses,
                                 const SceneRules& rules, const std::set<std::string>& only_names,
-                                bool check_names, bool movers_first) {
+                                bool movers_first) {
   SceneCheckResult result;
   result.error = warningDistanceProblem(rules);
   if (!result.error.empty()) return result;
@@ -253,7 +274,7 @@ SceneCheckResult checkSceneWith(const std::vector<NamedEllipse>& ellipses,
   // Every pair involves a query or a link (obstacle-obstacle is never checked): grid those few
   // "movers", prepared once, and stream the obstacles through the grid.
   Movers movers;
-  detail::NameSet names(check_names ? ellipses.size() : 0);
+  detail::NameSet names(ellipses.size());
   std::size_t stream_from = movers_first ? ellipses.size() : 0;
   for (std::size_t i = 0; i < ellipses.size(); ++i) {
     const NamedEllipse& entry = ellipses[i];
@@ -261,7 +282,7 @@ SceneCheckResult checkSceneWith(const std::vector<NamedEllipse>& ellipses,
       stream_from = i;  // validated as it streams
       break;
     }
-    result.error = entryProblem(i, entry, check_names ? &names : nullptr);
+    result.error = entryProblem(i, entry, names);
     if (!result.error.empty()) return result;
     if (entry.role == EllipseRole::Obstacle) continue;
     movers.add(entry, warning_distance);
@@ -269,32 +290,18 @@ SceneCheckResult checkSceneWith(const std::vector<NamedEllipse>& ellipses,
   PairCollector pairs(warning_distance, movers);
   const BoxGrid grid(std::move(movers.boxes));
 
-  // Movers against obstacles: a mover (query or link) always comes first in a pair with an
-  // obstacle. The obstacle's box needs no trigonometry, and it is prepared only if needed.
   std::vector<std::size_t> found;
   for (std::size_t k = stream_from; k < ellipses.size(); ++k) {
     const NamedEllipse& obstacle = ellipses[k];
     if (movers_first) {
       if (obstacle.role != EllipseRole::Obstacle) {
-        return checkSceneWith(ellipses, rules, only_names, check_names, /*movers_first=*/false);
+        return checkSceneWith(ellipses, rules, only_names, /*movers_first=*/false);
       }
-      // Inline, the test every valid entry of a vouched-for scene needs (a call per entry costs
-      // as much as the grid query).
-      if (check_names || !isValid(obstacle.ellipse)) {
-        result.error = entryProblem(k, obstacle, check_names ? &names : nullptr);
-        if (!result.error.empty()) return SceneCheckResult{{}, {}, result.error, 0};
-      }
+      result.error = entryProblem(k, obstacle, names);
+      if (!result.error.empty()) return SceneCheckResult{{}, {}, result.error, 0};
     }
     if (obstacle.role != EllipseRole::Obstacle) continue;
-    grid.overlapping(boundingCircleBox(obstacle.ellipse), &found);
-    // Most obstacles meet no mover: leave before the optional, whose storage GCC zeroes.
-    if (found.empty()) continue;
-    std::optional<PreparedEllipse> prepared_obstacle;
-    for (const std::size_t i : found) {
-      if (!pairWanted(*movers.entries[i], obstacle, rules, only_names)) continue;
-      if (!prepared_obstacle) prepared_obstacle.emplace(obstacle.ellipse);
-      pairs.checkWithObstacle(i, obstacle, *prepared_obstacle);
-    }
+    checkObstacle(obstacle, grid, movers, rules, only_names, pairs, found);
   }
   pairs.checkMoverPairs(grid, rules, only_names);
   return pairs.finish();
@@ -347,14 +354,43 @@ SceneCheckResult checkMoversAgainst(const std::vector<NamedEllipse>& movers,
 
 SceneCheckResult checkScene(const std::vector<NamedEllipse>& ellipses, const SceneRules& rules,
                             const std::set<std::string>& only_names) {
-  return checkSceneWith(ellipses, rules, only_names, /*check_names=*/true, /*movers_first=*/true);
+  return checkSceneWith(ellipses, rules, only_names, /*movers_first=*/true);
 }
 
-SceneCheckResult checkSceneOfUniqueNames(const std::vector<NamedEllipse>& ellipses,
-                                         const SceneRules& rules,
-                                         const std::set<std::string>& only_names) {
-  return checkSceneWith(ellipses, rules, only_names, /*check_names=*/false,
-                        /*movers_first=*/true);
+SceneCheckResult checkVouchedScene(const std::vector<NamedEllipse>& ellipses,
+                                   std::size_t first_obstacle, const SceneRules& rules,
+                                   const std::set<std::string>& only_names) {
+  SceneCheckResult result;
+  result.error = warningDistanceProblem(rules);
+  if (result.error.empty() && first_obstacle > ellipses.size()) {
+    result.error = "first_obstacle = " + std::to_string(first_obstacle) + " is beyond the " +
+                   std::to_string(ellipses.size()) + " ellipses";
+  }
+  if (!result.error.empty()) return result;
+  const double warning_distance = rules.warning_distance;
+
+  // The movers are few: their roles are checked (an obstacle among them would be paired with
+  // the other obstacles). The obstacles are streamed exactly as the bare broadphase streams
+  // them: no test per entry but the grid's.
+  Movers movers;
+  movers.reserve(first_obstacle);
+  for (std::size_t i = 0; i < first_obstacle; ++i) {
+    const NamedEllipse& entry = ellipses[i];
+    if (entry.role == EllipseRole::Obstacle) {
+      result.error = detail::entryLabel("ellipses", i, entry) + " is an obstacle before " +
+                     "first_obstacle = " + std::to_string(first_obstacle);
+      return result;
+    }
+    movers.add(entry, warning_distance);
+  }
+  PairCollector pairs(warning_distance, movers);
+  const BoxGrid grid(std::move(movers.boxes));
+  std::vector<std::size_t> found;
+  for (std::size_t k = first_obstacle; k < ellipses.size(); ++k) {
+    checkObstacle(ellipses[k], grid, movers, rules, only_names, pairs, found);
+  }
+  pairs.checkMoverPairs(grid, rules, only_names);
+  return pairs.finish();
 }
 
 NearestResult nearestTo(const std::vector<NamedEllipse>& ellipses, const SceneRules& rules,
