@@ -269,6 +269,29 @@ TEST(SceneBroadphase, CountsEveryWantedPairWhenAllBoxesOverlap) {
   EXPECT_EQ(checkScene(scene, rules).pair_tests, 12u + 14u);
 }
 
+TEST(SceneBroadphase, PairsAreInNameOrderWhateverTheNamesFirstBytes) {
+  // The movers are ranked on their names' first 8 bytes before the whole names: names that tie
+  // there, are prefixes of each other, hold a NUL or bytes above 127 must still come in
+  // std::string order, as the brute force sorts them.
+  const std::vector<std::string> names = {"a", "ab", std::string("ab\0", 3), std::string("ab\0c", 4),
+                                          "abcdefgh1", "abcdefgh0", "abcdefgh", "\xff", "\x80x",
+                                          "Z", "link_10", "link_9", "", "b"};
+  std::vector<NamedEllipse> scene;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (names[i].empty()) continue;
+    scene.push_back({names[i], i % 3 == 0 ? EllipseRole::Query : EllipseRole::Link,
+                     {Eigen::Vector2d(0.01 * static_cast<double>(i), 0), 1, 1, 0}});
+  }
+  scene.push_back({"rock", EllipseRole::Obstacle, {Eigen::Vector2d(0.5, 0), 1, 1, 0}});
+  scene.push_back({"rock2", EllipseRole::Obstacle, {Eigen::Vector2d(0.5, 0.1), 1, 1, 0}});
+  SceneRules rules;
+  const SceneCheckResult expected = bruteForce(scene, rules, {});
+  ASSERT_GT(expected.collisions.size(), 80u);
+  expectSame(checkScene(scene, rules), expected, "checkScene");
+  expectSame(checkVouched(scene, rules, {}), expected, "checkVouchedScene");
+  expectSame(checkIndexed(scene, rules, {}), expected, "checkMoversAgainst");
+}
+
 TEST(SceneBroadphase, FiftyLinksAmongTenThousandObstaclesTestFewPairs) {
   // A robot of 50 links within 1 m of its centre in a 50 m x 50 m warehouse.
   std::mt19937_64 rng(4242);

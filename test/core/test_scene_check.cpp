@@ -130,20 +130,39 @@ TEST(SceneCheck, VouchedEntryPointRefusesWhatCostsNothingPerObstacle) {
   EXPECT_EQ(result.error, "ellipses[1] ('rock') is an obstacle before first_obstacle = 2");
 }
 
-TEST(SceneCheck, VouchedEntryPointGivesAnAnswerForABrokenPromise) {
-  // Invalid ellipses, a link among the obstacles, duplicate and empty names: the promise is
-  // broken, the answer unspecified, but the call returns (fuzz_scene does this at random).
+TEST(SceneCheck, VouchedEntryPointRefusesInvalidMoversAndInvalidObstaclesNearThem) {
   const double nan = std::nan(""), inf = std::numeric_limits<double>::infinity();
-  const std::vector<NamedEllipse> scene = {
-      circle("arm", EllipseRole::Link, 0, 0, 1),
-      {"", EllipseRole::Link, {{nan, 0.0}, 1.0, 1.0, 0.0}},
-      {"rock", EllipseRole::Obstacle, {{0.5, 0.0}, 0.0, -1.0, inf}},
-      {"rock", EllipseRole::Link, {{inf, -inf}, 1e300, 1e-300, nan}},
-      circle("stone", EllipseRole::Obstacle, 0.5, 0, 1)};
-  SceneRules rules;
-  rules.warning_distance = 0.5;
-  const SceneCheckResult result = checkVouchedScene(scene, 2, rules);
-  EXPECT_TRUE(result.ok()) << result.error;
+  const NamedEllipse arm = circle("arm", EllipseRole::Link, 0, 0, 1);
+  const NamedEllipse stone = circle("stone", EllipseRole::Obstacle, 0.5, 0, 1);
+  SceneCheckResult result = checkVouchedScene(
+      {arm, {"hand", EllipseRole::Link, {{nan, 0.0}, 1.0, 1.0, 0.0}}, stone}, 2, SceneRules{});
+  EXPECT_EQ(result.error.rfind("ellipses[1] ('hand'): center.x", 0), 0u) << result.error;
+  // A zero radius near the arm: refused before any pair work divides by it.
+  result = checkVouchedScene({arm, stone, {"rock", EllipseRole::Obstacle, {{0.5, 0.0}, 1.0, 0.0, 0.0}}},
+                             1, SceneRules{});
+  EXPECT_EQ(result.error.rfind("ellipses[2] ('rock'): radius_y", 0), 0u) << result.error;
+  result = checkVouchedScene({arm, {"rock", EllipseRole::Obstacle, {{0.5, 0.0}, inf, 1.0, 0.0}}},
+                             1, SceneRules{});
+  EXPECT_EQ(result.error.rfind("ellipses[1] ('rock'): radius_x", 0), 0u) << result.error;
+}
+
+TEST(SceneCheck, VouchedEntryPointAnswersWithoutObstaclesItNeverMeets) {
+  // The rest of a broken promise: invalid obstacles far from every mover (or nowhere) are not
+  // tested at all, so the answer is that of the scene without them.
+  const double nan = std::nan("");
+  const NamedEllipse arm = circle("arm", EllipseRole::Link, 0, 0, 1);
+  const NamedEllipse stone = circle("stone", EllipseRole::Obstacle, 0.5, 0, 1);
+  const SceneCheckResult expected = checkScene({arm, stone}, SceneRules{});
+  ASSERT_EQ(expected.collisions.size(), 1u);
+  const SceneCheckResult result = checkVouchedScene(
+      {arm, stone,
+       {"far", EllipseRole::Obstacle, {{50.0, 0.0}, 0.0, -1.0, 0.0}},
+       {"nowhere", EllipseRole::Obstacle, {{nan, nan}, 1.0, 1.0, nan}}},
+      1, SceneRules{});
+  ASSERT_TRUE(result.ok()) << result.error;
+  ASSERT_EQ(result.collisions.size(), 1u);
+  EXPECT_EQ(result.collisions[0].name_b, "stone");
+  EXPECT_EQ(result.collisions[0].contact_scale, expected.collisions[0].contact_scale);
 }
 
 TEST(SceneCheck, ResultDoesNotDependOnInputOrder) {

@@ -101,17 +101,20 @@ bool pairWanted(const NamedEllipse& a, const NamedEllipse& b, const SceneRules& 
 SceneCheckResult checkScene(const std::vector<NamedEllipse>& ellipses, const SceneRules& rules,
                             const std::set<std::string>& only_names = {});
 
-/// checkScene() for a caller that vouches for its scene, so that the check does no work per entry
-/// but the broadphase's: every name non-empty and distinct (a registry keyed by name), every
-/// ellipse valid (isValid(), tested where it was made: projectToPlane() refuses an invalid
-/// projection), and the queries and links first: entries [0, first_obstacle) are queries and
-/// links, the rest obstacles. The same answer bit for bit as checkScene(), without hashing every
-/// name and testing every field and role of every entry on every call (at 10,000 obstacles that
-/// cost twice the broadphase), so names and rules cost in proportion to the pairs tested.
-/// Still refuses what costs nothing per obstacle: a warning distance that is negative or not
-/// finite, first_obstacle beyond the scene, an obstacle among the first first_obstacle entries.
-/// A scene that breaks the rest of the promise gets an unspecified but memory-safe answer
-/// (fuzz_scene feeds it broken ones).
+/// checkScene() for a caller that vouches for its scene, so that the check does no work per
+/// obstacle but the broadphase's: every name non-empty and distinct (a registry keyed by name),
+/// every obstacle's ellipse valid (isValid(), tested where it was made: projectToPlane() refuses
+/// an invalid projection), and the queries and links first: entries [0, first_obstacle) are
+/// queries and links, the rest obstacles. The same answer bit for bit as checkScene(), without
+/// hashing every name and testing every field and role of every obstacle on every call (at
+/// 10,000 obstacles that cost twice the broadphase), so names and rules cost in proportion to the
+/// movers and the pairs tested. Still refuses, naming the entry, what costs nothing per
+/// obstacle: a warning distance that is negative or not finite, first_obstacle beyond the
+/// scene, an obstacle or an invalid ellipse among the movers, and an invalid obstacle whose
+/// bounding-circle box meets a mover's box (tested before any pair work). A scene that breaks
+/// the rest of the promise (an invalid obstacle far from every mover, a query or link after
+/// first_obstacle, duplicate names) gets an unspecified answer, with no undefined behaviour
+/// (fuzz_scene feeds it broken scenes under the sanitizers).
 SceneCheckResult checkVouchedScene(const std::vector<NamedEllipse>& ellipses,
                                    std::size_t first_obstacle, const SceneRules& rules,
                                    const std::set<std::string>& only_names = {});
