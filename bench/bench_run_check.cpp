@@ -8,7 +8,6 @@
 //   core_only     checkVouchedScene() alone on the placed scene of `cached`, streamed
 #include <benchmark/benchmark.h>
 
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <random>
@@ -142,11 +141,12 @@ void registerSize(int count) {
                                                 moving_cache, base);
                                })
       ->Unit(benchmark::kMicrosecond);
-  auto* placed = new std::vector<core::NamedEllipse>(first.placed);
-  const std::size_t first_obstacle = static_cast<std::size_t>(
-      std::find_if(placed->begin(), placed->end(),
-                   [](const core::NamedEllipse& e) { return e.role == core::EllipseRole::Obstacle; }) -
-      placed->begin());
+  auto* placed = new core::Scene(first.placed);
+  std::size_t first_obstacle = 0;
+  while (first_obstacle < placed->size() &&
+         placed->role(first_obstacle) != core::EllipseRole::Obstacle) {
+    ++first_obstacle;
+  }
   benchmark::RegisterBenchmark(("run_check/core_only/" + size).c_str(),
                                [=](benchmark::State& state) {
                                  for (auto _ : state) {

@@ -128,7 +128,7 @@ void checkScenes(FuzzInput& input) {
   const std::size_t first_obstacle =
       static_cast<std::size_t>(input.integer(0, static_cast<int>(scene.size()) + 1));
   const core::SceneCheckResult broken =
-      core::checkVouchedScene(scene, first_obstacle, rules, only_names);
+      core::checkVouchedScene(core::Scene(scene), first_obstacle, rules, only_names);
   FUZZ_REQUIRE(broken.ok() || broken.error.rfind("ellipses[", 0) == 0 ||
                    broken.error.rfind("first_obstacle = ", 0) == 0 ||
                    broken.error.rfind("warning_distance = ", 0) == 0,
@@ -178,6 +178,12 @@ void checkScenes(FuzzInput& input) {
                      "' at " + text(best.distance));
   }
 
+  const core::NearestResult nearest_of_columns =
+      core::nearestTo(core::Scene(scene), rules, nearest_name);
+  FUZZ_REQUIRE(nearest_of_columns.found == nearest.found &&
+                   (!nearest.found || sameNear(nearest_of_columns.nearest, nearest.nearest)),
+               "nearestTo of a Scene differs from nearestTo of the same entries");
+
   std::vector<core::NamedEllipse> reversed(scene.rbegin(), scene.rend());
   FUZZ_REQUIRE(sameResult(result, core::checkScene(reversed, rules, only_names)),
                "checkScene depends on the order of the ellipses");
@@ -198,7 +204,7 @@ void checkScenes(FuzzInput& input) {
   std::vector<core::NamedEllipse> ordered = movers;
   ordered.insert(ordered.end(), indexed.obstacles().begin(), indexed.obstacles().end());
   const core::SceneCheckResult vouched =
-      core::checkVouchedScene(ordered, movers.size(), rules, only_names);
+      core::checkVouchedScene(core::Scene(ordered), movers.size(), rules, only_names);
   FUZZ_REQUIRE(sameResult(vouched, expected) && vouched.pair_tests == result.pair_tests,
                "checkVouchedScene differs from checkScene");
 }

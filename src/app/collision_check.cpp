@@ -106,9 +106,9 @@ CheckOutcome runCheck(const CheckRequest& request, const EllipseRegistry& regist
   const auto put = [&](const RegistryEntry& item, core::EllipseRole role,
                        const core::Ellipse& ellipse) {
     if (position < rewrite_end) {
-      outcome.placed[position++].ellipse = ellipse;
+      outcome.placed.ellipse(position++) = ellipse;
     } else {
-      outcome.placed.push_back({item.first, role, ellipse});
+      outcome.placed.push_back(item.first, role, ellipse);
       ++position;
     }
   };
@@ -133,7 +133,7 @@ CheckOutcome runCheck(const CheckRequest& request, const EllipseRegistry& regist
     const StoredEllipse& stored = item.second;
     const ScenePlacement::Placement placed = placement.place(stored.spec, role);
     if (placed.status != ScenePlacement::Status::Placed && position < rewrite_end) {
-      outcome.placed.resize(position);
+      outcome.placed.truncate(position);
       rewrite_end = position;
     }
     switch (placed.status) {
@@ -162,7 +162,7 @@ CheckOutcome runCheck(const CheckRequest& request, const EllipseRegistry& regist
     const ScenePlacement::Placement placed = placement.place(spec, item.role);
     if (placed.status != ScenePlacement::Status::Placed) return false;
     remember(item.index, spec, placed.ellipse.ellipse);
-    outcome.placed[at].ellipse = placed.ellipse.ellipse;
+    outcome.placed.ellipse(at) = placed.ellipse.ellipse;
     return true;
   };
   if (cache && rewrite_end > 0 &&
@@ -191,35 +191,37 @@ CheckOutcome runCheck(const CheckRequest& request, const EllipseRegistry& regist
   // the answer does not depend on the order), checked in place and the queries dropped again, so
   // no name is copied twice. Names were checked where they came in (the registry,
   // validateCheckRequest()), so the core does not hash them all again on every check.
-  std::vector<core::NamedEllipse>& scene = outcome.placed;
-  scene.insert(scene.begin(), std::make_move_iterator(queries.begin()),
-               std::make_move_iterator(queries.end()));
+  core::Scene& scene = outcome.placed;
+  scene.insertFront(queries);
   const auto answer = [&]() -> CheckOutcome& {
-    outcome.placed.erase(outcome.placed.begin(),
-                         outcome.placed.begin() + static_cast<std::ptrdiff_t>(queries.size()));
+    outcome.placed.eraseFront(queries.size());
     return outcome;
   };
   const std::set<std::string> only_names(request.names.begin(), request.names.end());
   // Obstacles that stood still since the last check need not stream past the links again: the
   // cache's grid of them answers the same bits (core::checkMoversAgainst()).
   const core::IndexedObstacles* standing = nullptr;
-  const auto first_obstacle =
-      std::find_if(scene.begin(), scene.end(), [](const core::NamedEllipse& e) {
-        return e.role == core::EllipseRole::Obstacle;
-      });
+  std::size_t first_obstacle = 0;
+  while (first_obstacle < scene.size() &&
+         scene.role(first_obstacle) != core::EllipseRole::Obstacle) {
+    ++first_obstacle;
+  }
   if (cache) {
-    standing = cache->standingObstacles().update(
-        reused_obstacles == obstacles, first_obstacle, scene.cend());
+    standing = cache->standingObstacles().update(reused_obstacles == obstacles, scene,
+                                                 first_obstacle);
   }
   // Every entry was validated where it was made (ScenePlacement refuses an invalid projection,
   // the registry and validateCheckRequest() duplicate names) and the movers come first: the
   // core need not test every entry again on every check.
+  const auto movers = [&] {
+    std::vector<core::NamedEllipse> entries;
+    entries.reserve(first_obstacle);
+    for (std::size_t i = 0; i < first_obstacle; ++i) entries.push_back(scene.entry(i));
+    return entries;
+  };
   core::SceneCheckResult result =
-      standing ? core::checkMoversAgainst({scene.begin(), first_obstacle}, *standing,
-                                          settings.rules, only_names)
-               : core::checkVouchedScene(
-                     scene, static_cast<std::size_t>(first_obstacle - scene.begin()),
-                     settings.rules, only_names);
+      standing ? core::checkMoversAgainst(movers(), *standing, settings.rules, only_names)
+               : core::checkVouchedScene(scene, first_obstacle, settings.rules, only_names);
   if (!result.ok()) {
     // Requests are validated before they get here, so this is a bug: say so.
     outcome.error = "internal error: " + result.error;
@@ -230,8 +232,8 @@ CheckOutcome runCheck(const CheckRequest& request, const EllipseRegistry& regist
 
   const std::string& of = request.min_distance_of;
   if (of.empty()) return std::move(answer());
-  const bool placed = std::any_of(scene.begin(), scene.end(),
-                                  [&](const core::NamedEllipse& e) { return e.name == of; });
+  bool placed = false;
+  for (std::size_t i = 0; i < scene.size() && !placed; ++i) placed = scene.name(i) == of;
   if (!placed) {
     outcome.nearest_problem =
         "min_distance_of = '" + of + "': not measured, the ellipse could not be placed";

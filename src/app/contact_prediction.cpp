@@ -48,8 +48,8 @@ void predictContacts(CheckOutcome& outcome, const CheckRequest& request,
   std::map<std::string, FrameTransform> frames;
   std::vector<core::Motion> motions;
   motions.reserve(outcome.placed.size());
-  std::vector<core::NamedEllipse> now = outcome.placed;  // moved on to reference_s below
-  for (const core::NamedEllipse& placed : outcome.placed) {
+  std::vector<core::NamedEllipse> now = outcome.placed.entries();  // moved on to reference_s
+  for (const core::NamedEllipse& placed : now) {
     const EllipseSpec& spec = registry.entries().at(placed.name).spec;
     auto found = frames.find(spec.frame_id);
     if (found == frames.end()) found = frames.emplace(spec.frame_id, latest(spec.frame_id)).first;

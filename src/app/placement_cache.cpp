@@ -46,30 +46,30 @@ void PlacementCache::begin(const EllipseRegistry& registry, double global_paddin
   }
 }
 
-void PlacementCache::produced(const std::vector<core::NamedEllipse>& placed) {
+void PlacementCache::produced(const core::Scene& placed) {
   if (placed.size() != order_.size() || placed.empty()) return;
-  const auto same = [&placed](const Produced& p) { return p.data == placed.data(); };
+  const auto same = [&placed](const Produced& p) { return p.storage == placed.storage(); };
   produced_.erase(std::remove_if(produced_.begin(), produced_.end(), same), produced_.end());
   // A few at most: the node's current and previous state. More means buffers were dropped.
   if (produced_.size() >= 4) produced_.erase(produced_.begin());
-  produced_.push_back({placed.data(), check_});
+  produced_.push_back({placed.storage(), check_});
 }
 
-void PlacementCache::recycle(std::vector<core::NamedEllipse> placed) {
+void PlacementCache::recycle(core::Scene placed) {
   if (placed.size() != order_.size() || placed.empty()) return;
   for (const Produced& p : produced_) {
-    if (p.data != placed.data()) continue;
+    if (p.storage != placed.storage()) continue;
     recycled_ = std::move(placed);
     recycled_check_ = p.check;
     return;
   }
 }
 
-std::vector<core::NamedEllipse> PlacementCache::takeRecycled() {
-  std::vector<core::NamedEllipse> taken = std::move(recycled_);
-  recycled_.clear();
+core::Scene PlacementCache::takeRecycled() {
+  core::Scene taken = std::move(recycled_);
+  recycled_ = core::Scene();
   // Handed out to be refilled: it is no longer a complete placement until produced() again.
-  const auto same = [&taken](const Produced& p) { return p.data == taken.data(); };
+  const auto same = [&taken](const Produced& p) { return p.storage == taken.storage(); };
   produced_.erase(std::remove_if(produced_.begin(), produced_.end(), same), produced_.end());
   if (taken.size() != order_.size()) taken.clear();
   refilled_checks_ += taken.empty() ? 0 : 1;
@@ -102,7 +102,7 @@ bool PlacementCache::byFrameReady() {
   return true;
 }
 
-bool PlacementCache::refillByFrame(std::vector<core::NamedEllipse>& placed,
+bool PlacementCache::refillByFrame(core::Scene& placed,
                                    ScenePlacement& placement,
                                    const std::function<bool(std::size_t position)>& project,
                                    std::size_t* reused_obstacles) {
@@ -118,7 +118,7 @@ bool PlacementCache::refillByFrame(std::vector<core::NamedEllipse>& placed,
       // Stored after the recycled vector was made: its projections there are stale.
       if (frame.stored_in_check <= recycled_check_) continue;
       for (const std::uint32_t position : frame.positions) {
-        placed[position].ellipse = entries_[order_[position].index].ellipse;
+        placed.ellipse(position) = entries_[order_[position].index].ellipse;
       }
       continue;
     }

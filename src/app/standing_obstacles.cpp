@@ -1,10 +1,12 @@
 #include "ellipse_collision/app/standing_obstacles.h"
 
+#include <utility>
+#include <vector>
+
 namespace ellipse_collision::app {
 
-const core::IndexedObstacles* StandingObstacles::update(
-    bool unchanged, std::vector<core::NamedEllipse>::const_iterator begin,
-    std::vector<core::NamedEllipse>::const_iterator end) {
+const core::IndexedObstacles* StandingObstacles::update(bool unchanged, const core::Scene& scene,
+                                                       std::size_t first_obstacle) {
   if (!unchanged) {
     standing_checks_ = 0;
     index_.reset();
@@ -12,7 +14,10 @@ const core::IndexedObstacles* StandingObstacles::update(
   }
   ++standing_checks_;
   if (!index_ && standing_checks_ >= kChecksBeforeIndexing) {
-    index_.emplace(std::vector<core::NamedEllipse>(begin, end));
+    std::vector<core::NamedEllipse> obstacles;
+    obstacles.reserve(scene.size() - first_obstacle);
+    for (std::size_t k = first_obstacle; k < scene.size(); ++k) obstacles.push_back(scene.entry(k));
+    index_.emplace(std::move(obstacles));
     // The registry validated them, so a refusal would be a bug: stream, and try again later.
     if (!index_->error().empty()) {
       index_.reset();

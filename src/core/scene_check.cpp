@@ -6,7 +6,6 @@
 #include <limits>
 #include <optional>
 #include <string_view>
-#include <tuple>
 
 #include "ellipse_collision/core/broadphase.h"
 #include "ellipse_collision/core/distance.h"
@@ -47,25 +46,38 @@ std::string warningDistanceProblem(const SceneRules& rules) {
   return {};
 }
 
-/// What is wrong with entry `i`, or "". `names` collects the names for the duplicate rule.
-std::string entryProblem(std::size_t i, const NamedEllipse& entry, detail::NameSet& names) {
-  // Built only for an error: per entry it would cost more than the whole check.
-  const auto where = [i] { return "ellipses[" + std::to_string(i) + "]"; };
-  if (entry.name.empty()) return where() + ".name is empty";
-  if (!names.insert(entry.name)) return where() + ".name = '" + entry.name + "' is a duplicate";
-  // The cheap test first: invalidReason() returns a string, called on every entry of every check.
-  if (isValid(entry.ellipse)) return {};
-  return detail::invalidEntryReason("ellipses", i, entry);
+/// One entry of a scene wherever it is stored (a NamedEllipse, or a Scene's columns): what the
+/// pair rules, the pair tests and the answer read of it.
+struct EntryRef {
+  const std::string* name;
+  EllipseRole role;
+  const Ellipse* ellipse;
+};
+
+EntryRef refOf(const NamedEllipse& entry) { return {&entry.name, entry.role, &entry.ellipse}; }
+EntryRef refOf(const Scene& scene, std::size_t i) {
+  return {&scene.name(i), scene.role(i), &scene.ellipse(i)};
 }
 
-std::string validate(const std::vector<NamedEllipse>& ellipses, const SceneRules& rules) {
+/// What is wrong with entry `i`, or "". `names` collects the names for the duplicate rule.
+std::string entryProblem(std::size_t i, const EntryRef& entry, detail::NameSet& names) {
+  // Built only for an error: per entry it would cost more than the whole check.
+  const auto where = [i] { return "ellipses[" + std::to_string(i) + "]"; };
+  if (entry.name->empty()) return where() + ".name is empty";
+  if (!names.insert(*entry.name)) return where() + ".name = '" + *entry.name + "' is a duplicate";
+  // The cheap test first: invalidReason() returns a string, called on every entry of every check.
+  if (isValid(*entry.ellipse)) return {};
+  return detail::invalidEntryReason("ellipses", i, {*entry.name, entry.role, *entry.ellipse});
+}
+
+std::string validate(const std::vector<EntryRef>& entries, const SceneRules& rules) {
   std::string problem = warningDistanceProblem(rules);
   if (!problem.empty()) return problem;
   // One pass, entry by entry as a reader checks them (a second pass over 100,000 entries costs
   // as much as the pair tests); the set of names is the one findNameProblem() uses.
-  detail::NameSet names(ellipses.size());
-  for (std::size_t i = 0; i < ellipses.size(); ++i) {
-    problem = entryProblem(i, ellipses[i], names);
+  detail::NameSet names(entries.size());
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    problem = entryProblem(i, entries[i], names);
     if (!problem.empty()) return problem;
   }
   return {};
@@ -98,18 +110,17 @@ std::uint64_t namePrefix(const std::string& name) {
 }
 
 /// Lower role first, then lower name: a pair reads the same whichever way round the loop met it.
-bool comesFirst(const NamedEllipse& a, const NamedEllipse& b) {
-  return std::tie(a.role, a.name) < std::tie(b.role, b.name);
+bool comesFirst(const EntryRef& a, const EntryRef& b) {
+  return a.role != b.role ? a.role < b.role : *a.name < *b.name;
 }
 
-NearPair nearPair(const NamedEllipse& a, const NamedEllipse& b, const Clearance& clearance) {
-  return {a.name, b.name, clearance.distance, clearance.point_a, clearance.point_b};
+NearPair nearPair(const std::string& a, const std::string& b, const Clearance& clearance) {
+  return {a, b, clearance.distance, clearance.point_a, clearance.point_b};
 }
 
-}  // namespace
-
-bool pairWanted(const NamedEllipse& a, const NamedEllipse& b, const SceneRules& rules,
-                const std::set<std::string>& only_names) {
+/// pairWanted() on entries wherever they are stored.
+bool wanted(const EntryRef& a, const EntryRef& b, const SceneRules& rules,
+            const std::set<std::string>& only_names) {
   const bool a_query = a.role == EllipseRole::Query;
   const bool b_query = b.role == EllipseRole::Query;
   if (a_query && b_query) return false;
@@ -119,8 +130,15 @@ bool pairWanted(const NamedEllipse& a, const NamedEllipse& b, const SceneRules& 
       return false;
     }
   }
-  if (rules.allowed.contains(a.name, b.name)) return false;
-  return only_names.empty() || only_names.count(a.name) != 0 || only_names.count(b.name) != 0;
+  if (rules.allowed.contains(*a.name, *b.name)) return false;
+  return only_names.empty() || only_names.count(*a.name) != 0 || only_names.count(*b.name) != 0;
+}
+
+}  // namespace
+
+bool pairWanted(const NamedEllipse& a, const NamedEllipse& b, const SceneRules& rules,
+                const std::set<std::string>& only_names) {
+  return wanted(refOf(a), refOf(b), rules, only_names);
 }
 
 namespace {
@@ -128,7 +146,7 @@ namespace {
 /// The queries and links of one check ("movers": every pair has one), each prepared once with the
 /// box its partners must meet (candidateBox()).
 struct Movers {
-  std::vector<const NamedEllipse*> entries;
+  std::vector<EntryRef> entries;
   std::vector<PreparedEllipse> prepared;
   std::vector<BoundingBox> boxes;
 
@@ -137,9 +155,9 @@ struct Movers {
     prepared.reserve(count);
     boxes.reserve(count);
   }
-  void add(const NamedEllipse& entry, double warning_distance) {
-    entries.push_back(&entry);
-    prepared.emplace_back(entry.ellipse);
+  void add(const EntryRef& entry, double warning_distance) {
+    entries.push_back(entry);
+    prepared.emplace_back(*entry.ellipse);
     boxes.push_back(candidateBox(prepared.back(), warning_distance));
   }
 };
@@ -164,7 +182,7 @@ class PairCollector {
     };
     std::vector<Key> keys(movers_.size());
     for (std::size_t i = 0; i < keys.size(); ++i) {
-      keys[i] = {{static_cast<std::uint64_t>(movers_[i]->role), namePrefix(movers_[i]->name)},
+      keys[i] = {{static_cast<std::uint64_t>(movers_[i].role), namePrefix(*movers_[i].name)},
                  static_cast<std::uint32_t>(i)};
     }
     std::sort(keys.begin(), keys.end(), [this](const Key& a, const Key& b) {
@@ -174,7 +192,7 @@ class PairCollector {
       if (a.role_and_prefix[1] != b.role_and_prefix[1]) {
         return a.role_and_prefix[1] < b.role_and_prefix[1];
       }
-      return movers_[a.index]->name < movers_[b.index]->name;
+      return *movers_[a.index].name < *movers_[b.index].name;
     });
     std::vector<std::uint32_t> order(keys.size());
     for (std::size_t k = 0; k < keys.size(); ++k) order[k] = keys[k].index;
@@ -184,7 +202,7 @@ class PairCollector {
   }
 
   /// Mover `i` (always first in its pair with an obstacle) against `obstacle`.
-  void checkWithObstacle(std::size_t i, const NamedEllipse& obstacle,
+  void checkWithObstacle(std::size_t i, const EntryRef& obstacle,
                          const PreparedEllipse& prepared_obstacle) {
     check(i, kObstacle, obstacle, prepared_obstacle);
   }
@@ -196,8 +214,8 @@ class PairCollector {
     for (const IndexPair& pair : grid.overlappingPairs()) {
       std::size_t i = pair.first, j = pair.second;
       if (rank_[j] < rank_[i]) std::swap(i, j);
-      if (!pairWanted(*movers_[i], *movers_[j], rules, only_names)) continue;
-      check(i, j, *movers_[j], prepared_movers_[j]);
+      if (!wanted(movers_[i], movers_[j], rules, only_names)) continue;
+      check(i, j, movers_[j], prepared_movers_[j]);
     }
   }
 
@@ -207,7 +225,7 @@ class PairCollector {
     const auto canonical = [](const Pair& x, const Pair& y) {
       if (x.first_rank != y.first_rank) return x.first_rank < y.first_rank;
       if (x.second_rank != y.second_rank) return x.second_rank < y.second_rank;
-      return x.second_rank == kObstacle && x.second->name < y.second->name;
+      return x.second_rank == kObstacle && *x.second < *y.second;
     };
     std::sort(collisions_.begin(), collisions_.end(), canonical);
     std::sort(warnings_.begin(), warnings_.end(), canonical);
@@ -215,7 +233,7 @@ class PairCollector {
     result.pair_tests = pair_tests_;
     result.collisions.reserve(collisions_.size());
     for (const Collision& pair : collisions_) {
-      result.collisions.push_back({pair.first->name, pair.second->name, pair.contact_scale});
+      result.collisions.push_back({*pair.first, *pair.second, pair.contact_scale});
     }
     result.warnings.reserve(warnings_.size());
     for (const Warning& pair : warnings_) {
@@ -232,8 +250,8 @@ class PairCollector {
   /// A pair found, ranked for sorting. Collisions and warnings are kept apart so that sorting
   /// the collisions moves 32 bytes per pair, not the 80 of one that also holds a clearance.
   struct Pair {
-    const NamedEllipse* first;
-    const NamedEllipse* second;
+    const std::string* first;   // names
+    const std::string* second;
     std::uint32_t first_rank;
     std::uint32_t second_rank;  // kObstacle for an obstacle
   };
@@ -245,29 +263,29 @@ class PairCollector {
   };
 
   /// Mover `i` first, then `second`: mover `j`, or an obstacle (j == kObstacle).
-  void check(std::size_t i, std::size_t j, const NamedEllipse& second,
+  void check(std::size_t i, std::size_t j, const EntryRef& second,
              const PreparedEllipse& prepared_second) {
     ++pair_tests_;
-    const NamedEllipse& first = *movers_[i];
+    const EntryRef& first = movers_[i];
     const PreparedEllipse& prepared_first = prepared_movers_[i];
     const std::uint32_t second_rank = j == kObstacle ? kObstacle : rank_[j];
     if (overlap(prepared_first, prepared_second)) {
-      collisions_.push_back({{&first, &second, rank_[i], second_rank},
+      collisions_.push_back({{first.name, second.name, rank_[i], second_rank},
                              contactScale(prepared_first, prepared_second)});
       return;
     }
     if (warning_distance_ <= 0.0 ||
-        distanceLowerBound(first.ellipse, second.ellipse) >= warning_distance_) {
+        distanceLowerBound(*first.ellipse, *second.ellipse) >= warning_distance_) {
       return;
     }
-    const Clearance clearance = distance(first.ellipse, second.ellipse);
+    const Clearance clearance = distance(*first.ellipse, *second.ellipse);
     if (clearance.separated && clearance.distance < warning_distance_) {
-      warnings_.push_back({{&first, &second, rank_[i], second_rank}, clearance});
+      warnings_.push_back({{first.name, second.name, rank_[i], second_rank}, clearance});
     }
   }
 
   double warning_distance_;
-  const std::vector<const NamedEllipse*>& movers_;
+  const std::vector<EntryRef>& movers_;
   const std::vector<PreparedEllipse>& prepared_movers_;
   std::vector<std::uint32_t> rank_;  ///< each mover's place in (role, name) order
   std::size_t pair_tests_{0};
@@ -280,17 +298,19 @@ class PairCollector {
 /// and no division, so it is safe to make for any values; the obstacle is prepared only if a pair
 /// needs it. Returns false, testing no pair, for an invalid obstacle that meets a mover's box (a
 /// vouched-for scene that broke its promise). `found` is scratch space.
-inline bool checkObstacle(const NamedEllipse& obstacle, const BoxGrid& grid, const Movers& movers,
-                          const SceneRules& rules, const std::set<std::string>& only_names,
-                          PairCollector& pairs, std::vector<std::size_t>& found) {
-  grid.overlapping(boundingCircleBox(obstacle.ellipse), &found);
+inline bool checkObstacle(const std::string& name, const Ellipse& ellipse, const BoxGrid& grid,
+                          const Movers& movers, const SceneRules& rules,
+                          const std::set<std::string>& only_names, PairCollector& pairs,
+                          std::vector<std::size_t>& found) {
+  grid.overlapping(boundingCircleBox(ellipse), &found);
   // Most obstacles meet no mover: leave before the optional, whose storage GCC zeroes.
   if (found.empty()) return true;
-  if (!isValid(obstacle.ellipse)) return false;
+  if (!isValid(ellipse)) return false;
+  const EntryRef obstacle{&name, EllipseRole::Obstacle, &ellipse};
   std::optional<PreparedEllipse> prepared_obstacle;
   for (const std::size_t i : found) {
-    if (!pairWanted(*movers.entries[i], obstacle, rules, only_names)) continue;
-    if (!prepared_obstacle) prepared_obstacle.emplace(obstacle.ellipse);
+    if (!wanted(movers.entries[i], obstacle, rules, only_names)) continue;
+    if (!prepared_obstacle) prepared_obstacle.emplace(ellipse);
     pairs.checkWithObstacle(i, obstacle, *prepared_obstacle);
   }
   return true;
@@ -321,10 +341,10 @@ SceneCheckResult checkSceneWith(const std::vector<NamedEllipse>& ellipses,
       stream_from = i;  // validated as it streams
       break;
     }
-    result.error = entryProblem(i, entry, names);
+    result.error = entryProblem(i, refOf(entry), names);
     if (!result.error.empty()) return result;
     if (entry.role == EllipseRole::Obstacle) continue;
-    movers.add(entry, warning_distance);
+    movers.add(refOf(entry), warning_distance);
   }
   PairCollector pairs(warning_distance, movers);
   const BoxGrid grid(std::move(movers.boxes));
@@ -336,12 +356,12 @@ SceneCheckResult checkSceneWith(const std::vector<NamedEllipse>& ellipses,
       if (obstacle.role != EllipseRole::Obstacle) {
         return checkSceneWith(ellipses, rules, only_names, /*movers_first=*/false);
       }
-      result.error = entryProblem(k, obstacle, names);
+      result.error = entryProblem(k, refOf(obstacle), names);
       if (!result.error.empty()) return SceneCheckResult{{}, {}, result.error, 0};
     }
     if (obstacle.role != EllipseRole::Obstacle) continue;
     // Validated above: checkObstacle() has nothing to refuse.
-    checkObstacle(obstacle, grid, movers, rules, only_names, pairs, found);
+    checkObstacle(obstacle.name, obstacle.ellipse, grid, movers, rules, only_names, pairs, found);
   }
   pairs.checkMoverPairs(grid, rules, only_names);
   return pairs.finish();
@@ -371,7 +391,7 @@ SceneCheckResult checkMoversAgainst(const std::vector<NamedEllipse>& movers,
       result.error = detail::invalidEntryReason("movers", i, entry);
       return result;
     }
-    mover_list.add(entry, warning_distance);
+    mover_list.add(refOf(entry), warning_distance);
   }
 
   // The pairs checkScene() finds by streaming each obstacle's box through the movers' grid,
@@ -383,9 +403,9 @@ SceneCheckResult checkMoversAgainst(const std::vector<NamedEllipse>& movers,
   for (std::size_t i = 0; i < mover_list.entries.size(); ++i) {
     obstacles.grid().overlapping(mover_list.boxes[i], &found);
     for (const std::size_t k : found) {
-      const NamedEllipse& obstacle = indexed[k];
-      if (!pairWanted(*mover_list.entries[i], obstacle, rules, only_names)) continue;
-      pairs.checkWithObstacle(i, obstacle, PreparedEllipse(obstacle.ellipse));
+      const EntryRef obstacle = refOf(indexed[k]);
+      if (!wanted(mover_list.entries[i], obstacle, rules, only_names)) continue;
+      pairs.checkWithObstacle(i, obstacle, PreparedEllipse(*obstacle.ellipse));
     }
   }
   pairs.checkMoverPairs(BoxGrid(std::move(mover_list.boxes)), rules, only_names);
@@ -397,42 +417,43 @@ SceneCheckResult checkScene(const std::vector<NamedEllipse>& ellipses, const Sce
   return checkSceneWith(ellipses, rules, only_names, /*movers_first=*/true);
 }
 
-SceneCheckResult checkVouchedScene(const std::vector<NamedEllipse>& ellipses,
-                                   std::size_t first_obstacle, const SceneRules& rules,
+SceneCheckResult checkVouchedScene(const Scene& scene, std::size_t first_obstacle,
+                                   const SceneRules& rules,
                                    const std::set<std::string>& only_names) {
   SceneCheckResult result;
   result.error = warningDistanceProblem(rules);
-  if (result.error.empty() && first_obstacle > ellipses.size()) {
+  if (result.error.empty() && first_obstacle > scene.size()) {
     result.error = "first_obstacle = " + std::to_string(first_obstacle) + " is beyond the " +
-                   std::to_string(ellipses.size()) + " ellipses";
+                   std::to_string(scene.size()) + " ellipses";
   }
   if (!result.error.empty()) return result;
   const double warning_distance = rules.warning_distance;
 
   // The movers are few: each is checked (an obstacle among them would be paired with the other
-  // obstacles). The obstacles are streamed as the bare broadphase streams them; only one whose
-  // box meets a mover's is tested, before any pair work divides by its radii.
+  // obstacles). The obstacles are streamed as the bare broadphase streams them, from the packed
+  // column of ellipses; only one whose box meets a mover's is tested, before any pair work
+  // divides by its radii.
   Movers movers;
   movers.reserve(first_obstacle);
   for (std::size_t i = 0; i < first_obstacle; ++i) {
-    const NamedEllipse& entry = ellipses[i];
-    if (entry.role == EllipseRole::Obstacle) {
-      result.error = detail::entryLabel("ellipses", i, entry) + " is an obstacle before " +
+    if (scene.role(i) == EllipseRole::Obstacle) {
+      result.error = detail::entryLabel("ellipses", i, scene.entry(i)) + " is an obstacle before " +
                      "first_obstacle = " + std::to_string(first_obstacle);
       return result;
     }
-    if (!isValid(entry.ellipse)) {
-      result.error = detail::invalidEntryReason("ellipses", i, entry);
+    if (!isValid(scene.ellipse(i))) {
+      result.error = detail::invalidEntryReason("ellipses", i, scene.entry(i));
       return result;
     }
-    movers.add(entry, warning_distance);
+    movers.add(refOf(scene, i), warning_distance);
   }
   PairCollector pairs(warning_distance, movers);
   const BoxGrid grid(std::move(movers.boxes));
   std::vector<std::size_t> found;
-  for (std::size_t k = first_obstacle; k < ellipses.size(); ++k) {
-    if (!checkObstacle(ellipses[k], grid, movers, rules, only_names, pairs, found)) {
-      result.error = detail::invalidEntryReason("ellipses", k, ellipses[k]);
+  for (std::size_t k = first_obstacle; k < scene.size(); ++k) {
+    if (!checkObstacle(scene.name(k), scene.ellipse(k), grid, movers, rules, only_names, pairs,
+                       found)) {
+      result.error = detail::invalidEntryReason("ellipses", k, scene.entry(k));
       return result;
     }
   }
@@ -440,38 +461,42 @@ SceneCheckResult checkVouchedScene(const std::vector<NamedEllipse>& ellipses,
   return pairs.finish();
 }
 
-NearestResult nearestTo(const std::vector<NamedEllipse>& ellipses, const SceneRules& rules,
-                        const std::string& name) {
+namespace {
+
+/// nearestTo() on entries wherever they are stored.
+NearestResult nearestAmong(const std::vector<EntryRef>& entries, const SceneRules& rules,
+                           const std::string& name) {
   NearestResult result;
-  result.error = validate(ellipses, rules);
+  result.error = validate(entries, rules);
   if (!result.error.empty()) return result;
-  const auto target = std::find_if(ellipses.begin(), ellipses.end(),
-                                   [&name](const NamedEllipse& e) { return e.name == name; });
-  if (target == ellipses.end()) {
+  const auto found = std::find_if(entries.begin(), entries.end(),
+                                  [&name](const EntryRef& e) { return *e.name == name; });
+  if (found == entries.end()) {
     result.error = "name = '" + name + "' is not in the scene";
     return result;
   }
+  const EntryRef* target = &*found;
 
   // Partners by increasing lower bound: once the bound reaches the best distance found, no later
   // partner can be nearer. Ties in the bound keep CollidingPair order, which settles equal answers.
   struct Partner {
-    const NamedEllipse* first;  // canonical order of the pair
-    const NamedEllipse* second;
+    const EntryRef* first;  // canonical order of the pair
+    const EntryRef* second;
     double bound;
   };
   std::vector<Partner> partners;
-  for (const NamedEllipse& other : ellipses) {
-    if (&other == &*target) continue;
+  for (const EntryRef& other : entries) {
+    if (&other == target) continue;
     const bool target_first = comesFirst(*target, other);
-    const NamedEllipse& first = target_first ? *target : other;
-    const NamedEllipse& second = target_first ? other : *target;
-    if (!pairWanted(first, second, rules, {})) continue;
-    partners.push_back({&first, &second, distanceLowerBound(first.ellipse, second.ellipse)});
+    const EntryRef& first = target_first ? *target : other;
+    const EntryRef& second = target_first ? other : *target;
+    if (!wanted(first, second, rules, {})) continue;
+    partners.push_back({&first, &second, distanceLowerBound(*first.ellipse, *second.ellipse)});
   }
-  const auto before = [&target](const Partner& x, const Partner& y) {
-    const NamedEllipse& x_other = x.first == &*target ? *x.second : *x.first;
-    const NamedEllipse& y_other = y.first == &*target ? *y.second : *y.first;
-    return std::tie(x_other.role, x_other.name) < std::tie(y_other.role, y_other.name);
+  const auto before = [target](const Partner& x, const Partner& y) {
+    const EntryRef& x_other = x.first == target ? *x.second : *x.first;
+    const EntryRef& y_other = y.first == target ? *y.second : *y.first;
+    return comesFirst(x_other, y_other);
   };
   std::sort(partners.begin(), partners.end(), [&before](const Partner& x, const Partner& y) {
     return x.bound != y.bound ? x.bound < y.bound : before(x, y);
@@ -484,10 +509,10 @@ NearestResult nearestTo(const std::vector<NamedEllipse>& ellipses, const SceneRu
     if (best && best_clearance.separated && partner.bound >= best_clearance.distance) break;
     // An overlapping pair has a bound below 0, so the loop reaches every colliding partner.
     if (best && !best_clearance.separated && partner.bound > 0.0) break;
-    const Clearance clearance = distance(partner.first->ellipse, partner.second->ellipse);
+    const Clearance clearance = distance(*partner.first->ellipse, *partner.second->ellipse);
     bool better = false;
     if (!clearance.separated) {
-      const double scale = contactScale(partner.first->ellipse, partner.second->ellipse);
+      const double scale = contactScale(*partner.first->ellipse, *partner.second->ellipse);
       better = !best || best_clearance.separated || scale < best_scale ||
                (scale == best_scale && before(partner, *best));
       if (better) best_scale = scale;
@@ -503,12 +528,29 @@ NearestResult nearestTo(const std::vector<NamedEllipse>& ellipses, const SceneRu
   if (!best) return result;
 
   result.found = true;
-  result.nearest = nearPair(*best->first, *best->second, best_clearance);
-  if (best->first != &*target) {
+  result.nearest = nearPair(*best->first->name, *best->second->name, best_clearance);
+  if (best->first != target) {
     std::swap(result.nearest.name_a, result.nearest.name_b);
     std::swap(result.nearest.point_a, result.nearest.point_b);
   }
   return result;
+}
+
+}  // namespace
+
+NearestResult nearestTo(const std::vector<NamedEllipse>& ellipses, const SceneRules& rules,
+                        const std::string& name) {
+  std::vector<EntryRef> entries;
+  entries.reserve(ellipses.size());
+  for (const NamedEllipse& entry : ellipses) entries.push_back(refOf(entry));
+  return nearestAmong(entries, rules, name);
+}
+
+NearestResult nearestTo(const Scene& scene, const SceneRules& rules, const std::string& name) {
+  std::vector<EntryRef> entries;
+  entries.reserve(scene.size());
+  for (std::size_t i = 0; i < scene.size(); ++i) entries.push_back(refOf(scene, i));
+  return nearestAmong(entries, rules, name);
 }
 
 }  // namespace ellipse_collision::core

@@ -143,7 +143,7 @@ std::vector<Marker> CollisionMarkers::fills(std::size_t layer,
 }
 
 visualization_msgs::MarkerArray CollisionMarkers::update(
-    const std::vector<core::NamedEllipse>& placed,
+    const core::Scene& placed,
     const std::vector<core::CollidingPair>& collisions, const std::vector<core::NearPair>& warnings,
     const std::string& fixed_frame, const ros::Time& stamp,
     const std::set<std::string>& predicted) {
@@ -166,8 +166,8 @@ visualization_msgs::MarkerArray CollisionMarkers::update(
   };
 
   std::array<std::size_t, kLayers> counts{};
-  for (const core::NamedEllipse& named : placed) {
-    if (named.role != core::EllipseRole::Query) ++counts[layerOf(named.role)];
+  for (std::size_t i = 0; i < placed.size(); ++i) {
+    if (placed.role(i) != core::EllipseRole::Query) ++counts[layerOf(placed.role(i))];
   }
   std::array<bool, kLayers> rebuild{};
   std::array<std::vector<char>, kLayers> dirty;  // by state index * B + bucket
@@ -203,30 +203,33 @@ visualization_msgs::MarkerArray CollisionMarkers::update(
 
   std::array<std::vector<Entry*>, kLayers> positions;
   for (std::size_t layer = 0; layer < kLayers; ++layer) positions[layer].reserve(counts[layer]);
-  for (const core::NamedEllipse& named : placed) {
-    if (named.role == core::EllipseRole::Query) continue;
-    const std::size_t layer = layerOf(named.role);
+  for (std::size_t i = 0; i < placed.size(); ++i) {
+    const core::EllipseRole role = placed.role(i);
+    if (role == core::EllipseRole::Query) continue;
+    const std::string& name = placed.name(i);
+    const core::Ellipse& ellipse = placed.ellipse(i);
+    const std::size_t layer = layerOf(role);
     Layer& l = layers_[layer];
     const std::size_t position = positions[layer].size();
     // Scenes mostly list the same names in the same order: try last cycle's entry at this place
     // before the hash lookup.
-    Entry* entry = position < l.by_position.size() && l.by_position[position]->name == named.name
+    Entry* entry = position < l.by_position.size() && l.by_position[position]->name == name
                        ? l.by_position[position]
                        : nullptr;
     if (!entry) {
-      const auto found = l.entries.find(named.name);
+      const auto found = l.entries.find(name);
       if (found != l.entries.end()) entry = &found->second;
     }
-    const MarkerState state = stateOf(named.name);
+    const MarkerState state = stateOf(name);
     if (!entry) {
-      entry = &l.entries[named.name];
-      entry->name = named.name;
-      entry->hash = fnv1a(named.name) & kIdMask;
-      entry->ellipse = named.ellipse;
+      entry = &l.entries[name];
+      entry->name = name;
+      entry->hash = fnv1a(name) & kIdMask;
+      entry->ellipse = ellipse;
       entry->state = state;
       markDirty(layer, state, entry->hash);
       join(layer, entry);
-    } else if (entry->state != state || !sameEllipse(entry->ellipse, named.ellipse)) {
+    } else if (entry->state != state || !sameEllipse(entry->ellipse, ellipse)) {
       markDirty(layer, entry->state, entry->hash);
       markDirty(layer, state, entry->hash);
       if (entry->state != state) {
@@ -234,7 +237,7 @@ visualization_msgs::MarkerArray CollisionMarkers::update(
         entry->state = state;
         join(layer, entry);
       }
-      entry->ellipse = named.ellipse;
+      entry->ellipse = ellipse;
     }
     if (entry->generation != generation_) ++seen[layer];
     entry->generation = generation_;

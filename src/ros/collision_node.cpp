@@ -191,7 +191,7 @@ const app::CheckOutcome& CollisionNode::runFullCheck(const ros::Duration& timeou
   state_.stamp = now;
   // The replaced state's placement goes back to the cache: the next check refills it instead of
   // copying every name again.
-  std::vector<core::NamedEllipse> replaced = std::move(state_.outcome.placed);
+  core::Scene replaced = std::move(state_.outcome.placed);
   state_.outcome = std::move(outcome);
   placement_cache_.recycle(std::move(replaced));
   const app::CheckOutcome& checked = state_.outcome;

@@ -279,8 +279,8 @@ void expectSameOutcome(const CheckOutcome& cached, const CheckOutcome& fresh, in
   ASSERT_EQ(cached.error, fresh.error) << "cycle " << cycle;
   ASSERT_EQ(cached.placed.size(), fresh.placed.size()) << "cycle " << cycle;
   for (std::size_t i = 0; i < fresh.placed.size(); ++i) {
-    const core::NamedEllipse& a = cached.placed[i];
-    const core::NamedEllipse& b = fresh.placed[i];
+    const core::NamedEllipse a = cached.placed.entry(i);
+    const core::NamedEllipse b = fresh.placed.entry(i);
     EXPECT_EQ(a.name, b.name) << "cycle " << cycle;
     EXPECT_TRUE(sameBits(a.ellipse.center.x(), b.ellipse.center.x()) &&
                 sameBits(a.ellipse.center.y(), b.ellipse.center.y()) &&

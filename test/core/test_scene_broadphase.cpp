@@ -46,8 +46,9 @@ SceneCheckResult checkVouched(const std::vector<NamedEllipse>& scene, const Scen
       std::stable_partition(ordered.begin(), ordered.end(), [](const NamedEllipse& entry) {
         return entry.role != EllipseRole::Obstacle;
       });
-  return checkVouchedScene(ordered, static_cast<std::size_t>(first_obstacle - ordered.begin()),
-                           rules, only_names);
+  return checkVouchedScene(Scene(ordered),
+                           static_cast<std::size_t>(first_obstacle - ordered.begin()), rules,
+                           only_names);
 }
 
 bool sameBits(double x, double y) { return std::memcmp(&x, &y, sizeof(double)) == 0; }

@@ -32,6 +32,13 @@ core::NamedEllipse named(const std::string& name, core::EllipseRole role, double
   e.ellipse = makeEllipse(x, y, 0.5, 0.2);
   return e;
 }
+/// CollisionMarkers::update() of the entries, stored by column as the node stores them.
+MarkerArray update(CollisionMarkers& markers, const std::vector<core::NamedEllipse>& placed,
+                   const std::vector<core::CollidingPair>& collisions,
+                   const std::vector<core::NearPair>& warnings, const std::string& fixed_frame,
+                   const ros::Time& stamp, const std::set<std::string>& predicted = {}) {
+  return markers.update(core::Scene(placed), collisions, warnings, fixed_frame, stamp, predicted);
+}
 constexpr core::EllipseRole kLink = core::EllipseRole::Link;
 constexpr core::EllipseRole kObstacle = core::EllipseRole::Obstacle;
 
@@ -72,7 +79,7 @@ TEST(CollisionMarkers, EachEllipseIsDrawnAsFilledTrianglesOnItsRimInTheFixedFram
   CollisionMarkers markers;
   core::NamedEllipse arm = named("arm", kLink, 1.0, 2.0);
   arm.ellipse.angle = M_PI / 3;
-  const MarkerArray array = markers.update({arm}, {}, {}, "odom", kStamp);
+  const MarkerArray array = update(markers, {arm}, {}, {}, "odom", kStamp);
   ASSERT_EQ(array.markers.size(), 1u);
   const Marker& m = array.markers[0];
   EXPECT_EQ(m.header.frame_id, "odom");
@@ -99,7 +106,7 @@ TEST(CollisionMarkers, RedInCollisionYellowInAWarningPairGreenOtherwise) {
       named("arm", kLink, 0, 0), named("hand", kLink, 0, 1), named("box", kObstacle, 0, 2),
       named("cup", kObstacle, 0, 3), named("far", kObstacle, 0, 4)};
   MarkerView view;
-  view.apply(markers.update(
+  view.apply(update(markers, 
       placed, {{"arm", "box", 0.5}},
       {nearPair("arm", "cup", {0, 0}, {1, 0}), nearPair("hand", "cup", {0, 0}, {0, 1})}, "m",
       kStamp));
@@ -144,7 +151,7 @@ TEST(CollisionMarkers, OrangeForAPredictedContactBelowRedAboveYellow) {
       named("arm", kLink, 0, 0), named("hand", kLink, 0, 1), named("box", kObstacle, 0, 2),
       named("cup", kObstacle, 0, 3), named("far", kObstacle, 0, 4)};
   MarkerView view;
-  view.apply(markers.update(placed, {{"arm", "box", 0.5}},
+  view.apply(update(markers, placed, {{"arm", "box", 0.5}},
                             {nearPair("hand", "cup", {0, 0}, {0, 1})}, "m", kStamp,
                             {"arm", "hand", "far"}));
   EXPECT_TRUE(isRed(fillOf(view, "links", placed[0].ellipse)))
@@ -163,7 +170,7 @@ TEST(CollisionMarkers, OrangeForAPredictedContactBelowRedAboveYellow) {
 TEST(CollisionMarkers, LinksAndObstaclesHaveTheirOwnNamespacesAndQueriesAreNotDrawn) {
   CollisionMarkers markers;
   core::NamedEllipse probe = named("probe", core::EllipseRole::Query, 5, 5);
-  const MarkerArray array = markers.update(
+  const MarkerArray array = update(markers, 
       {named("arm", kLink), probe, named("box", kObstacle, 0, 3)}, {}, {}, "m", kStamp);
   ASSERT_EQ(array.markers.size(), 2u);
   EXPECT_EQ(array.markers[0].ns, "links");
@@ -178,7 +185,7 @@ TEST(CollisionMarkers, SameNameInBothNamespacesIsDrawnInEach) {
   CollisionMarkers markers;
   MarkerView view;
   view.apply(
-      markers.update({named("x", kObstacle, 0, 0), named("x", kLink, 0, 1)}, {}, {}, "m", kStamp));
+      update(markers, {named("x", kObstacle, 0, 0), named("x", kLink, 0, 1)}, {}, {}, "m", kStamp));
   EXPECT_TRUE(isGreen(fillOf(view, "obstacles", makeEllipse(0, 0, 0.5, 0.2))));
   EXPECT_TRUE(isGreen(fillOf(view, "links", makeEllipse(0, 1, 0.5, 0.2))));
 }
@@ -188,14 +195,14 @@ TEST(CollisionMarkers, UnchangedSceneSendsNothingAndAChangeOnlyTheMarkersItTouch
   std::vector<core::NamedEllipse> placed = {named("arm", kLink, 0, 0)};
   for (int i = 0; i < 1000; ++i) placed.push_back(named("o" + std::to_string(i), kObstacle, i, 10));
   MarkerView view;
-  const MarkerArray first = markers.update(placed, {}, {}, "m", kStamp);
+  const MarkerArray first = update(markers, placed, {}, {}, "m", kStamp);
   view.apply(first);
-  EXPECT_TRUE(markers.update(placed, {}, {}, "m", kStamp).markers.empty());
-  EXPECT_TRUE(markers.update(placed, {}, {}, "m", ros::Time(101)).markers.empty()) << "time alone";
+  EXPECT_TRUE(update(markers, placed, {}, {}, "m", kStamp).markers.empty());
+  EXPECT_TRUE(update(markers, placed, {}, {}, "m", ros::Time(101)).markers.empty()) << "time alone";
 
   // The link moves: only the link marker is sent.
   placed[0].ellipse.center.x() = 0.5;
-  const MarkerArray moved = markers.update(placed, {}, {}, "m", kStamp);
+  const MarkerArray moved = update(markers, placed, {}, {}, "m", kStamp);
   ASSERT_EQ(moved.markers.size(), 1u);
   EXPECT_EQ(moved.markers[0].ns, "links");
   view.apply(moved);
@@ -204,7 +211,7 @@ TEST(CollisionMarkers, UnchangedSceneSendsNothingAndAChangeOnlyTheMarkersItTouch
 
   // One obstacle turns red: its bucket's green marker and a red one, nothing else; a small share
   // of the first array's bytes (1,000 obstacles are 32 buckets of about 31).
-  const MarkerArray red = markers.update(placed, {{"arm", "o7", 0.5}}, {}, "m", kStamp);
+  const MarkerArray red = update(markers, placed, {{"arm", "o7", 0.5}}, {}, "m", kStamp);
   std::set<std::pair<std::string, int>> sent;
   for (const Marker& m : red.markers) sent.insert({m.ns, m.id});
   // links: red ADD, green DELETE (arm was its only ellipse); obstacles: red ADD, and the green
@@ -215,34 +222,34 @@ TEST(CollisionMarkers, UnchangedSceneSendsNothingAndAChangeOnlyTheMarkersItTouch
   EXPECT_TRUE(isRed(fillOf(view, "links", placed[0].ellipse)));
   EXPECT_TRUE(isRed(fillOf(view, "obstacles", placed[8].ellipse)));  // o7
   EXPECT_TRUE(isGreen(fillOf(view, "obstacles", placed[9].ellipse)));
-  EXPECT_TRUE(markers.update(placed, {{"arm", "o7", 0.5}}, {}, "m", kStamp).markers.empty());
+  EXPECT_TRUE(update(markers, placed, {{"arm", "o7", 0.5}}, {}, "m", kStamp).markers.empty());
 }
 
 TEST(CollisionMarkers, VanishedEllipseIsRemovedFromItsMarkerAndAnEmptiedMarkerDeletedOnce) {
   CollisionMarkers markers;
   MarkerView view;
-  view.apply(markers.update({named("a", kObstacle, 0, 0), named("b", kObstacle, 0, 1)}, {}, {}, "m",
+  view.apply(update(markers, {named("a", kObstacle, 0, 0), named("b", kObstacle, 0, 1)}, {}, {}, "m",
                             kStamp));
   ASSERT_TRUE(fillOf(view, "obstacles", makeEllipse(0, 0, 0.5, 0.2)));
   const int id = fillOf(view, "obstacles", makeEllipse(0, 0, 0.5, 0.2))->id;
 
-  const MarkerArray without_a = markers.update({named("b", kObstacle, 0, 1)}, {}, {}, "m", kStamp);
+  const MarkerArray without_a = update(markers, {named("b", kObstacle, 0, 1)}, {}, {}, "m", kStamp);
   ASSERT_EQ(without_a.markers.size(), 1u);
   EXPECT_EQ(without_a.markers[0].action, Marker::ADD);  // the green marker, now b alone
   view.apply(without_a);
   EXPECT_TRUE(fillsOf(view, "obstacles", makeEllipse(0, 0, 0.5, 0.2)).empty());
   EXPECT_TRUE(isGreen(fillOf(view, "obstacles", makeEllipse(0, 1, 0.5, 0.2))));
 
-  const MarkerArray none = markers.update({}, {}, {}, "m", kStamp);
+  const MarkerArray none = update(markers, {}, {}, {}, "m", kStamp);
   ASSERT_EQ(none.markers.size(), 1u);
   EXPECT_EQ(none.markers[0].action, Marker::DELETE);
   EXPECT_EQ(none.markers[0].ns, "obstacles");
   EXPECT_EQ(none.markers[0].id, id);
   view.apply(none);
   EXPECT_TRUE(view.shown().empty());
-  EXPECT_TRUE(markers.update({}, {}, {}, "m", kStamp).markers.empty()) << "deleted once only";
+  EXPECT_TRUE(update(markers, {}, {}, {}, "m", kStamp).markers.empty()) << "deleted once only";
 
-  const MarkerArray back = markers.update({named("a", kObstacle, 0, 0)}, {}, {}, "m", kStamp);
+  const MarkerArray back = update(markers, {named("a", kObstacle, 0, 0)}, {}, {}, "m", kStamp);
   ASSERT_EQ(back.markers.size(), 1u);
   EXPECT_EQ(back.markers[0].id, id) << "the same state and bucket, the same id";
 }
@@ -252,8 +259,8 @@ TEST(CollisionMarkers, AStateThatEmptiesIsDeletedAndTheEllipseShownInItsNewColou
   const std::vector<core::NamedEllipse> placed = {named("arm", kLink, 0, 0),
                                                   named("box", kObstacle, 0, 1)};
   MarkerView view;
-  view.apply(markers.update(placed, {{"arm", "box", 0.5}}, {}, "m", kStamp));
-  const MarkerArray clear = markers.update(placed, {}, {}, "m", kStamp);
+  view.apply(update(markers, placed, {{"arm", "box", 0.5}}, {}, "m", kStamp));
+  const MarkerArray clear = update(markers, placed, {}, {}, "m", kStamp);
   int deletions = 0;
   for (const Marker& m : clear.markers) {
     if (m.action == Marker::DELETE) {
@@ -274,11 +281,11 @@ TEST(CollisionMarkers, IdsDependOnStateAndNameNotOnOrderOrHistory) {
   std::vector<core::NamedEllipse> placed;
   for (int i = 0; i < 2000; ++i) placed.push_back(named("o" + std::to_string(i), kObstacle, i, 0));
   std::vector<core::NamedEllipse> reversed(placed.rbegin(), placed.rend());
-  one.update({named("z", kObstacle)}, {}, {}, "m", kStamp);  // a different history
+  update(one, {named("z", kObstacle)}, {}, {}, "m", kStamp);  // a different history
   MarkerView a;
   MarkerView b;
-  a.apply(one.update(placed, {}, {}, "m", kStamp));
-  b.apply(other.update(reversed, {}, {}, "m", kStamp));
+  a.apply(update(one, placed, {}, {}, "m", kStamp));
+  b.apply(update(other, reversed, {}, {}, "m", kStamp));
   EXPECT_FALSE(drawnTriangles(a, "obstacles").empty());
   EXPECT_EQ(drawnTriangles(a, "obstacles"), drawnTriangles(b, "obstacles"));
   std::set<int> ids_a;
@@ -298,7 +305,7 @@ TEST(CollisionMarkers, ManyEllipsesAreSplitIntoBoundedMarkersThatRegroupWhenTheC
   std::vector<core::NamedEllipse> placed;
   for (int i = 0; i < 10000; ++i) placed.push_back(named("o" + std::to_string(i), kObstacle, i, 0));
   MarkerView view;
-  view.apply(markers.update(placed, {}, {}, "m", kStamp));
+  view.apply(update(markers, placed, {}, {}, "m", kStamp));
   // 10,000 / 32 -> 512 buckets, about 20 ellipses each.
   EXPECT_EQ(view.shown().size(), 512u);
   std::size_t points = 0;
@@ -316,7 +323,7 @@ TEST(CollisionMarkers, ManyEllipsesAreSplitIntoBoundedMarkersThatRegroupWhenTheC
   // Down to 7 (fewer than a quarter of 32 per bucket even at B = 2): one bucket; the other 511
   // markers are deleted, the rest drawn again.
   placed.resize(7);
-  view.apply(markers.update(placed, {}, {}, "m", kStamp));
+  view.apply(update(markers, placed, {}, {}, "m", kStamp));
   ASSERT_EQ(view.shown().size(), 1u);
   EXPECT_EQ(view.shown().begin()->second.id, CollisionMarkers::fillId(MarkerState::Free, 0));
   EXPECT_EQ(view.shown().begin()->second.points.size(),
@@ -369,7 +376,7 @@ TEST(CollisionMarkers, ChangesAppliedInOrderShowWhatTheFullArrayShows) {
             nearPair("l" + std::to_string(i % 10), other, {0, 0}, {shift(random), 1}));
       }
     }
-    changes.apply(markers.update(placed, collisions, warnings, "m", kStamp));
+    changes.apply(update(markers, placed, collisions, warnings, "m", kStamp));
     MarkerView full;
     full.apply(markers.fullArray());
     ASSERT_EQ(changes.shown().size(), full.shown().size()) << "cycle " << cycle;
@@ -399,7 +406,7 @@ TEST(CollisionMarkers, ChangesAppliedInOrderShowWhatTheFullArrayShows) {
 
 TEST(CollisionMarkers, FullArrayStartsWithDeleteAll) {
   CollisionMarkers markers;
-  markers.update({named("a", kObstacle)}, {}, {}, "m", kStamp);
+  update(markers, {named("a", kObstacle)}, {}, {}, "m", kStamp);
   const MarkerArray full = markers.fullArray();
   ASSERT_EQ(full.markers.size(), 2u);
   EXPECT_EQ(full.markers[0].action, Marker::DELETEALL);
@@ -424,7 +431,7 @@ TEST(CollisionMarkers, ClearanceHashClashGivesTheLaterPairTheNextFreeIdForGood) 
   const std::vector<core::NamedEllipse> placed = {
       named("arm", kLink), named("o398824", kObstacle, 0, 2), named("o768140", kObstacle, 0, 4)};
   CollisionMarkers markers;
-  const MarkerArray both = markers.update(
+  const MarkerArray both = update(markers, 
       placed, {},
       {nearPair("arm", "o398824", {0, 0}, {0, 1}), nearPair("arm", "o768140", {0, 0}, {0, 2})}, "m",
       kStamp);
@@ -434,7 +441,7 @@ TEST(CollisionMarkers, ClearanceHashClashGivesTheLaterPairTheNextFreeIdForGood) 
   EXPECT_EQ(find(both, "clearance", preferred + 1)->points[1].y, 2.0);
   // The later pair keeps its id once the first is gone.
   const MarkerArray later =
-      markers.update(placed, {}, {nearPair("arm", "o768140", {0, 0}, {0, 3})}, "m", kStamp);
+      update(markers, placed, {}, {nearPair("arm", "o768140", {0, 0}, {0, 3})}, "m", kStamp);
   EXPECT_EQ(find(later, "clearance", preferred)->action, Marker::DELETE);
   EXPECT_EQ(find(later, "clearance", preferred + 1)->action, Marker::ADD);
   EXPECT_EQ(find(later, "clearance", preferred + 1)->points[1].y, 3.0);
@@ -443,7 +450,7 @@ TEST(CollisionMarkers, ClearanceHashClashGivesTheLaterPairTheNextFreeIdForGood) 
 TEST(CollisionMarkers, WarningPairIsALineBetweenItsWitnessPointsAboveTheEllipses) {
   CollisionMarkers markers;
   const MarkerArray array =
-      markers.update({named("arm", kLink), named("cup", kObstacle, 3.0, 0.0)}, {},
+      update(markers, {named("arm", kLink), named("cup", kObstacle, 3.0, 0.0)}, {},
                      {nearPair("arm", "cup", {0.5, 0.25}, {2.5, -0.25})}, "odom", kStamp);
   const Marker* line = find(array, CollisionMarkers::kClearanceNamespace,
                             CollisionMarkers::preferredId("arm", "cup"));
@@ -474,8 +481,8 @@ TEST(CollisionMarkers, ClearanceLineIsResentWhenItMovesAndDeletedOnceWhenThePair
   const int arm_cup = CollisionMarkers::preferredId("arm", "cup");
   const int arm_box = CollisionMarkers::preferredId("arm", "box");
   MarkerView view;
-  view.apply(markers.update(placed, {}, {nearPair("arm", "cup", {0, 0}, {1, 0})}, "m", kStamp));
-  const MarkerArray moved = markers.update(
+  view.apply(update(markers, placed, {}, {nearPair("arm", "cup", {0, 0}, {1, 0})}, "m", kStamp));
+  const MarkerArray moved = update(markers, 
       placed, {}, {nearPair("arm", "box", {0, 0}, {0, 1}), nearPair("arm", "cup", {0, 0}, {2, 0})},
       "m", kStamp);
   ASSERT_TRUE(find(moved, "clearance", arm_cup));
@@ -484,7 +491,7 @@ TEST(CollisionMarkers, ClearanceLineIsResentWhenItMovesAndDeletedOnceWhenThePair
   view.apply(moved);
 
   const MarkerArray gone =
-      markers.update(placed, {}, {nearPair("arm", "box", {0, 0}, {0, 1})}, "m", kStamp);
+      update(markers, placed, {}, {nearPair("arm", "box", {0, 0}, {0, 1})}, "m", kStamp);
   ASSERT_TRUE(find(gone, "clearance", arm_cup));
   EXPECT_EQ(find(gone, "clearance", arm_cup)->action, Marker::DELETE);
   EXPECT_FALSE(find(gone, "clearance", arm_box)) << "unchanged: not sent again";
@@ -494,7 +501,7 @@ TEST(CollisionMarkers, ClearanceLineIsResentWhenItMovesAndDeletedOnceWhenThePair
   EXPECT_TRUE(isGreen(fillOf(view, "obstacles", placed[1].ellipse)));
   EXPECT_TRUE(isYellow(fillOf(view, "obstacles", placed[2].ellipse)));
 
-  const MarkerArray none = markers.update(placed, {}, {}, "m", kStamp);
+  const MarkerArray none = update(markers, placed, {}, {}, "m", kStamp);
   EXPECT_EQ(find(none, "clearance", arm_box)->action, Marker::DELETE);
   EXPECT_FALSE(find(none, "clearance", arm_cup));  // deleted once only
 }

@@ -34,7 +34,7 @@ struct CheckRequest {
 /// The answer of one check.
 struct CheckOutcome {
   /// Stored ellipses that could be placed: links, then obstacles, each by name.
-  std::vector<core::NamedEllipse> placed;
+  core::Scene placed;
   std::vector<std::string> unavailable_frames;  ///< sorted; their ellipses were skipped
   std::vector<std::string> stale_frames;        ///< sorted; transform too old, ellipses skipped
   std::vector<std::string> skipped;             ///< why each skipped ellipse was skipped

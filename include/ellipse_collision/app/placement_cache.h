@@ -54,15 +54,15 @@ class PlacementCache {
   /// that check placed every stored ellipse, it already holds every name in placing order, and
   /// the next check only rewrites the geometry instead of copying every name again (at 1,000
   /// ellipses the copies were a third of a check). Any other vector is dropped.
-  void recycle(std::vector<core::NamedEllipse> placed);
+  void recycle(core::Scene placed);
   /// The recycled vector for this check (after begin()), or an empty one. Its names and roles
   /// are those of placingOrder(); its geometry is stale and must be rewritten entry by entry.
-  std::vector<core::NamedEllipse> takeRecycled();
+  core::Scene takeRecycled();
   /// Checks that refilled a recycled vector (for tests and benchmarks).
   std::size_t refilledChecks() const { return refilled_checks_; }
   /// Tells the cache that `placed` is the complete placement of this check (every stored
   /// ellipse, in placingOrder(), no query), so that it may be recycled later.
-  void produced(const std::vector<core::NamedEllipse>& placed);
+  void produced(const core::Scene& placed);
 
   /// Refills `placed`, the vector takeRecycled() returned, frame by frame: the entries of a frame
   /// that did not move since the recycled vector was made are not visited at all, those of a
@@ -72,7 +72,7 @@ class PlacementCache {
   /// `placed` partly written, unless every stored entry has a projection, every frame is usable
   /// now and every projection succeeded: then refill entry by entry. `reused_obstacles` counts
   /// the obstacles whose projection was reused.
-  bool refillByFrame(std::vector<core::NamedEllipse>& placed, ScenePlacement& placement,
+  bool refillByFrame(core::Scene& placed, ScenePlacement& placement,
                      const std::function<bool(std::size_t position)>& project,
                      std::size_t* reused_obstacles);
   /// Obstacles among placingOrder().
@@ -121,11 +121,11 @@ class PlacementCache {
   /// The buffers of the complete placements produced since the last reset (a vector keeps its
   /// buffer when moved): the node alternates between two.
   struct Produced {
-    const core::NamedEllipse* data;
+    const void* storage;  ///< core::Scene::storage()
     std::uint64_t check;  ///< check_ that made it: entries stored later are stale in it
   };
   std::vector<Produced> produced_;
-  std::vector<core::NamedEllipse> recycled_;
+  core::Scene recycled_;
   std::uint64_t recycled_check_{0};
   std::size_t refilled_checks_{0};
   std::size_t frame_refills_{0};

@@ -19,12 +19,11 @@ class StandingObstacles {
   static constexpr std::size_t kChecksBeforeIndexing = 16;
 
   /// After one check's placement: `unchanged` says whether its obstacles are exactly the ones
-  /// of the previous check (same registry, every obstacle reused bit for bit), `obstacles` are
-  /// this check's placed obstacles. Returns the grid to check the movers against, or nullptr to
-  /// stream the obstacles.
-  const core::IndexedObstacles* update(bool unchanged,
-                                       std::vector<core::NamedEllipse>::const_iterator begin,
-                                       std::vector<core::NamedEllipse>::const_iterator end);
+  /// of the previous check (same registry, every obstacle reused bit for bit); this check's
+  /// placed obstacles are the entries of `scene` from `first_obstacle` on. Returns the grid to
+  /// check the movers against, or nullptr to stream the obstacles.
+  const core::IndexedObstacles* update(bool unchanged, const core::Scene& scene,
+                                       std::size_t first_obstacle);
 
   /// Checks in a row whose obstacles stood still (for tests and diagnostics).
   std::size_t standingChecks() const { return standing_checks_; }

@@ -8,20 +8,9 @@
 #include <vector>
 
 #include "ellipse_collision/core/ellipse.h"
+#include "ellipse_collision/core/scene.h"
 
 namespace ellipse_collision::core {
-
-/// What an ellipse stands for decides which pairs are checked: link-obstacle always, link-link
-/// iff self collision is on, obstacle-obstacle never, query against every link and obstacle,
-/// query-query never. The order Query < Link < Obstacle also orders the names within a pair.
-enum class EllipseRole { Query, Link, Obstacle };
-
-/// A named ellipse already placed in the common fixed frame.
-struct NamedEllipse {
-  std::string name;  ///< unique within one scene, non-empty
-  EllipseRole role{EllipseRole::Link};
-  Ellipse ellipse;
-};
 
 /// Unordered name pairs that are never reported (an allowed-collision matrix).
 class AllowedPairs {
@@ -102,7 +91,7 @@ SceneCheckResult checkScene(const std::vector<NamedEllipse>& ellipses, const Sce
                             const std::set<std::string>& only_names = {});
 
 /// checkScene() for a caller that vouches for its scene, so that the check does no work per
-/// obstacle but the broadphase's: every name non-empty and distinct (a registry keyed by name),
+/// obstacle but the broadphase's, on the scene's packed column of ellipses: every name non-empty and distinct (a registry keyed by name),
 /// every obstacle's ellipse valid (isValid(), tested where it was made: projectToPlane() refuses
 /// an invalid projection), and the queries and links first: entries [0, first_obstacle) are
 /// queries and links, the rest obstacles. The same answer bit for bit as checkScene(), without
@@ -115,8 +104,8 @@ SceneCheckResult checkScene(const std::vector<NamedEllipse>& ellipses, const Sce
 /// the rest of the promise (an invalid obstacle far from every mover, a query or link after
 /// first_obstacle, duplicate names) gets an unspecified answer, with no undefined behaviour
 /// (fuzz_scene feeds it broken scenes under the sanitizers).
-SceneCheckResult checkVouchedScene(const std::vector<NamedEllipse>& ellipses,
-                                   std::size_t first_obstacle, const SceneRules& rules,
+SceneCheckResult checkVouchedScene(const Scene& scene, std::size_t first_obstacle,
+                                   const SceneRules& rules,
                                    const std::set<std::string>& only_names = {});
 
 /// The answer of nearestTo(): the nearest partner of one ellipse, or why there is none.
@@ -135,5 +124,7 @@ struct NearestResult {
 /// checkScene(), and when no ellipse is named `name`.
 NearestResult nearestTo(const std::vector<NamedEllipse>& ellipses, const SceneRules& rules,
                         const std::string& name);
+/// nearestTo() of the entries of `scene`.
+NearestResult nearestTo(const Scene& scene, const SceneRules& rules, const std::string& name);
 
 }  // namespace ellipse_collision::core

@@ -69,7 +69,7 @@ class CollisionMarkers {
   /// obstacles (queries are skipped) in `fixed_frame`; `collisions` and `warnings` the check's
   /// pairs among them. Remembers what it returned, so call it only for arrays that are actually
   /// published.
-  visualization_msgs::MarkerArray update(const std::vector<core::NamedEllipse>& placed,
+  visualization_msgs::MarkerArray update(const core::Scene& placed,
                                          const std::vector<core::CollidingPair>& collisions,
                                          const std::vector<core::NearPair>& warnings,
                                          const std::string& fixed_frame, const ros::Time& stamp,
