@@ -96,7 +96,7 @@ CheckOutcome runCheck(const CheckRequest& request, const EllipseRegistry& regist
     cache->begin(registry, settings.global_padding_m);
     outcome.placed = cache->takeRecycled();
   }
-  // A recycled vector holds every stored ellipse's name and role in placing order: entry after
+  // A recycled scene holds every stored ellipse's name and role in placing order: entry after
   // entry only the geometry is written, until an entry is not placed (then the rest is dropped
   // and appended as without one).
   std::size_t rewrite_end = outcome.placed.size();
@@ -113,7 +113,7 @@ CheckOutcome runCheck(const CheckRequest& request, const EllipseRegistry& regist
     }
   };
   // Links before obstacles, so the core reads the scene once (checkScene()); each entry's index
-  // counted in registry order for the cache. A reused entry in a recycled vector touches neither
+  // counted in registry order for the cache. A reused entry in a recycled scene touches neither
   // its name nor its spec.
   std::size_t reused_obstacles = 0, obstacles = 0;
   // A projection made now, kept for the next check.
@@ -155,7 +155,7 @@ CheckOutcome runCheck(const CheckRequest& request, const EllipseRegistry& regist
         break;
     }
   };
-  // A recycled vector, frame by frame: the entries of frames that stood still are not visited.
+  // A recycled scene, frame by frame: the entries of frames that stood still are not visited.
   const auto project = [&](std::size_t at) {
     const PlacementCache::OrderedEntry& item = cache->placingOrder()[at];
     const EllipseSpec& spec = item.entry->second.spec;

@@ -115,7 +115,7 @@ bool PlacementCache::refillByFrame(core::Scene& placed,
   for (Frame& frame : frames_) {
     if (frame.unchanged) {
       *reused_obstacles += frame.obstacles;
-      // Stored after the recycled vector was made: its projections there are stale.
+      // Stored after the recycled scene was made: its projections there are stale.
       if (frame.stored_in_check <= recycled_check_) continue;
       for (const std::uint32_t position : frame.positions) {
         placed.ellipse(position) = entries_[order_[position].index].ellipse;

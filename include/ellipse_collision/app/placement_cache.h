@@ -49,23 +49,23 @@ class PlacementCache {
     return frame.unchanged ? &entry.ellipse : nullptr;
   }
 
-  /// A `placed` vector of an earlier check made with this cache, handed back by its owner once
+  /// A `placed` scene of an earlier check made with this cache, handed back by its owner once
   /// done with it (the node, when a newer check replaces it): while the registry is unchanged and
   /// that check placed every stored ellipse, it already holds every name in placing order, and
   /// the next check only rewrites the geometry instead of copying every name again (at 1,000
-  /// ellipses the copies were a third of a check). Any other vector is dropped.
+  /// ellipses the copies were a third of a check). Any other scene is dropped.
   void recycle(core::Scene placed);
-  /// The recycled vector for this check (after begin()), or an empty one. Its names and roles
+  /// The recycled scene for this check (after begin()), or an empty one. Its names and roles
   /// are those of placingOrder(); its geometry is stale and must be rewritten entry by entry.
   core::Scene takeRecycled();
-  /// Checks that refilled a recycled vector (for tests and benchmarks).
+  /// Checks that refilled a recycled scene (for tests and benchmarks).
   std::size_t refilledChecks() const { return refilled_checks_; }
   /// Tells the cache that `placed` is the complete placement of this check (every stored
   /// ellipse, in placingOrder(), no query), so that it may be recycled later.
   void produced(const core::Scene& placed);
 
-  /// Refills `placed`, the vector takeRecycled() returned, frame by frame: the entries of a frame
-  /// that did not move since the recycled vector was made are not visited at all, those of a
+  /// Refills `placed`, the scene takeRecycled() returned, frame by frame: the entries of a frame
+  /// that did not move since the recycled scene was made are not visited at all, those of a
   /// frame that moved only since then get their cached projection, and those of a frame that
   /// moved now are handed to `project(position)`, which projects, store()s and writes the entry
   /// at that position of placingOrder() (false if it could not be placed). Returns false, with
@@ -118,7 +118,7 @@ class PlacementCache {
   std::vector<Entry> entries_;
   std::vector<OrderedEntry> order_;
   StandingObstacles standing_;
-  /// The buffers of the complete placements produced since the last reset (a vector keeps its
+  /// The buffers of the complete placements produced since the last reset (a scene keeps its
   /// buffer when moved): the node alternates between two.
   struct Produced {
     const void* storage;  ///< core::Scene::storage()
