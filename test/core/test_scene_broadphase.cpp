@@ -285,9 +285,17 @@ TEST(SceneBroadphase, PairsAreInNameOrderWhateverTheNamesFirstBytes) {
   }
   scene.push_back({"rock", EllipseRole::Obstacle, {Eigen::Vector2d(0.5, 0), 1, 1, 0}});
   scene.push_back({"rock2", EllipseRole::Obstacle, {Eigen::Vector2d(0.5, 0.1), 1, 1, 0}});
+  // Far away, one link among 40 obstacles in shuffled name order: a mover with more pairs than
+  // the insertion sort takes.
+  scene.push_back({"far_link", EllipseRole::Link, {Eigen::Vector2d(100, 0), 1, 1, 0}});
+  std::mt19937_64 rng(5);
+  for (int i = 0; i < 40; ++i) {
+    scene.push_back({"pile_" + std::to_string(rng() % 1000) + "_" + std::to_string(i),
+                     EllipseRole::Obstacle, {Eigen::Vector2d(100.0 + 0.01 * i, 0.5), 1, 1, 0}});
+  }
   SceneRules rules;
   const SceneCheckResult expected = bruteForce(scene, rules, {});
-  ASSERT_GT(expected.collisions.size(), 80u);
+  ASSERT_GT(expected.collisions.size(), 120u);
   expectSame(checkScene(scene, rules), expected, "checkScene");
   expectSame(checkVouched(scene, rules, {}), expected, "checkVouchedScene");
   expectSame(checkIndexed(scene, rules, {}), expected, "checkMoversAgainst");
