@@ -97,16 +97,17 @@ BoundingBox candidateBox(const PreparedEllipse& mover, double warning_distance) 
   return {box.min_x - pad, box.min_y - pad, box.max_x + pad, box.max_y + pad};
 }
 
-/// The first 8 bytes of `name`, zero-padded, as a big-endian number: where two names' prefixes
-/// differ they order the names as std::string's operator< does (bytes compared as unsigned char,
-/// a proper prefix first); where they are equal the names must be compared in full.
-std::uint64_t namePrefix(const std::string& name) {
-  std::uint64_t prefix = 0;
-  for (std::size_t k = 0; k < 8; ++k) {
+/// The role in the top byte, then the first 7 bytes of `name`, zero-padded, big-endian: where
+/// two such numbers differ they order the pairs (role, name) as comparing the role and then
+/// std::string's operator< does (bytes compared as unsigned char, a proper prefix first); where
+/// they are equal the names must be compared in full.
+std::uint64_t roleAndPrefix(EllipseRole role, const std::string& name) {
+  std::uint64_t key = static_cast<std::uint64_t>(role);
+  for (std::size_t k = 0; k < 7; ++k) {
     const std::uint64_t byte = k < name.size() ? static_cast<unsigned char>(name[k]) : 0u;
-    prefix = (prefix << 8) | byte;
+    key = (key << 8) | byte;
   }
-  return prefix;
+  return key;
 }
 
 /// Lower role first, then lower name: a pair reads the same whichever way round the loop met it.
@@ -174,29 +175,22 @@ class PairCollector {
         movers_(movers.entries),
         prepared_movers_(movers.prepared),
         rank_(movers.entries.size()) {
-    // Sorted on (role, the name's first 8 bytes) and the whole name only where those tie:
-    // comparing names through memcmp was a twentieth of a check of 50 links and 100 obstacles.
+    // Sorted on one number, the role and the name's first 7 bytes (roleAndPrefix()), and on the
+    // whole names only where those tie: comparing names through memcmp was a twentieth of a
+    // check of 50 links and 100 obstacles.
     struct Key {
-      std::uint64_t role_and_prefix[2];
+      std::uint64_t role_and_prefix;
       std::uint32_t index;
     };
     std::vector<Key> keys(movers_.size());
     for (std::size_t i = 0; i < keys.size(); ++i) {
-      keys[i] = {{static_cast<std::uint64_t>(movers_[i].role), namePrefix(*movers_[i].name)},
-                 static_cast<std::uint32_t>(i)};
+      keys[i] = {roleAndPrefix(movers_[i].role, *movers_[i].name), static_cast<std::uint32_t>(i)};
     }
     std::sort(keys.begin(), keys.end(), [this](const Key& a, const Key& b) {
-      if (a.role_and_prefix[0] != b.role_and_prefix[0]) {
-        return a.role_and_prefix[0] < b.role_and_prefix[0];
-      }
-      if (a.role_and_prefix[1] != b.role_and_prefix[1]) {
-        return a.role_and_prefix[1] < b.role_and_prefix[1];
-      }
+      if (a.role_and_prefix != b.role_and_prefix) return a.role_and_prefix < b.role_and_prefix;
       return *movers_[a.index].name < *movers_[b.index].name;
     });
-    std::vector<std::uint32_t> order(keys.size());
-    for (std::size_t k = 0; k < keys.size(); ++k) order[k] = keys[k].index;
-    for (std::size_t k = 0; k < order.size(); ++k) rank_[order[k]] = static_cast<std::uint32_t>(k);
+    for (std::size_t k = 0; k < keys.size(); ++k) rank_[keys[k].index] = static_cast<std::uint32_t>(k);
     // Enough for a robot's self collisions without growing the vector on the way.
     collisions_.reserve(kExpectedPairs);
   }
