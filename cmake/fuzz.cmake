@@ -34,7 +34,8 @@ foreach(_source ${ELLIPSE_COLLISION_CORE_SOURCES} ${ELLIPSE_COLLISION_APP_SOURCE
 endforeach()
 add_library(ellipse_collision_fuzz_core STATIC ${_fuzz_core_sources})
 target_include_directories(ellipse_collision_fuzz_core PUBLIC "${_fuzz_root}/include")
-target_link_libraries(ellipse_collision_fuzz_core PUBLIC Eigen3::Eigen)
+find_package(Threads REQUIRED)
+target_link_libraries(ellipse_collision_fuzz_core PUBLIC Eigen3::Eigen Threads::Threads)
 target_compile_options(ellipse_collision_fuzz_core PRIVATE ${_fuzz_compile_options})
 target_compile_features(ellipse_collision_fuzz_core PUBLIC cxx_std_17)
 

@@ -6,6 +6,9 @@
 #
 #   scripts/node_load.sh [--smoke] [--node PATH] [--seconds S] [--runs "N@HZ N@HZ ..."]
 #                        [--no-markers]   (the check cycle alone, without a ~markers subscriber)
+#                        [--stream HZ]    (the obstacles published on ~obstacles at HZ, moving a
+#                                          little each message, instead of added once)
+#                        [--store]        (the obstacle store on, as by default, in build/benchmark)
 #
 # Default runs: 200@30 2000@30 10000@30 100000@10 over 20 s each (goals: 10000@30 under 10 % of
 # a core and RSS under 100 MB, 100000@10 under 50 %). --smoke: 200@30 for 3 s (for CI).
@@ -17,6 +20,8 @@ node="${repo}/build/ws/devel/lib/ellipse_collision/ellipse_collision_node"
 seconds=20
 runs="200@30 2000@30 10000@30 100000@10"
 markers=()
+stream=()
+store=false
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --smoke) seconds=3; runs="200@30" ;;
@@ -24,7 +29,9 @@ while [[ $# -gt 0 ]]; do
     --seconds) seconds="$2"; shift ;;
     --runs) runs="$2"; shift ;;
     --no-markers) markers=(--no-markers) ;;
-    *) echo "usage: $0 [--smoke] [--node PATH] [--seconds S] [--runs \"N@HZ ...\"] [--no-markers]" >&2
+    --stream) stream=(--stream "$2"); shift ;;
+    --store) store=true ;;
+    *) echo "usage: $0 [--smoke] [--node PATH] [--seconds S] [--runs \"N@HZ ...\"] [--no-markers] [--stream HZ] [--store]" >&2
        exit 2 ;;
   esac
   shift
@@ -58,7 +65,12 @@ for run in ${runs}; do
     echo "tf_timeout: 0.1"
     echo "warning_distance: 0.1"
     echo "self_collision: true"
-    echo "obstacle_store: ''"
+    if ! ${store}; then
+      echo "obstacle_store: ''"
+    else
+      rm -f "${out}/node_load.obstacles"
+      echo "obstacle_store: ${out}/node_load.obstacles"
+    fi
     echo "links:"
     for i in $(seq 0 19); do
       echo "  - {name: link_${i}, frame: link_${i}, x: 0.1, y: 0.0, angle: 0.0, radius_x: 0.25, radius_y: 0.1}"
@@ -72,7 +84,7 @@ for run in ${runs}; do
   node_pid=$!
   pids+=("${node_pid}")
   if ! /usr/bin/python3 "${repo}/bench/node_load.py" --node /ellipse_collision --pid "${node_pid}" \
-      --obstacles "${obstacles}" --seconds "${seconds}" "${markers[@]}" 2> "${out}/node_load_err.txt" \
+      --obstacles "${obstacles}" --seconds "${seconds}" "${markers[@]}" "${stream[@]}" 2> "${out}/node_load_err.txt" \
       | sed "s/^/rate=${rate} /"; then
     cat "${out}/node_load_err.txt" >&2
     tail -n 20 "${out}/node.txt" >&2

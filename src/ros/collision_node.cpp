@@ -54,6 +54,13 @@ CollisionNode::CollisionNode(const ros::NodeHandle& nh, const ros::NodeHandle& p
   obstacle_store_ = config_.obstacle_store ? *config_.obstacle_store
                                            : defaultObstacleStore(ros::this_node::getName());
   restoreObstacles();
+  if (!obstacle_store_.empty()) {
+    store_writer_ = std::make_unique<app::ObstacleStoreWriter>(obstacle_store_);
+    if (config_.obstacle_store_period_s > 0.0) {
+      store_timer_ = nh_.createWallTimer(ros::WallDuration(config_.obstacle_store_period_s),
+                                         &CollisionNode::onStoreTimer, this);
+    }
+  }
   collisions_pub_ = private_nh_.advertise<CollisionState>("collisions", 1, /*latch=*/true);
   // The arrays carry changes, so none may be dropped: a queue of kMarkerQueue arrays per
   // subscriber (roscpp drops the oldest beyond it; with 1, the full view sent to a new subscriber
@@ -127,16 +134,45 @@ void CollisionNode::restoreObstacles() {
 }
 
 std::string CollisionNode::persistObstacles() {
-  if (obstacle_store_.empty()) return {};
+  if (!store_writer_) return {};
   app::StoredObstacles stored = registry_.runtimeObstacles();
   stored.session = session_;
-  std::string error = app::makeParentDirectories(obstacle_store_);
-  if (error.empty()) error = app::writeFileAtomically(obstacle_store_, app::serializeObstacles(stored));
-  last_store_error_ = error;
+  store_behind_ = false;
+  const std::string error = store_writer_->writeNow(std::move(stored));
   if (!error.empty()) {
     ROS_ERROR_STREAM_THROTTLE(5.0, "ellipse_collision: cannot persist the runtime obstacles: " << error);
   }
   return error;
+}
+
+void CollisionNode::persistObstaclesLater() {
+  if (!store_writer_) return;
+  store_behind_ = true;
+  if (config_.obstacle_store_period_s == 0.0) onStoreTimer(ros::WallTimerEvent());
+}
+
+void CollisionNode::onStoreTimer(const ros::WallTimerEvent& /*event*/) {
+  if (!store_writer_) return;
+  const std::string error = store_writer_->lastError();
+  if (!error.empty()) {
+    ROS_ERROR_STREAM_THROTTLE(5.0, "ellipse_collision: cannot persist the runtime obstacles: " << error);
+  }
+  if (!store_behind_) return;
+  // One snapshot per period however many messages came: the copy is taken here, the text and
+  // the disk are the writer thread's.
+  app::StoredObstacles stored = registry_.runtimeObstacles();
+  stored.session = session_;
+  store_behind_ = false;
+  store_writer_->writeLater(std::move(stored));
+}
+
+CollisionNode::~CollisionNode() {
+  if (store_writer_ && store_behind_) {
+    app::StoredObstacles stored = registry_.runtimeObstacles();
+    stored.session = session_;
+    store_writer_->writeLater(std::move(stored));
+  }
+  // store_writer_'s destructor writes what is queued before the node's members go.
 }
 
 void CollisionNode::handleTimeJumpAndExpiry() {
@@ -155,7 +191,7 @@ void CollisionNode::handleTimeJumpAndExpiry() {
       registry_.dropExpiredTopicObstacles(now.toSec(), config_.obstacle_timeout_s);
   if (dropped > 0) {
     dropped_obstacles_ += dropped;
-    persistObstacles();
+    persistObstaclesLater();
     ROS_WARN_STREAM_THROTTLE(5.0, "ellipse_collision: dropped "
                                       << dropped << " obstacle(s) from ~obstacles: the last message is "
                                       << core::formatNumber(now.toSec() - registry_.topicStamp())
@@ -278,7 +314,7 @@ void CollisionNode::onObstacles(const EllipseArray::ConstPtr& msg) {
       tfLookup(tf_buffer_, config_.fixed_frame, ros::Time(0), ros::Duration(config_.tf_timeout_s)));
   if (error.empty()) {
     error = registry_.replaceTopicObstacles(specs, "ellipses", msg->header.stamp.toSec());
-    if (error.empty()) persistObstacles();
+    if (error.empty()) persistObstaclesLater();
   }
   last_obstacles_error_ = error;
   if (!error.empty()) {
@@ -429,7 +465,8 @@ void CollisionNode::onDiagnosticsTimer(const ros::TimerEvent& /*event*/) {
     problems.push_back("last ~obstacles message refused: " + last_obstacles_error_);
   }
   if (!state_.failure.empty()) problems.push_back("last check failed: " + state_.failure);
-  if (!last_store_error_.empty()) problems.push_back("obstacle store: " + last_store_error_);
+  const std::string store_error = store_writer_ ? store_writer_->lastError() : std::string();
+  if (!store_error.empty()) problems.push_back("obstacle store: " + store_error);
   const bool only_waiting = !state_.valid && problems.size() == 1;
   status.level = !state_.failure.empty() || missing_too_long
                      ? diagnostic_msgs::DiagnosticStatus::ERROR

@@ -2,11 +2,13 @@
 
 #include <ros/param.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <map>
 #include <set>
 
+#include "ellipse_collision/app/collision_check.h"
 #include "ellipse_collision/core/number_format.h"
 #include "ellipse_collision/core/unique_names.h"
 #include "ellipse_collision/ros/conversions.h"
@@ -248,20 +250,18 @@ NodeConfig parseNodeConfig(const XmlRpcValue& params, const UrdfLinkFitter& fit_
                       describeValue(root));
   }
 
-  const std::set<std::string> known = {
-      "fixed_frame",      "rate",              "tf_timeout",       "padding",
-      "links",            "links_from_urdf",   "obstacles",        "allowed_pairs",
+  // Every key the node reads, in the order of config/ellipse_collision.yaml's documentation.
+  static const std::vector<std::string> kKnownKeys = {
+      "fixed_frame",      "rate",              "tf_timeout",        "padding",
+      "links",            "links_from_urdf",   "obstacles",         "allowed_pairs",
       "self_collision",   "warning_distance",  "max_transform_age", "obstacle_timeout",
-      "max_obstacles",    "max_name_length",   "obstacle_store",   "robot_frame",
-      "prediction_horizon"};
+      "max_obstacles",    "max_name_length",   "obstacle_store",    "obstacle_store_period",
+      "robot_frame",      "prediction_horizon"};
   if (root.getType() == XmlRpcValue::TypeStruct) {
     for (auto it = root.begin(); it != root.end(); ++it) {
-      if (!known.count(it->first)) {
-        throw ConfigError("parameter ~" + it->first +
-                          ": unknown key (expected one of fixed_frame, rate, tf_timeout, padding, "
-                          "links, links_from_urdf, obstacles, allowed_pairs, self_collision, "
-                          "warning_distance, max_transform_age, obstacle_timeout, max_obstacles, "
-                          "max_name_length, obstacle_store, robot_frame, prediction_horizon)");
+      if (std::find(kKnownKeys.begin(), kKnownKeys.end(), it->first) == kKnownKeys.end()) {
+        throw ConfigError("parameter ~" + it->first + ": unknown key (expected one of " +
+                          app::joinText(kKnownKeys, ", ") + ")");
       }
     }
   }
@@ -319,6 +319,11 @@ NodeConfig parseNodeConfig(const XmlRpcValue& params, const UrdfLinkFitter& fit_
   }
   if (has("obstacle_store")) {
     config.obstacle_store = readString(root["obstacle_store"], "parameter ~obstacle_store", "obstacle_store");
+  }
+  if (has("obstacle_store_period")) {
+    config.obstacle_store_period_s =
+        readInRange(root["obstacle_store_period"], "parameter ~obstacle_store_period",
+                    "obstacle_store_period", 0.0, kMaxTfTimeoutS);
   }
   if (!has("links") && !has("links_from_urdf")) {
     throw ConfigError(

@@ -52,6 +52,28 @@ TEST(ObstacleStore, RoundTripIsExactEvenForNamesWithSpacesColonsAndNewlines) {
   EXPECT_EQ(back.topic_stamp_s, stored.topic_stamp_s);
 }
 
+TEST(ObstacleStore, NumbersAreWrittenShortestAndStoresWithSeventeenDigitsStillRead) {
+  StoredObstacles stored;
+  stored.service = {spec("a", "map", 0.1)};
+  const std::string text = serializeObstacles(stored);
+  EXPECT_NE(text.find(" 0.1 -0.3333333333333333 0.1 0.3 1e-09 0.05 0.25 -0.14285714285714285 3e-05\n"),
+            std::string::npos)
+      << text;
+  // The form written before (printf's %.17g) reads back to the very same doubles.
+  StoredObstacles back;
+  ASSERT_EQ(parseObstacles("ellipse_collision obstacle store 1\nsession 0:\n"
+                           "topic_stamp 1795404665.5862935\n"
+                           "service 1:a 3:map 0.10000000000000001 -0.33333333333333331 "
+                           "0.10000000000000001 0.29999999999999999 1.0000000000000001e-09 "
+                           "0.050000000000000003 0.25 -0.14285714285714285 3.0000000000000001e-05\n"
+                           "end\n",
+                           back),
+            "");
+  ASSERT_EQ(back.service.size(), 1u);
+  EXPECT_TRUE(same(back.service[0], stored.service[0]));
+  EXPECT_EQ(back.topic_stamp_s, 1795404665.5862935);
+}
+
 TEST(ObstacleStore, CorruptTextIsRefusedWithTheLine) {
   StoredObstacles out;
   out.session = "kept";

@@ -1,7 +1,8 @@
 // rostest client: runtime obstacles survive a crash (issue 12). The node is killed with SIGKILL
 // right after ~add_obstacles answers; roslaunch respawns it and it comes back with every obstacle it
 // had acknowledged (service and topic), topic obstacles still subject to obstacle_timeout (5 s
-// here), and without the ones it had removed.
+// here), and without the ones it had removed. Topic obstacles reach the store within
+// obstacle_store_period of their message, with no service call to carry them.
 #include <signal.h>
 
 #include <chrono>
@@ -82,6 +83,20 @@ TEST_F(Respawn, KilledNodeComesBackWithEveryAcknowledgedObstacle) {
   EXPECT_FALSE(isStored("last"));
   EXPECT_TRUE(isStored("spare"));
   EXPECT_TRUE(findPair(check().collisions, "body", "spare")) << "still the service's replacement";
+}
+
+TEST_F(Respawn, TopicObstaclesReachTheStoreWithinObstacleStorePeriod) {
+  // No service call after the message this time: only the store's background write (at most
+  // obstacle_store_period, 1 s by default, after the message) can bring the obstacle back.
+  ASSERT_TRUE(waitUntil(
+      [&] {
+        publishObstacles(obstacles_, "base_link", {ellipseMsg("boulder", "", 1.0, 0.3, 0.1, 0.3)});
+        return isStored("boulder");
+      },
+      10.0));
+  ros::WallDuration(1.5).sleep();
+  killAndWaitForRespawn();
+  EXPECT_TRUE(isStored("boulder")) << "written within the period, restored after the crash";
 }
 
 }  // namespace

@@ -9,4 +9,8 @@ namespace ellipse_collision::core {
 /// exactly what was given and can paste it back.
 std::string formatNumber(double value);
 
+/// formatNumber(value) appended to `out`, without a string of its own: for writers of many
+/// numbers (the obstacle store writes nine per obstacle).
+void appendNumber(std::string& out, double value);
+
 }  // namespace ellipse_collision::core

@@ -6,12 +6,14 @@
 
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "ellipse_collision/ros/collision_markers.h"
 #include "ellipse_collision/app/collision_check.h"
 #include "ellipse_collision/app/ellipse_registry.h"
+#include "ellipse_collision/app/obstacle_store_writer.h"
 #include "ellipse_collision/ros/messages.h"
 #include "ellipse_collision/ros/node_config.h"
 #include "ellipse_collision/core/scene_check.h"
@@ -26,6 +28,8 @@ class CollisionNode {
   /// Reads and validates the private parameters first; throws ConfigError on a bad configuration
   /// before it advertises anything.
   CollisionNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh);
+  /// Writes runtime obstacles not yet in ~obstacle_store before the node goes.
+  ~CollisionNode();
 
  private:
   /// The last full check (all stored ellipses, latest transforms), which the topics show.
@@ -56,7 +60,13 @@ class CollisionNode {
   /// the node starts without it.
   void restoreObstacles();
   /// Writes the runtime obstacles to ~obstacle_store (atomically, durable on return); "" or why not.
+  /// For the services, which answer success only once their change is durable.
   std::string persistObstacles();
+  /// For ~obstacles messages and expiry: the store is written in the background, at most once
+  /// per ~obstacle_store_period (0: after every message), so a perception stream never waits
+  /// for the disk.
+  void persistObstaclesLater();
+  void onStoreTimer(const ros::WallTimerEvent& event);
   void publishState(StatePublishing publishing);
   void publishMarkers();
 
@@ -97,6 +107,8 @@ class CollisionNode {
   ros::ServiceServer path_service_;
   ros::Timer check_timer_;
   ros::Timer diagnostics_timer_;
+  ros::WallTimer store_timer_;  ///< writes the store when ~obstacles changed it (wall time: a
+                                ///< paused simulation clock does not hold back durability)
 
   CollisionMarkers markers_;
   PublishedState state_;
@@ -110,7 +122,8 @@ class CollisionNode {
   std::uint64_t time_jumps_{0};
   std::string obstacle_store_;  ///< path of the store; "" = off
   std::string session_;         ///< /run_id of this launch
-  std::string last_store_error_;
+  std::unique_ptr<app::ObstacleStoreWriter> store_writer_;  ///< null when the store is off
+  bool store_behind_{false};  ///< runtime obstacles changed since the last snapshot was queued
 };
 
 }  // namespace ellipse_collision

@@ -28,8 +28,8 @@ class ConfigError : public std::runtime_error {
 /// resolution), and the global padding within the core's radius range.
 constexpr double kMinRateHz = 1e-3;        ///< rate is 0 or within [kMinRateHz, kMaxRateHz]
 constexpr double kMaxRateHz = 1e3;         ///< [Hz]
-constexpr double kMaxTfTimeoutS = 3600.0;  ///< tf_timeout, max_transform_age, obstacle_timeout
-                                           ///< within [0, kMaxTfTimeoutS] [s]
+constexpr double kMaxTfTimeoutS = 3600.0;  ///< tf_timeout, max_transform_age, obstacle_timeout,
+                                           ///< obstacle_store_period within [0, kMaxTfTimeoutS] [s]
 
 /// prediction_horizon within [0, kMaxPredictionHorizonS] [s]: a minute ahead is far beyond what
 /// constant velocities predict well, and keeps |angular_velocity| * horizon within the core's turn
@@ -55,6 +55,9 @@ struct NodeConfig {
   /// File that keeps the runtime obstacles across a crash; unset = defaultObstacleStore(),
   /// "" = off.
   std::optional<std::string> obstacle_store;
+  /// Longest wait before a change from ~obstacles (or its expiry) is written to the store [s];
+  /// 0 = after every message. The services' changes are written before they answer.
+  double obstacle_store_period_s{1.0};
   std::vector<app::EllipseSpec> links;  ///< `links` entries, then those of `links_from_urdf`
   /// Links of `links_from_urdf` that were skipped, and why ("base_footprint: no collision
   /// geometry"); the node logs them at start-up.
