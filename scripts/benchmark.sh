@@ -42,6 +42,9 @@ if ! bash "${repo}/scripts/build.sh" -DELLIPSE_COLLISION_BENCHMARKS=ON bench_pai
   cat "${out}/build.txt" >&2
   exit 1
 fi
+# The option stays in the workspace's CMake cache: switch it off again (the programs just built
+# stay), so that the next scripts/build.sh does not build every benchmark as well.
+cmake -DELLIPSE_COLLISION_BENCHMARKS=OFF "${repo}/build/ws/build" >> "${out}/build.txt" 2>&1
 bin="${repo}/build/ws/devel/lib/ellipse_collision"
 if "${smoke}"; then
   pair_args=(--pairs_per_mix=64 --benchmark_min_time=0.01)

@@ -169,6 +169,7 @@ DemoDriver::DemoDriver(const ros::NodeHandle& nh, const ros::NodeHandle& private
   pause_service_ = private_nh_.advertiseService("pause", &DemoDriver::onPause, this);
 
   started_ = ros::Time::now();
+  launched_ = started_;
   timer_ = nh_.createTimer(ros::Duration(1.0 / rate_hz), &DemoDriver::onTimer, this);
   ROS_INFO_STREAM("demo_driver: moving " << base_frame_ << " in " << odom_frame_ << ", "
                                          << trajectory_.joints.size() << " joints and obstacle '"
@@ -264,9 +265,16 @@ void DemoDriver::onPathCheckTimer(const ros::TimerEvent&) {
   contact.id = 0;
   contact.pose.orientation.w = 1.0;
   if (!check_path_.call(srv) || !srv.response.success) {
-    ROS_WARN_STREAM_THROTTLE(5.0, "demo_driver: ~check_path failed: " << srv.response.message);
+    // At start-up the collision node has not yet received the first odom transform this driver
+    // sends: not worth a warning in the user's terminal until it has had kStartUpS.
+    if (!path_check_succeeded_ && (ros::Time::now() - launched_).toSec() < kStartUpS) {
+      ROS_DEBUG_STREAM("demo_driver: ~check_path not ready yet: " << srv.response.message);
+    } else {
+      ROS_WARN_STREAM_THROTTLE(5.0, "demo_driver: ~check_path failed: " << srv.response.message);
+    }
     return;
   }
+  path_check_succeeded_ = true;
   if (srv.response.collision_free) {
     contact.action = visualization_msgs::Marker::DELETE;
   } else {
@@ -309,7 +317,12 @@ void DemoDriver::publishScan(const ros::Time& now, const Pose2D& base,
   try {
     mount = tf_buffer_.lookupTransform(base_frame_, scanner_frame_, ros::Time(0));
   } catch (const tf2::TransformException& error) {
-    ROS_WARN_STREAM_THROTTLE(5.0, "demo_driver: no scan yet: " << error.what());
+    // robot_state_publisher's static transforms take a moment to arrive after start-up.
+    if ((now - launched_).toSec() < kStartUpS) {
+      ROS_DEBUG_STREAM("demo_driver: no scan yet: " << error.what());
+    } else {
+      ROS_WARN_STREAM_THROTTLE(5.0, "demo_driver: no scan yet: " << error.what());
+    }
     return;
   }
   const double c = std::cos(base.yaw), s = std::sin(base.yaw);

@@ -71,6 +71,11 @@ class DemoDriver {
   ros::ServiceClient check_path_;
   ros::Timer path_check_timer_;
   nav_msgs::Path last_plan_;
+  /// The first seconds after launch, while the other nodes connect and the first transforms
+  /// arrive: a missing transform is logged at DEBUG, not WARN.
+  static constexpr double kStartUpS = 5.0;
+  ros::Time launched_;                ///< ROS time at which the driver started
+  bool path_check_succeeded_{false};  ///< ~check_path has answered successfully at least once
   double planned_horizon_s_{3.0};  ///< [s] of the loop ahead in each plan
   double planned_step_s_{0.1};     ///< [s] between its poses
 

@@ -1,6 +1,5 @@
 #include "ellipse_collision/ros/tf_lookup.h"
 
-#include <ros/console.h>
 #include <tf2/exceptions.h>
 #include <tf2_eigen/tf2_eigen.h>
 
@@ -22,8 +21,8 @@ bool lookupTransformSafe(const tf2_ros::Buffer& buffer, const std::string& targe
     if (stamp) *stamp = found.header.stamp;
     return true;
   } catch (const tf2::TransformException& exception) {
-    ROS_WARN_STREAM_THROTTLE(5.0, "No transform from '" << source_frame << "' to '" << target_frame
-                                                        << "': " << exception.what());
+    // Not logged here: the caller reports it once, with what it costs (the skipped ellipses'
+    // warning, the service's answer, /diagnostics).
     if (error) *error = exception.what();
     return false;
   }

@@ -12,7 +12,7 @@
 namespace ellipse_collision {
 
 /// The node's one way to ask tf for a pose. Fills `target_from_source` and returns true, or returns
-/// false with the reason in `error` (if given) and a throttled warning. A frame is its own identity
+/// false with the reason in `error` (if given), which the caller reports. A frame is its own identity
 /// transform even before tf has heard of it, so ellipses given in the fixed frame need no tf.
 /// `time` zero means the latest transform; `timeout` is how long to wait for it. `stamp` (if
 /// given) receives the transform's stamp: the latest common time of the chain, 0 for a chain of
