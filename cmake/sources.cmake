@@ -29,6 +29,7 @@ set(ELLIPSE_COLLISION_CORE_SOURCES
   src/core/unique_names.cpp)
 
 set(ELLIPSE_COLLISION_APP_SOURCES
+  src/app/check_health.cpp
   src/app/collision_check.cpp
   src/app/contact_prediction.cpp
   src/app/ellipse_registry.cpp

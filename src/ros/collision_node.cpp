@@ -8,6 +8,7 @@
 #include <set>
 #include <sstream>
 
+#include "ellipse_collision/app/check_health.h"
 #include "ellipse_collision/app/obstacle_store.h"
 #include "ellipse_collision/core/number_format.h"
 #include "ellipse_collision/ros/conversions.h"
@@ -30,9 +31,6 @@ app::CheckSettings makeSettings(const NodeConfig& config) {
 
 /// Marker arrays queued per ~markers subscriber: some seconds of checks at any useful rate.
 constexpr std::uint32_t kMarkerQueue = 100;
-
-/// A frame unavailable or stale for longer than this [s] makes /diagnostics ERROR.
-constexpr double kMaxMissingS = 1.0;
 
 diagnostic_msgs::KeyValue keyValue(const std::string& key, const std::string& value) {
   diagnostic_msgs::KeyValue kv;
@@ -437,50 +435,22 @@ void CollisionNode::onDiagnosticsTimer(const ros::TimerEvent& /*event*/) {
   diagnostic_msgs::DiagnosticStatus status;
   status.name = ros::this_node::getName() + ": collision check";
   status.hardware_id = config_.fixed_frame;
-  std::vector<std::string> problems;
-  if (!state_.valid) problems.push_back("no check yet");
-  if (!state_.outcome.unavailable_frames.empty()) {
-    problems.push_back("frames unavailable: " + app::joinText(state_.outcome.unavailable_frames, ", "));
-  }
-  if (!state_.outcome.stale_frames.empty()) {
-    problems.push_back("frames stale: " + app::joinText(state_.outcome.stale_frames, ", "));
-  }
-  if (!state_.outcome.skipped.empty()) {
-    problems.push_back("skipped: " + app::joinText(state_.outcome.skipped, "; "));
-  }
-  // Seconds each missing frame has been unavailable or stale; over 1 s is an error.
+  app::CheckHealthInputs inputs;
+  inputs.checked = state_.valid;
+  inputs.outcome = &state_.outcome;
+  inputs.check_failure = state_.failure;
   const ros::Time now = ros::Time::now();
-  std::vector<std::string> missing_for;
-  bool missing_too_long = false;
   for (const auto& [frame, since] : missing_since_) {
-    const double seconds = std::max(0.0, (now - since).toSec());
-    missing_too_long = missing_too_long || seconds > kMaxMissingS;
-    missing_for.push_back(frame + ": " + core::formatNumber(std::round(seconds * 10.0) / 10.0));
+    inputs.missing_for_s.emplace_back(frame, (now - since).toSec());
   }
-  if (missing_too_long) {
-    problems.push_back("a frame has been unavailable or stale for more than " +
-                       core::formatNumber(kMaxMissingS) + " s");
-  }
-  if (!last_obstacles_error_.empty()) {
-    problems.push_back("last ~obstacles message refused: " + last_obstacles_error_);
-  }
-  if (!state_.failure.empty()) problems.push_back("last check failed: " + state_.failure);
-  const std::string store_error = store_writer_ ? store_writer_->lastError() : std::string();
-  if (!store_error.empty()) problems.push_back("obstacle store: " + store_error);
-  const bool only_waiting = !state_.valid && problems.size() == 1;
-  status.level = !state_.failure.empty() || missing_too_long
-                     ? diagnostic_msgs::DiagnosticStatus::ERROR
-                 : problems.empty() || only_waiting ? diagnostic_msgs::DiagnosticStatus::OK
-                                                    : diagnostic_msgs::DiagnosticStatus::WARN;
-  status.message = !problems.empty()                    ? app::joinText(problems, "; ")
-                   : !state_.outcome.collisions.empty() ? "in collision"
-                   : !state_.outcome.predicted.empty()
-                       ? "contact predicted in " +
-                             core::formatNumber(state_.outcome.predicted.front().time) + " s (" +
-                             state_.outcome.predicted.front().name_a + " / " +
-                             state_.outcome.predicted.front().name_b + ")"
-                   : !state_.outcome.warnings.empty() ? "closer than the warning distance"
-                                                      : "clear";
+  inputs.obstacles_error = last_obstacles_error_;
+  if (store_writer_) inputs.store_error = store_writer_->lastError();
+  const app::CheckHealth health = app::assessCheckHealth(inputs);
+  status.level = health.level == app::CheckHealth::Level::Error ? diagnostic_msgs::DiagnosticStatus::ERROR
+                 : health.level == app::CheckHealth::Level::Warn
+                     ? diagnostic_msgs::DiagnosticStatus::WARN
+                     : diagnostic_msgs::DiagnosticStatus::OK;
+  status.message = health.message;
 
   status.values.push_back(
       keyValue("links", std::to_string(registry_.count(app::EllipseSource::ConfiguredLink))));
@@ -500,7 +470,7 @@ void CollisionNode::onDiagnosticsTimer(const ros::TimerEvent& /*event*/) {
       keyValue("last check duration [ms]", core::formatNumber(1e3 * state_.duration_s)));
   status.values.push_back(keyValue("complete", state_.valid && state_.outcome.complete ? "true" : "false"));
   status.values.push_back(keyValue("stale frames", app::joinText(state_.outcome.stale_frames, ", ")));
-  status.values.push_back(keyValue("missing for [s]", app::joinText(missing_for, ", ")));
+  status.values.push_back(keyValue("missing for [s]", app::joinText(health.missing_for, ", ")));
   status.values.push_back(
       keyValue("dropped obstacles (obstacle_timeout)", std::to_string(dropped_obstacles_)));
   status.values.push_back(keyValue("time jumps back", std::to_string(time_jumps_)));
