@@ -75,6 +75,22 @@ TEST(EllipsePolygon, VerticesLieOnTheRimCounterClockwiseFromTheEllipsesOwnXAxis)
   }
 }
 
+TEST(EllipsePolygon, EveryCountGivesTheSameBitsAsEvaluatingTheRimDirectly) {
+  // The counts the markers use come from tables computed once; any other count is evaluated.
+  const Ellipse e = makeEllipse(-1.5, 4.25, 0.31, 0.07, -2.2);
+  const double c = std::cos(e.angle), s = std::sin(e.angle);
+  for (const int n : {3, 4, 16, 37, 50, 64, 65, 200}) {
+    const std::vector<Eigen::Vector2d> polygon = ellipsePolygon(e, n);
+    ASSERT_EQ(polygon.size(), static_cast<std::size_t>(n));
+    for (int i = 0; i < n; ++i) {
+      const double t = 2.0 * M_PI * i / n;
+      const double x = e.radius_x * std::cos(t), y = e.radius_y * std::sin(t);
+      ASSERT_EQ(polygon[i].x(), e.center.x() + c * x - s * y) << "n = " << n << ", i = " << i;
+      ASSERT_EQ(polygon[i].y(), e.center.y() + s * x + c * y) << "n = " << n << ", i = " << i;
+    }
+  }
+}
+
 TEST(EllipsePolygon, SegmentCountIsTheSmallestWithinTheGapBetweenItsBounds) {
   // Circles: the closed form n = ceil(pi / acos(1 - gap / r)), clamped to [16, 64].
   for (const double r : {0.01, 0.1, 0.2, 0.5, 1.0, 1.5, 3.0, 100.0}) {
