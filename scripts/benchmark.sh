@@ -167,3 +167,9 @@ if "${smoke}"; then
 else
   bash "${repo}/scripts/node_load.sh"
 fi
+echo "The same 1,000 obstacles streamed on ~obstacles at 30 Hz, the obstacle store on as by default:"
+if "${smoke}"; then
+  bash "${repo}/scripts/node_load.sh" --smoke --stream 30 --store
+else
+  bash "${repo}/scripts/node_load.sh" --runs "1000@30" --stream 30 --store
+fi
