@@ -53,6 +53,7 @@ ellipse_collision_add_fuzzer(fuzz_pair_line_parser "${_fuzz_root}/fuzz/fuzz_pair
 ellipse_collision_add_fuzzer(fuzz_core_pair "${_fuzz_root}/fuzz/fuzz_core_pair.cpp")
 ellipse_collision_add_fuzzer(fuzz_scene "${_fuzz_root}/fuzz/fuzz_scene.cpp")
 ellipse_collision_add_fuzzer(fuzz_first_contact "${_fuzz_root}/fuzz/fuzz_first_contact.cpp")
+ellipse_collision_add_fuzzer(fuzz_obstacle_store "${_fuzz_root}/fuzz/fuzz_obstacle_store.cpp")
 
 # ---------------------------------------------------------------- ROS layer: messages, parameters
 find_package(roscpp QUIET)

@@ -306,6 +306,31 @@ def scene_seeds():
     }
 
 
+# ------------------------------------------------------------------------ fuzz_obstacle_store
+def store_seeds():
+    header = "ellipse_collision obstacle store 1\n"
+    session = "session 36:8504ad16-e750-11f1-8eb7-02fc00000001\n"
+    return {
+        "good": (header + session + "topic_stamp 1795446863.200178\n"
+                 "service 3:box 9:base_link 0.1 -0.3333333333333333 0.1 0.3 1e-09 0.05 0.25 "
+                 "-0.14285714285714285 3e-05\n"
+                 "topic 10:obstacle_0 3:map -6.923861254296241 -0.9759667199353004 "
+                 "-0.521537504916425 0.16168981344598082 0.032285471898496884 0 0 0 0\n"
+                 "end\n").encode(),
+        "seventeen-digits": (header + "session 0:\ntopic_stamp 0\n"
+                             "service 1:a 3:map 0.10000000000000001 -0.33333333333333331 "
+                             "0.10000000000000001 0.29999999999999999 1.0000000000000001e-09 "
+                             "0.050000000000000003 0.25 -0.14285714285714285 "
+                             "3.0000000000000001e-05\nend\n").encode(),
+        "no-velocities": (header + "service 1:a 3:map 1 2 0 0.5 0.5 0\nend\n").encode(),
+        "name-with-newline": (header + "service 11:line\nbreak\n 4:odom 1e300 2 0 0.5 0.5 0 0 0 0"
+                              "\nend\n").encode(),
+        "truncated": (header + session + "topic 10:obstacle_0 3:map -6.9").encode(),
+        "nan-inf": (header + "topic 1:n 3:map nan inf -inf 0.5 0.5 0 0 0 0\nend\n").encode(),
+        "empty": b"",
+    }
+
+
 # ------------------------------------------------------------------------ fuzz_pair_line_parser
 def parser_seeds():
     lines = {
@@ -622,6 +647,7 @@ def main(argv):
     write(os.path.join(out, "fuzz_core_pair"), core_pair_seeds())
     write(os.path.join(out, "fuzz_scene"), scene_seeds())
     write(os.path.join(out, "fuzz_pair_line_parser"), parser_seeds())
+    write(os.path.join(out, "fuzz_obstacle_store"), store_seeds())
     fixed = open_findings()
     write(os.path.join(out, "fuzz_ros_request"), {**request_seeds(), **fixed["fuzz_ros_request"]})
     write(os.path.join(out, "fuzz_node_config"), {**config_seeds(), **fixed["fuzz_node_config"]})

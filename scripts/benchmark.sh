@@ -167,7 +167,7 @@ if "${smoke}"; then
 else
   bash "${repo}/scripts/node_load.sh"
 fi
-echo "The same 1,000 obstacles streamed on ~obstacles at 30 Hz, the obstacle store on as by default:"
+echo "Obstacles streamed on ~obstacles at 30 Hz (1,000; 200 with --smoke), the obstacle store on as by default:"
 if "${smoke}"; then
   bash "${repo}/scripts/node_load.sh" --smoke --stream 30 --store
 else
