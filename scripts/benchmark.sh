@@ -35,7 +35,9 @@ done
 out="${repo}/build/benchmark"
 mkdir -p "${out}"
 echo "Building the benchmarks (log: build/benchmark/build.txt)"
-if ! bash "${repo}/scripts/build.sh" -DELLIPSE_COLLISION_BENCHMARKS=ON bench_pair_tests \
+# --force-cmake: catkin_make runs CMake only when its arguments change, and the option is switched
+# off again below, behind its back.
+if ! bash "${repo}/scripts/build.sh" --force-cmake -DELLIPSE_COLLISION_BENCHMARKS=ON bench_pair_tests \
     bench_scene_check bench_distance bench_first_contact bench_scan_obstacles \
     bench_service_roundtrip bench_check_path bench_run_check ellipse_collision_node \
     > "${out}/build.txt" 2>&1; then
