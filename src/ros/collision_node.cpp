@@ -131,15 +131,17 @@ void CollisionNode::restoreObstacles() {
                   << " topic obstacle(s) from '" << obstacle_store_ << "'");
 }
 
-std::string CollisionNode::persistObstacles() {
-  if (!store_writer_) return {};
+app::StoredObstacles CollisionNode::takeStoreSnapshot() {
   app::StoredObstacles stored = registry_.runtimeObstacles();
   stored.session = session_;
   store_behind_ = false;
-  const std::string error = store_writer_->writeNow(std::move(stored));
-  if (!error.empty()) {
-    ROS_ERROR_STREAM_THROTTLE(5.0, "ellipse_collision: cannot persist the runtime obstacles: " << error);
-  }
+  return stored;
+}
+
+std::string CollisionNode::persistObstacles() {
+  if (!store_writer_) return {};
+  const std::string error = store_writer_->writeNow(takeStoreSnapshot());
+  logStoreError(error);
   return error;
 }
 
@@ -151,25 +153,19 @@ void CollisionNode::persistObstaclesLater() {
 
 void CollisionNode::onStoreTimer(const ros::WallTimerEvent& /*event*/) {
   if (!store_writer_) return;
-  const std::string error = store_writer_->lastError();
-  if (!error.empty()) {
-    ROS_ERROR_STREAM_THROTTLE(5.0, "ellipse_collision: cannot persist the runtime obstacles: " << error);
-  }
-  if (!store_behind_) return;
+  logStoreError(store_writer_->lastError());
   // One snapshot per period however many messages came: the copy is taken here, the text and
   // the disk are the writer thread's.
-  app::StoredObstacles stored = registry_.runtimeObstacles();
-  stored.session = session_;
-  store_behind_ = false;
-  store_writer_->writeLater(std::move(stored));
+  if (store_behind_) store_writer_->writeLater(takeStoreSnapshot());
+}
+
+void CollisionNode::logStoreError(const std::string& error) const {
+  if (error.empty()) return;
+  ROS_ERROR_STREAM_THROTTLE(5.0, "ellipse_collision: cannot persist the runtime obstacles: " << error);
 }
 
 CollisionNode::~CollisionNode() {
-  if (store_writer_ && store_behind_) {
-    app::StoredObstacles stored = registry_.runtimeObstacles();
-    stored.session = session_;
-    store_writer_->writeLater(std::move(stored));
-  }
+  if (store_writer_ && store_behind_) store_writer_->writeLater(takeStoreSnapshot());
   // store_writer_'s destructor writes what is queued before the node's members go.
 }
 

@@ -67,6 +67,9 @@ class CollisionNode {
   /// for the disk.
   void persistObstaclesLater();
   void onStoreTimer(const ros::WallTimerEvent& event);
+  /// The runtime obstacles as the store keeps them; clears store_behind_.
+  app::StoredObstacles takeStoreSnapshot();
+  void logStoreError(const std::string& error) const;
   void publishState(StatePublishing publishing);
   void publishMarkers();
 
