@@ -10,7 +10,7 @@ namespace ellipse_collision::app {
 CheckHealth assessCheckHealth(const CheckHealthInputs& inputs) {
   CheckHealth health;
   std::vector<std::string> problems;
-  const CheckOutcome* outcome = inputs.checked ? inputs.outcome : nullptr;
+  const CheckOutcome* outcome = inputs.outcome;
   if (!outcome) problems.push_back("no check yet");
   if (outcome && !outcome->unavailable_frames.empty()) {
     problems.push_back("frames unavailable: " + joinText(outcome->unavailable_frames, ", "));

@@ -432,8 +432,7 @@ void CollisionNode::onDiagnosticsTimer(const ros::TimerEvent& /*event*/) {
   status.name = ros::this_node::getName() + ": collision check";
   status.hardware_id = config_.fixed_frame;
   app::CheckHealthInputs inputs;
-  inputs.checked = state_.valid;
-  inputs.outcome = &state_.outcome;
+  inputs.outcome = state_.valid ? &state_.outcome : nullptr;
   inputs.check_failure = state_.failure;
   const ros::Time now = ros::Time::now();
   for (const auto& [frame, since] : missing_since_) {

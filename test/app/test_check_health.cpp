@@ -10,7 +10,6 @@ namespace {
 using Level = CheckHealth::Level;
 
 CheckHealth afterCheck(const CheckOutcome& outcome, CheckHealthInputs inputs = {}) {
-  inputs.checked = true;
   inputs.outcome = &outcome;
   return assessCheckHealth(inputs);
 }

@@ -14,9 +14,8 @@ inline constexpr double kMaxMissingS = 1.0;
 
 /// What the node knows about its checks at one moment, for its health report.
 struct CheckHealthInputs {
-  bool checked{false};                ///< a full check has succeeded (outcome is its answer)
   const CheckOutcome* outcome{nullptr};  ///< the last successful full check; null before one
-  std::string check_failure;          ///< why the latest full check failed ("" when it did not)
+  std::string check_failure;             ///< why the latest full check failed ("" if it did not)
   /// Each frame missing (unavailable or stale) at the last check, and for how long [s].
   std::vector<std::pair<std::string, double>> missing_for_s;
   std::string obstacles_error;  ///< why the last ~obstacles message was refused ("" = accepted)
