@@ -1,9 +1,18 @@
 #include "relative_shape.h"
 
+#include <algorithm>
 #include <cmath>
 #include <tuple>
 
 namespace ellipse_collision::core::detail {
+namespace {
+
+// The eigenvector's squared length is formed directly between these (far from underflow and
+// overflow), and after an exact rescaling outside them.
+constexpr double kSmallestSafeNormSq = 0x1p-900;
+constexpr double kLargestSafeNormSq = 0x1p900;
+
+}  // namespace
 
 PrincipalShape principalShape(const RelativeShape& shape) {
   const double m00 = shape.p_x * shape.p_x + shape.q_x * shape.q_x;
@@ -24,10 +33,20 @@ PrincipalShape principalShape(const RelativeShape& shape) {
   double ex = half_difference >= 0.0 ? half_difference + root : m01;
   double ey = half_difference >= 0.0 ? m01 : root - half_difference;
   double norm_sq = ex * ex + ey * ey;
-  if (!(norm_sq > 0.0)) {  // M is a multiple of the identity: any basis diagonalises it
-    ex = 1.0;
-    ey = 0.0;
-    norm_sq = 1.0;
+  if (!(norm_sq >= kSmallestSafeNormSq && norm_sq <= kLargestSafeNormSq)) {
+    // Tiny (M = I up to an off-diagonal 1e-158: a subnormal square kept 1e-9 of the offsets,
+    // fuzzer finding) or huge: scaled by a power of two, exactly, before squaring.
+    const double larger = std::max(std::abs(ex), std::abs(ey));
+    if (larger > 0.0 && std::isfinite(larger)) {
+      const int exponent = std::ilogb(larger);
+      ex = std::ldexp(ex, -exponent);
+      ey = std::ldexp(ey, -exponent);
+      norm_sq = ex * ex + ey * ey;
+    } else {  // M is a multiple of the identity: any basis diagonalises it
+      ex = 1.0;
+      ey = 0.0;
+      norm_sq = 1.0;
+    }
   }
   const double inverse_norm = 1.0 / std::sqrt(norm_sq);
   principal.offset[0] = std::abs(ex * shape.center_x + ey * shape.center_y) * inverse_norm;

@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "contact_scale_oracle.h"
 #include "ellipse_collision/core/eigenvalue_test.h"
 #include "ellipse_collision/core/overlap.h"
 
@@ -70,6 +71,22 @@ TEST(EigenvalueOverlap, CirclesJustApartAreSeparateAndJustCloserOverlap) {
   EXPECT_TRUE(eigenvalueOverlap(a, makeCircle(2.0 * (1 - 1e-6), 0, 1)));
   EXPECT_FALSE(eigenvalueOverlap(a, makeCircle(0, 3.1, 2)));
   EXPECT_TRUE(eigenvalueOverlap(a, makeCircle(0, 2.9, 2)));
+}
+
+// Fuzzer finding: equal shapes turned by 1.7e-158 and -1e-300 make M the identity up to an
+// off-diagonal 1.6e-158, whose eigenvector's squared length was subnormal: the offsets along it
+// came out 2.3e-9 (relative) off, enough to flip the decision of eigenvalueOverlap() and of
+// overlap() this close to tangency.
+TEST(EigenvalueOverlap, NearlyEqualShapesWithTinyAnglesKeepTheirOffsets) {
+  const Ellipse a = makeEllipse(4, 68, 1, 1.5707963267948966, 1.7325062590226989e-158);
+  const Ellipse b = makeEllipse(1e-9, 1e9, 1, 1.5707963267948966, -1e-300);
+  for (const double target : {1.0 - 1e-10, 1.0 + 1e-10, 2.0, 1e8}) {
+    const Ellipse placed = test::placeAtContactScale(a, b, target);
+    const test::OracleContactScale truth = test::oracleContactScale(a, placed);
+    EXPECT_EQ(eigenvalueOverlap(a, placed), truth.value <= 1.0) << target;
+    EXPECT_EQ(overlap(a, placed), truth.value <= 1.0) << target;
+    EXPECT_NEAR(contactScale(a, placed) / truth.value, 1.0, 1e-14) << target;
+  }
 }
 
 // ------------------------------------------------------------------ ellipses touching
