@@ -7,10 +7,11 @@
 //
 // contact_scale/*: contactScale() on the colliding pairs of a robot scene (50 links, 100,000
 // obstacles in 50 m x 50 m, the links among themselves too), every one of which a scene check must
-// give a contact scale; plain and prepared, and the principal axes alone, so that the maximisation
-// of Q is the difference, with its mean Newton iterations as a counter. The core is a shared
-// library: the same binary with LD_LIBRARY_PATH at another build of it compares two versions on
-// the same pairs.
+// give a contact scale: one pair at a time (plain and prepared), all of them side by side as a scene
+// check solves them (batch), and the certified maximisation of Q alone (what a pair whose quartic
+// is not done in time takes), with the mean Halley steps and the fallbacks as counters. The core
+// is a shared library: the same binary with LD_LIBRARY_PATH at another build of it compares two
+// versions on the same pairs.
 //
 // Extra flag: --pairs_per_mix=N (default 2000). The oracle takes about 1 ms per pair.
 
@@ -24,6 +25,7 @@
 #include <vector>
 
 #include "bench_scenes.h"
+#include "contact_scale_quartic.h"
 #include "eigenvalue_test_detail.h"
 #include "ellipse_collision/core/eigenvalue_test.h"
 #include "ellipse_collision/core/overlap.h"
@@ -133,12 +135,14 @@ void registerMix(MixData* data) {
   }
 }
 
-/// The pairs of robotScene(50, 100000, 50, 7) that overlap() reports, and the mean Newton
-/// iterations of the fully converged maximisation of Q behind their contact scales.
+/// The pairs of robotScene(50, 100000, 50, 7) that overlap() reports, the mean Halley steps of
+/// their contact scales' quartic (contact_scale_quartic.h) and how many of them take the
+/// certified maximisation of Q instead.
 struct CollidingPairs {
   std::vector<std::pair<Ellipse, Ellipse>> plain;
   std::vector<std::pair<PreparedEllipse, PreparedEllipse>> prepared;
-  double mean_iterations{0.0};
+  double mean_steps{0.0};
+  int fallbacks{0};
 };
 
 /// Built on first use, so that runs filtered to other benchmarks do not pay for the scene.
@@ -155,16 +159,31 @@ const CollidingPairs& collidingPairs() {
       for (const Ellipse& obstacle : scene.obstacles) keep(scene.links[i], obstacle);
       for (std::size_t j = i + 1; j < scene.links.size(); ++j) keep(scene.links[i], scene.links[j]);
     }
-    long iterations = 0;
+    long steps = 0;
     for (const auto& [a, b] : result.plain) {
-      const detail::QFunction q = detail::QFunction::fromPrincipal(
-          detail::principalShape(detail::canonicalRelativeShape(a, b)));
-      iterations += detail::maximizeQ(q, detail::kNoDecision).iterations;
+      detail::ScaleProblem problem = detail::scaleProblem(detail::canonicalRelativeShape(a, b));
+      double scale = 0.0;
+      int taken = 1;
+      while (taken <= detail::kMaxQuarticSteps && !problem.fallback &&
+             !detail::stepContactScale(problem, &scale)) {
+        ++taken;
+      }
+      steps += taken;
+      result.fallbacks += problem.fallback || taken > detail::kMaxQuarticSteps ? 1 : 0;
     }
-    result.mean_iterations = static_cast<double>(iterations) / result.plain.size();
+    result.mean_steps = static_cast<double>(steps) / result.plain.size();
     return result;
   }();
   return pairs;
+}
+
+void addContactScaleCounters(benchmark::State& state, std::size_t pairs) {
+  using benchmark::Counter;
+  state.counters["sec_per_pair"] = Counter(static_cast<double>(pairs),
+                                           Counter::kIsIterationInvariantRate | Counter::kInvert);
+  state.counters["pairs"] = static_cast<double>(pairs);
+  state.counters["quartic_steps"] = collidingPairs().mean_steps;
+  state.counters["fallbacks"] = collidingPairs().fallbacks;
 }
 
 /// Registers "contact_scale/<name>": `measure(a, b)` summed over all the colliding pairs.
@@ -178,11 +197,7 @@ void registerContactScale(const std::string& name, const Pairs& (*pairs_of)(), M
       for (const auto& [a, b] : pairs) sum += measure(a, b);
       benchmark::DoNotOptimize(sum);
     }
-    using benchmark::Counter;
-    state.counters["sec_per_pair"] = Counter(static_cast<double>(pairs.size()),
-                                             Counter::kIsIterationInvariantRate | Counter::kInvert);
-    state.counters["pairs"] = static_cast<double>(pairs.size());
-    state.counters["newton_iterations"] = collidingPairs().mean_iterations;
+    addContactScaleCounters(state, pairs.size());
   });
 }
 
@@ -200,11 +215,26 @@ void registerContactScales() {
                        [](const PreparedEllipse& a, const PreparedEllipse& b) {
                          return contactScale(a, b);
                        });
-  registerContactScale("principal_shape_alone", &preparedCollidingPairs,
+  registerContactScale("certified_alone", &preparedCollidingPairs,
                        [](const PreparedEllipse& a, const PreparedEllipse& b) {
-                         return detail::principalShape(detail::canonicalRelativeShape(a, b))
-                             .lambda[0];
+                         return detail::contactScalePrincipal(
+                             detail::principalShape(detail::canonicalRelativeShape(a, b)));
                        });
+  // As a scene check solves them: every pair's quartic side by side (solveContactScales()).
+  benchmark::RegisterBenchmark("contact_scale/batch", [](benchmark::State& state) {
+    const auto& pairs = preparedCollidingPairs();
+    std::vector<detail::ScaleProblem> problems(pairs.size());
+    std::vector<double> scales(pairs.size());
+    for (auto _ : state) {
+      for (std::size_t i = 0; i < pairs.size(); ++i) {
+        problems[i] = detail::scaleProblem(
+            detail::canonicalRelativeShape(pairs[i].first, pairs[i].second));
+      }
+      detail::solveContactScales(problems.data(), problems.size(), scales.data());
+      benchmark::DoNotOptimize(scales.data());
+    }
+    addContactScaleCounters(state, pairs.size());
+  });
 }
 
 /// Removes --pairs_per_mix=N from argv (Google Benchmark rejects unknown flags) and returns N.

@@ -125,14 +125,15 @@ def contact_scale_table(runs):
     if not rows:
         return
     print("contactScale() on the colliding pairs of a robot scene (50 links, 100,000 obstacles)")
-    header = f"{'variant':<24} {'ns/pair':>9} {'pairs':>7} {'iterations':>11}"
+    header = f"{'variant':<24} {'ns/pair':>9} {'pairs':>7} {'steps':>7} {'fallbacks':>10}"
     print(header)
     print("-" * len(header))
     for name, entry in sorted(rows.items()):
         ns = entry["sec_per_pair"] * 1e9
         pairs = int(entry.get("pairs", 0))
-        iterations = entry.get("newton_iterations", 0.0)
-        print(f"{name:<24} {ns:>9.1f} {pairs:>7} {iterations:>11.2f}")
+        steps = entry.get("quartic_steps", 0.0)
+        fallbacks = int(entry.get("fallbacks", 0))
+        print(f"{name:<24} {ns:>9.1f} {pairs:>7} {steps:>7.2f} {fallbacks:>10}")
 
 
 def main():

@@ -51,6 +51,8 @@ endfunction()
 
 ellipse_collision_add_fuzzer(fuzz_pair_line_parser "${_fuzz_root}/fuzz/fuzz_pair_line_parser.cpp")
 ellipse_collision_add_fuzzer(fuzz_core_pair "${_fuzz_root}/fuzz/fuzz_core_pair.cpp")
+# It compares contactScale() with the certified maximisation behind it (src/core's detail headers).
+target_include_directories(fuzz_core_pair PRIVATE "${_fuzz_root}/src/core")
 ellipse_collision_add_fuzzer(fuzz_scene "${_fuzz_root}/fuzz/fuzz_scene.cpp")
 ellipse_collision_add_fuzzer(fuzz_first_contact "${_fuzz_root}/fuzz/fuzz_first_contact.cpp")
 ellipse_collision_add_fuzzer(fuzz_obstacle_store "${_fuzz_root}/fuzz/fuzz_obstacle_store.cpp")

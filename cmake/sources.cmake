@@ -4,6 +4,7 @@
 set(ELLIPSE_COLLISION_CORE_SOURCES
   src/core/broadphase.cpp
   src/core/contact_prediction.cpp
+  src/core/contact_scale_quartic.cpp
   src/core/distance.cpp
   src/core/ellipse_polygon.cpp
   src/core/eigenvalue_test.cpp

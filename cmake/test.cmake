@@ -20,6 +20,7 @@ endfunction()
 ellipse_collision_add_gtest(test_core LIBRARIES ellipse_collision_core quadmath SOURCES
   test/core/test_ellipse.cpp
   test/core/test_eigenvalue_test.cpp
+  test/core/test_contact_scale_quartic.cpp
   test/core/test_polygonal_test.cpp
   test/core/test_overlap_accuracy.cpp
   test/core/test_early_outs.cpp

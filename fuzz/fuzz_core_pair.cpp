@@ -8,12 +8,14 @@
 //    input (ellipse.h), so only valid pairs reach them; there NaN cannot arise, and subnormal
 //    centres, 1e300 or DBL_MAX angles and the range edges still do;
 //  - every stage is exactly symmetric in (a, b): same bits, not just close;
-//  - contactScale is finite and >= 0, and overlap iff contactScale <= 1 outside a tiny band
+//  - contactScale is finite and >= 0, within 1e-12 of the certified maximisation of Q behind its
+//    quartic (axis ratios to 1e9), and overlap iff contactScale <= 1 outside a tiny band
 //    around 1 (see kTangencyBand); each stage's certified answer agrees with it;
 //  - halving both radii doubles the contact scale (t* is homogeneous), so overlap of the halved
 //    pair implies overlap of the original;
 //  - distance() reports separation exactly when overlap() does not.
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -22,7 +24,9 @@
 #include "ellipse_collision/core/distance.h"
 #include "ellipse_collision/ellipse_collision.h"
 #include "ellipse_collision/core/scene_check.h"
+#include "eigenvalue_test_detail.h"
 #include "fuzz_input.h"
+#include "relative_shape.h"
 
 namespace ellipse_collision::fuzz {
 namespace {
@@ -31,6 +35,15 @@ namespace {
 // claimed accurate to 1e-9 (test_overlap_accuracy.cpp): within that band of exact tangency the
 // two may legitimately disagree by rounding, so the comparison is only made outside it.
 constexpr double kTangencyBand = 1e-9;
+
+// contactScale() against the certified maximisation of Q (see checkValidPair()).
+constexpr double kQuarticAgreement = 1e-12;
+constexpr double kConditionedAxisRatio = 1e9;
+constexpr double kUnderflowScale = 1e-290;
+
+double axisRatio(const core::Ellipse& e) {
+  return std::max(e.radius_x, e.radius_y) / std::min(e.radius_x, e.radius_y);
+}
 
 bool sameBits(double x, double y) { return std::memcmp(&x, &y, sizeof x) == 0; }
 
@@ -66,6 +79,20 @@ void checkValidPair(const core::Ellipse& a, const core::Ellipse& b, int polygona
   FUZZ_REQUIRE(sameBits(t, core::contactScale(b, a)), "contactScale not symmetric: " + pairText(a, b));
   FUZZ_REQUIRE(std::isfinite(t) && t >= 0.0,
                "contactScale = " + text(t) + " is not finite and >= 0: " + pairText(a, b));
+  // contactScale() solves a quartic and falls back to the certified maximisation of Q only when
+  // that is not done in time: the two must agree within what firstContact() allows for its
+  // rounding (kScaleRounding, 2.5e-12). Beyond kConditionedAxisRatio the relative frame both
+  // are built on cancels digits (a needle along the offset: both 1e-8 off the quad oracle).
+  if (axisRatio(a) <= kConditionedAxisRatio && axisRatio(b) <= kConditionedAxisRatio) {
+    const double certified = core::detail::contactScalePrincipal(
+        core::detail::principalShape(core::detail::canonicalRelativeShape(a, b)));
+    // Subnormal centre offsets: the certified path's products underflow to t* = 0 (the quartic
+    // keeps ~1e-309); both mean "coincident" to every decision.
+    FUZZ_REQUIRE(std::fabs(t - certified) <= kQuarticAgreement * certified ||
+                     std::max(t, certified) < kUnderflowScale,
+                 "contactScale = " + text(t) + " but the certified maximisation gives " +
+                     text(certified) + ": " + pairText(a, b));
+  }
   const bool clearly_overlapping = t < 1.0 - kTangencyBand;
   const bool clearly_separate = t > 1.0 + kTangencyBand;
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "contact_scale_quartic.h"
 #include "eigenvalue_test_detail.h"
 #include "ellipse_collision/core/prepared_ellipse.h"
 #include "relative_shape.h"
@@ -188,13 +189,11 @@ bool eigenvalueOverlap(const Ellipse& a, const Ellipse& b) {
 }
 
 double contactScale(const Ellipse& a, const Ellipse& b) {
-  return detail::contactScalePrincipal(
-      detail::principalShape(detail::canonicalRelativeShape(a, b)));
+  return detail::solveContactScale(detail::canonicalRelativeShape(a, b));
 }
 
 double contactScale(const PreparedEllipse& a, const PreparedEllipse& b) {
-  return detail::contactScalePrincipal(
-      detail::principalShape(detail::canonicalRelativeShape(a, b)));
+  return detail::solveContactScale(detail::canonicalRelativeShape(a, b));
 }
 
 namespace detail {

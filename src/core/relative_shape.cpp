@@ -7,10 +7,13 @@
 namespace ellipse_collision::core::detail {
 namespace {
 
-// The eigenvector's squared length is formed directly between these (far from underflow and
-// overflow), and after an exact rescaling outside them.
-constexpr double kSmallestSafeNormSq = 0x1p-900;
-constexpr double kLargestSafeNormSq = 0x1p900;
+// The eigenvector's squared length is formed directly between these, and after an exact rescaling
+// by a power of two outside them (which changes no bit where nothing underflows or overflows).
+// Inside, the eigenvector's components times an offset of 1e-290 stay normal numbers: an
+// eigenvector of length 1e-58 times an offset of 1e-280 underflowed to "coincident centres"
+// (fuzzer finding).
+constexpr double kSmallestSafeNormSq = 0x1p-100;
+constexpr double kLargestSafeNormSq = 0x1p100;
 
 }  // namespace
 
@@ -35,7 +38,7 @@ PrincipalShape principalShape(const RelativeShape& shape) {
   double norm_sq = ex * ex + ey * ey;
   if (!(norm_sq >= kSmallestSafeNormSq && norm_sq <= kLargestSafeNormSq)) {
     // Tiny (M = I up to an off-diagonal 1e-158: a subnormal square kept 1e-9 of the offsets,
-    // fuzzer finding) or huge: scaled by a power of two, exactly, before squaring.
+    // fuzzer finding) or huge: scaled by a power of two before squaring.
     const double larger = std::max(std::abs(ex), std::abs(ey));
     if (larger > 0.0 && std::isfinite(larger)) {
       const int exponent = std::ilogb(larger);
