@@ -230,10 +230,16 @@ class PairCollector {
 
     SceneCheckResult result;
     result.pair_tests = pair_tests_;
-    result.collisions.reserve(collisions_.size());
-    for (const std::uint32_t k : canonicalOrder(collisions_)) {
-      const Collision& pair = collisions_[k];
-      result.collisions.push_back({*pair.first, *pair.second, pair.contact_scale});
+    // Sized first and the names assigned in place: a pushed {name, name, scale} was built and then
+    // moved, two copies of each name.
+    result.collisions.resize(collisions_.size());
+    const std::vector<std::uint32_t> collision_order = canonicalOrder(collisions_);
+    for (std::size_t k = 0; k < collision_order.size(); ++k) {
+      const Collision& pair = collisions_[collision_order[k]];
+      CollidingPair& reported = result.collisions[k];
+      reported.name_a = *pair.first;
+      reported.name_b = *pair.second;
+      reported.contact_scale = pair.contact_scale;
     }
     result.warnings.reserve(warnings_.size());
     for (const std::uint32_t k : canonicalOrder(warnings_)) {
