@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <vector>
 
 #include "eigenvalue_test_detail.h"
 
@@ -69,11 +68,13 @@ ScaleProblem scaleProblem(const RelativeShape& shape) {
   problem.x = start > 0.0 && start <= 1.0 ? start : (start > 1.0 ? 1.0 : 0.5);
   problem.lo = 0.0;
   problem.hi = 1.0;
+  problem.done = false;
   return problem;
 }
 
-// Not inlined: the batch and the single pair run the very same instructions, so no contraction or
-// scheduling choice of the compiler can make their bits differ.
+// Not inlined: the tests and benchmarks that step a problem themselves run the very same
+// instructions as solveContactScales(), so no contraction choice of the compiler can make their
+// bits differ.
 __attribute__((noinline)) bool stepContactScale(ScaleProblem& problem, double* scale) {
   const double x = problem.x;
   const double* k = problem.coefficient;
@@ -95,6 +96,7 @@ __attribute__((noinline)) bool stepContactScale(ScaleProblem& problem, double* s
   if (denominator > 0.0 && std::abs(value) <= kModelStepFraction * x * abs_slope &&
       value * value <= 2.0 * kQuarticModelError * abs_slope * numerator * denominator) {
     *scale = problem.offset_scale * std::sqrt(numerator / denominator);
+    problem.done = true;
     return true;
   }
   // P > 0 left of the root; the reversed polynomial is < 0 there.
@@ -117,36 +119,37 @@ __attribute__((noinline)) bool stepContactScale(ScaleProblem& problem, double* s
 }
 
 void solveContactScales(ScaleProblem* problems, std::size_t count, double* scales) {
-  std::vector<std::size_t> open;
-  open.reserve(count);
+  std::size_t open = 0;
   for (std::size_t i = 0; i < count; ++i) {
-    if (!(problems[i].offset_scale > 0.0)) {
+    ScaleProblem& problem = problems[i];
+    if (!(problem.offset_scale > 0.0)) {
       scales[i] = 0.0;  // coincident centres
-    } else if (problems[i].fallback) {
-      scales[i] = certifiedScale(problems[i]);
+      problem.done = true;
+    } else if (problem.fallback) {
+      scales[i] = certifiedScale(problem);
+      problem.done = true;
     } else {
-      open.push_back(i);
+      ++open;
     }
   }
-  for (int step = 0; step < kMaxQuarticSteps && !open.empty(); ++step) {
-    std::size_t kept = 0;
-    for (const std::size_t i : open) {
-      if (!stepContactScale(problems[i], &scales[i])) open[kept++] = i;
+  for (int step = 0; step < kMaxQuarticSteps && open > 0; ++step) {
+    for (std::size_t i = 0; i < count; ++i) {
+      if (!problems[i].done && stepContactScale(problems[i], &scales[i])) --open;
     }
-    open.resize(kept);
   }
-  for (const std::size_t i : open) scales[i] = certifiedScale(problems[i]);
+  for (std::size_t i = 0; i < count && open > 0; ++i) {
+    if (!problems[i].done) {
+      scales[i] = certifiedScale(problems[i]);
+      --open;
+    }
+  }
 }
 
 double solveContactScale(const RelativeShape& shape) {
   ScaleProblem problem = scaleProblem(shape);
-  if (!(problem.offset_scale > 0.0)) return 0.0;
-  if (problem.fallback) return certifiedScale(problem);
   double scale = 0.0;
-  for (int step = 0; step < kMaxQuarticSteps; ++step) {
-    if (stepContactScale(problem, &scale)) return scale;
-  }
-  return certifiedScale(problem);
+  solveContactScales(&problem, 1, &scale);
+  return scale;
 }
 
 }  // namespace ellipse_collision::core::detail

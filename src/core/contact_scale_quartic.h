@@ -26,6 +26,7 @@ struct ScaleProblem {
   double coefficient[5];  ///< of P in x, highest power first
   double x, lo, hi;       ///< current point and bracket of the root in x, 0 <= lo < x < hi <= 1
   bool reversed;          ///< x = 1 / t
+  bool done;              ///< the contact scale has been written
   /// The quartic does not answer (its coefficients overflow or underflow, or the other ellipse
   /// has an axis ratio beyond 1e9 in the unit frame): the certified maximisation of Q does.
   bool fallback;
@@ -38,16 +39,17 @@ inline constexpr int kMaxQuarticSteps = 12;
 ScaleProblem scaleProblem(const RelativeShape& shape);
 
 /// One Halley step on the problem, safeguarded by the bracket. Returns true, with the contact
-/// scale in *scale, when the current point is the root to within kQuarticModelError of max Q;
-/// then the problem is done and must not be stepped again.
+/// scale in *scale and `done` set, when the current point is the root to within
+/// kQuarticModelError of max Q; a done problem must not be stepped again.
 bool stepContactScale(ScaleProblem& problem, double* scale);
 
 /// The contact scale of each problem into scales[i]. The problems are stepped side by side, so
 /// their divisions overlap in the pipeline instead of waiting on each other; a problem not done
 /// within kMaxQuarticSteps takes the certified maximisation of Q instead. Each problem goes
-/// through the very same steps as solveContactScale() would take alone: same bits.
+/// through the same steps whatever the others do: one alone gets the same bits.
 void solveContactScales(ScaleProblem* problems, std::size_t count, double* scales);
 
+/// solveContactScales() of one pair.
 double solveContactScale(const RelativeShape& shape);
 
 }  // namespace ellipse_collision::core::detail

@@ -194,7 +194,7 @@ class PairCollector {
     for (std::size_t k = 0; k < keys.size(); ++k) rank_[keys[k].index] = static_cast<std::uint32_t>(k);
     // Enough for a robot's self collisions without growing the vector on the way.
     collisions_.reserve(kExpectedPairs);
-    collision_shapes_.reserve(kExpectedPairs);
+    scale_problems_.reserve(kExpectedPairs);
   }
 
   /// Mover `i` (always first in its pair with an obstacle) against `obstacle`.
@@ -219,13 +219,8 @@ class PairCollector {
     // All contact scales at once: side by side their iterations overlap in the pipeline, where
     // one pair at a time waits on each division (bench_pair_tests contact_scale/: 56-67 against
     // 78-96 ns per pair); the same bits as contactScale() on each pair.
-    std::vector<detail::ScaleProblem> problems;
-    problems.reserve(collision_shapes_.size());
-    for (const detail::RelativeShape& shape : collision_shapes_) {
-      problems.push_back(detail::scaleProblem(shape));
-    }
-    std::vector<double> scales(problems.size());
-    detail::solveContactScales(problems.data(), problems.size(), scales.data());
+    std::vector<double> scales(scale_problems_.size());
+    detail::solveContactScales(scale_problems_.data(), scale_problems_.size(), scales.data());
     for (std::size_t k = 0; k < scales.size(); ++k) collisions_[k].contact_scale = scales[k];
 
     SceneCheckResult result;
@@ -317,7 +312,8 @@ class PairCollector {
     if (overlap(prepared_first, prepared_second)) {
       // The contact scale is solved in finish(), with every other pair's (see there).
       collisions_.push_back({{first.name, second.name, rank_[i], second_rank}, 0.0});
-      collision_shapes_.push_back(detail::canonicalRelativeShape(prepared_first, prepared_second));
+      scale_problems_.push_back(
+          detail::scaleProblem(detail::canonicalRelativeShape(prepared_first, prepared_second)));
       return;
     }
     if (warning_distance_ <= 0.0 ||
@@ -336,7 +332,7 @@ class PairCollector {
   std::vector<std::uint32_t> rank_;  ///< each mover's place in (role, name) order
   std::size_t pair_tests_{0};
   std::vector<Collision> collisions_;
-  std::vector<detail::RelativeShape> collision_shapes_;  ///< one per collision, same order
+  std::vector<detail::ScaleProblem> scale_problems_;  ///< one per collision, same order
   std::vector<Warning> warnings_;
 };
 
