@@ -58,7 +58,9 @@ void checkTranslationReference(const core::Ellipse& a, const core::Motion& ma,
   double min_scale = INFINITY, prev_t = 0.0;
   int first_hit = -1;
   for (int k = 0; k <= kSamples; ++k) {
-    const double t = horizon * k / kSamples;
+    // k / kSamples first: horizon * k overflowed to inf for a horizon near DBL_MAX, and the
+    // pair at t = inf has NaN centres (fuzzer finding in the harness itself).
+    const double t = horizon * (static_cast<double>(k) / kSamples);
     bool hit = false;
     min_scale = std::min(min_scale, scaleAt(a, ma, b, mb, t, &hit));
     if (hit) {
@@ -88,7 +90,7 @@ void checkTranslationReference(const core::Ellipse& a, const core::Motion& ma,
   if (!result.contact || first_hit < 0) return;
   if (first_hit == 0) return;  // overlap at t = 0, checked separately
   // Bisection of the first overlap between the last clear sample and the first overlapping one.
-  double lo = prev_t, hi = horizon * first_hit / kSamples;
+  double lo = prev_t, hi = horizon * (static_cast<double>(first_hit) / kSamples);
   for (int i = 0; i < 200 && hi - lo > 0.0; ++i) {
     const double mid = lo + 0.5 * (hi - lo);
     if (mid <= lo || mid >= hi) break;

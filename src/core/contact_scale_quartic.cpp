@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "eigenvalue_test_detail.h"
 
@@ -28,7 +29,11 @@ double certifiedScale(const ScaleProblem& problem) {
 ScaleProblem scaleProblem(const RelativeShape& shape) {
   ScaleProblem problem;
   problem.shape = shape;
-  problem.offset_scale = std::max(std::abs(shape.center_x), std::abs(shape.center_y));
+  // std::max drops a NaN: a NaN offset (invalid input) must stay one, an answer of no meaning,
+  // and not read as coincident centres, t* = 0.
+  problem.offset_scale = std::isnan(shape.center_x) || std::isnan(shape.center_y)
+                             ? std::numeric_limits<double>::quiet_NaN()
+                             : std::max(std::abs(shape.center_x), std::abs(shape.center_y));
   // Q is homogeneous of degree 2 in the offset: normalising keeps tiny offsets from underflowing.
   const double inverse_scale = problem.offset_scale > 0.0 ? 1.0 / problem.offset_scale : 0.0;
   const double dx = shape.center_x * inverse_scale, dy = shape.center_y * inverse_scale;
@@ -55,7 +60,8 @@ ScaleProblem scaleProblem(const RelativeShape& shape) {
   // relative frame itself has lost digits (a needle along the offset: both methods 3e-9 off
   // the quad oracle, on opposite sides): there the certified maximisation answers, so that
   // contactScale() errs as overlap()'s decision does, not against it (fuzzer finding).
-  problem.fallback = !(std::isfinite(k2) && std::isfinite(at_one) && k0 > 0.0 &&
+  problem.fallback = !(std::isfinite(problem.offset_scale) && std::isfinite(k2) &&
+                       std::isfinite(at_one) && k0 > 0.0 &&
                        std::isfinite(k0) && std::isfinite(tau) &&
                        tau * tau <= kMaxEigenvalueRatio * delta);
 
@@ -122,7 +128,7 @@ void solveContactScales(ScaleProblem* problems, std::size_t count, double* scale
   std::size_t open = 0;
   for (std::size_t i = 0; i < count; ++i) {
     ScaleProblem& problem = problems[i];
-    if (!(problem.offset_scale > 0.0)) {
+    if (problem.offset_scale == 0.0) {
       scales[i] = 0.0;  // coincident centres
       problem.done = true;
     } else if (problem.fallback) {

@@ -243,6 +243,16 @@ TEST(ContactScaleQuartic, CertifiedMaximisationKeepsAnOffsetOf1e280) {
   EXPECT_NEAR(contactScale(a, b) / certified, 1.0, 1e-12);
 }
 
+TEST(ContactScaleQuartic, ANaNOffsetIsNoAnswerRatherThanCoincidentCentres) {
+  // Invalid input (the API requires valid ellipses), as a fuzz harness once fed it: the quartic
+  // must not read a NaN offset as coincident centres (t* = 0, "collision"); like the certified
+  // path, it answers NaN.
+  const Ellipse a{{0.0, 0.0}, 1.0, 0.5, 0.3};
+  const Ellipse b{{std::nan(""), 3.0}, 1.6875, 1.0, 0.0};
+  EXPECT_TRUE(std::isnan(contactScale(a, b)));
+  EXPECT_TRUE(std::isnan(contactScale(b, a)));
+}
+
 }  // namespace
 }  // namespace test
 }  // namespace ellipse_collision::core
