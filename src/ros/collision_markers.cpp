@@ -288,6 +288,7 @@ visualization_msgs::MarkerArray CollisionMarkers::update(
       it = l.shown.erase(it);
     }
     l.shown.insert(sent.begin(), sent.end());
+    l.ever_sent.insert(sent.begin(), sent.end());
   }
 
   std::map<std::int32_t, Marker> lines_now;
@@ -317,6 +318,84 @@ visualization_msgs::MarkerArray CollisionMarkers::update(
   }
   lines_shown_ = std::move(lines_now);
   return array;
+}
+
+std::size_t CollisionMarkers::appendRefresh(visualization_msgs::MarkerArray& array,
+                                            double fraction) {
+  // Line ids are never reused (lineId()), so line_ids_taken_ is every clearance line ever sent.
+  const std::array<const std::set<std::int32_t>*, kLayers + 1> parts{
+      &layers_[0].ever_sent, &layers_[1].ever_sent, &line_ids_taken_};
+  std::size_t total = 0;
+  for (const std::set<std::int32_t>* ids : parts) total += ids->size();
+  if (total == 0 || !(fraction > 0.0)) return 0;
+  // A long gap owes one whole sweep, not several.
+  refresh_owed_ = std::min(refresh_owed_ + std::min(fraction, 1.0) * static_cast<double>(total),
+                           static_cast<double>(total));
+  std::size_t due = static_cast<std::size_t>(refresh_owed_);
+  refresh_owed_ -= static_cast<double>(due);
+
+  std::set<std::pair<std::string, std::int32_t>> in_array;
+  for (const Marker& marker : array.markers) in_array.emplace(marker.ns, marker.id);
+  const auto nameSpaceOf = [](std::size_t part) -> std::string {
+    if (part == kLayers) return kClearanceNamespace;
+    return nameSpace(part == 0 ? core::EllipseRole::Link : core::EllipseRole::Obstacle);
+  };
+  // Walk the sweep: ids in order within a part, the parts in turn. An id already in `array` counts
+  // as refreshed (it goes out now anyway).
+  std::array<std::vector<std::int32_t>, kLayers + 1> chosen;
+  for (std::size_t visited = 0; due > 0 && visited < total;) {
+    const std::set<std::int32_t>& ids = *parts[refresh_part_];
+    const auto next = refresh_after_ < 0 ? ids.begin()
+                                         : ids.upper_bound(static_cast<std::int32_t>(refresh_after_));
+    if (next == ids.end()) {
+      refresh_part_ = (refresh_part_ + 1) % parts.size();
+      refresh_after_ = -1;
+      continue;
+    }
+    refresh_after_ = *next;
+    ++visited;
+    --due;
+    if (!in_array.count({nameSpaceOf(refresh_part_), *next})) chosen[refresh_part_].push_back(*next);
+  }
+
+  std::size_t appended = 0;
+  const auto appendDeletion = [&](const std::string& ns, std::int32_t id) {
+    Marker deletion = emptyMarker(ns, id);
+    deletion.action = Marker::DELETE;
+    array.markers.push_back(deletion);
+    ++appended;
+  };
+  for (std::size_t layer = 0; layer < kLayers; ++layer) {
+    const Layer& l = layers_[layer];
+    std::vector<char> wanted(kStateCount * l.buckets, 0);
+    for (const std::int32_t id : chosen[layer]) {
+      if (!l.shown.count(id)) {
+        appendDeletion(nameSpaceOf(layer), id);
+        continue;
+      }
+      // A shown id is always of a current bucket (a change of B deletes the rest).
+      const std::int32_t code = id / kIdsPerState;
+      const auto row = std::find_if(kMarkerStates.begin(), kMarkerStates.end(),
+                                    [&](const MarkerStateStyle& r) { return r.code == code; });
+      wanted[stateIndex(row->state) * l.buckets + static_cast<std::uint32_t>(id % kIdsPerState)] = 1;
+    }
+    for (Marker& marker : fills(layer, wanted)) {
+      array.markers.push_back(std::move(marker));
+      ++appended;
+    }
+  }
+  for (const std::int32_t id : chosen[kLayers]) {
+    const auto shown = lines_shown_.find(id);
+    if (shown == lines_shown_.end()) {
+      appendDeletion(kClearanceNamespace, id);
+      continue;
+    }
+    Marker line = shown->second;
+    line.header.stamp = stamp_;
+    array.markers.push_back(std::move(line));
+    ++appended;
+  }
+  return appended;
 }
 
 visualization_msgs::MarkerArray CollisionMarkers::fullArray() const {

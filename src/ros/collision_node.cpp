@@ -29,8 +29,12 @@ app::CheckSettings makeSettings(const NodeConfig& config) {
   return settings;
 }
 
-/// Marker arrays queued per ~markers subscriber: some seconds of checks at any useful rate.
-constexpr std::uint32_t kMarkerQueue = 100;
+/// Marker arrays queued per ~markers subscriber. Short, because a subscriber that cannot keep up
+/// (rviz over a slow link, 10,000 moving obstacles) would otherwise hold the node's memory (100
+/// full arrays of 10,000 streamed obstacles were 715 MB); the arrays it loses are made good by
+/// the refresh sweep (CollisionMarkers::appendRefresh()). More than one, so that a new
+/// subscriber's full array is not dropped by the next check's changes before it is written out.
+constexpr std::uint32_t kMarkerQueue = 4;
 
 diagnostic_msgs::KeyValue keyValue(const std::string& key, const std::string& value) {
   diagnostic_msgs::KeyValue kv;
@@ -60,9 +64,8 @@ CollisionNode::CollisionNode(const ros::NodeHandle& nh, const ros::NodeHandle& p
     }
   }
   collisions_pub_ = private_nh_.advertise<CollisionState>("collisions", 1, /*latch=*/true);
-  // The arrays carry changes, so none may be dropped: a queue of kMarkerQueue arrays per
-  // subscriber (roscpp drops the oldest beyond it; with 1, the full view sent to a new subscriber
-  // was lost whenever the next check's changes followed it before it was written out).
+  // The arrays carry changes: a queue of kMarkerQueue arrays per subscriber (roscpp drops the
+  // oldest beyond it), and the refresh sweep for what a slow subscriber still loses.
   markers_pub_ = private_nh_.advertise<visualization_msgs::MarkerArray>(
       "markers", kMarkerQueue,
       [this](const ros::SingleSubscriberPublisher& subscriber) { onMarkerSubscriber(subscriber); },
@@ -277,15 +280,26 @@ void CollisionNode::publishState(StatePublishing publishing) {
 
 void CollisionNode::publishMarkers() {
   // Nobody listening: skip the work. onMarkerSubscriber() publishes for the next subscriber.
-  if (!state_.valid || markers_pub_.getNumSubscribers() == 0) return;
+  if (!state_.valid || markers_pub_.getNumSubscribers() == 0) {
+    last_markers_time_ = ros::WallTime();  // no sweep is owed for the time nobody listened
+    return;
+  }
   std::set<std::string> predicted;
   for (const core::PredictedContact& p : state_.outcome.predicted) {
     predicted.insert({p.name_a, p.name_b});
   }
   // Only what changed since the last array: an unchanged scene publishes nothing.
-  const visualization_msgs::MarkerArray changes =
+  visualization_msgs::MarkerArray changes =
       markers_.update(state_.outcome.placed, state_.outcome.collisions, state_.outcome.warnings,
                       config_.fixed_frame, state_.stamp, predicted);
+  // Plus a slice of the refresh sweep, by wall time: it heals what a network lost, whatever the
+  // ROS clock does.
+  const ros::WallTime now = ros::WallTime::now();
+  if (config_.marker_refresh_period_s > 0.0 && !last_markers_time_.isZero()) {
+    markers_.appendRefresh(changes,
+                           (now - last_markers_time_).toSec() / config_.marker_refresh_period_s);
+  }
+  last_markers_time_ = now;
   if (!changes.markers.empty()) markers_pub_.publish(changes);
 }
 

@@ -256,7 +256,7 @@ NodeConfig parseNodeConfig(const XmlRpcValue& params, const UrdfLinkFitter& fit_
       "links",            "links_from_urdf",   "obstacles",         "allowed_pairs",
       "self_collision",   "warning_distance",  "max_transform_age", "obstacle_timeout",
       "max_obstacles",    "max_name_length",   "obstacle_store",    "obstacle_store_period",
-      "robot_frame",      "prediction_horizon"};
+      "robot_frame",      "prediction_horizon", "marker_refresh_period"};
   if (root.getType() == XmlRpcValue::TypeStruct) {
     for (auto it = root.begin(); it != root.end(); ++it) {
       if (std::find(kKnownKeys.begin(), kKnownKeys.end(), it->first) == kKnownKeys.end()) {
@@ -324,6 +324,11 @@ NodeConfig parseNodeConfig(const XmlRpcValue& params, const UrdfLinkFitter& fit_
     config.obstacle_store_period_s =
         readInRange(root["obstacle_store_period"], "parameter ~obstacle_store_period",
                     "obstacle_store_period", 0.0, kMaxTfTimeoutS);
+  }
+  if (has("marker_refresh_period")) {
+    config.marker_refresh_period_s =
+        readInRange(root["marker_refresh_period"], "parameter ~marker_refresh_period",
+                    "marker_refresh_period", 0.0, kMaxTfTimeoutS);
   }
   if (!has("links") && !has("links_from_urdf")) {
     throw ConfigError(

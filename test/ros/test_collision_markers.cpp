@@ -331,77 +331,206 @@ TEST(CollisionMarkers, ManyEllipsesAreSplitIntoBoundedMarkersThatRegroupWhenTheC
   EXPECT_TRUE(isGreen(fillOf(view, "obstacles", placed[6].ellipse)));
 }
 
-TEST(CollisionMarkers, ChangesAppliedInOrderShowWhatTheFullArrayShows) {
-  // A random scene evolves; after every update the view built from the changes alone must equal
-  // the view a new subscriber builds from fullArray() (which starts with DELETEALL).
-  std::mt19937 random(16);
-  std::uniform_int_distribution<int> pick(0, 599);
-  std::uniform_real_distribution<double> shift(-0.5, 0.5);
-  CollisionMarkers markers;
-  std::map<std::string, core::NamedEllipse> scene;
-  for (int i = 0; i < 600; ++i) {
-    const std::string name = (i < 10 ? "l" : "o") + std::to_string(i);
-    scene[name] = named(name, i < 10 ? kLink : kObstacle, i % 30, i / 30);
-  }
-  MarkerView changes;
-  changes.apply(MarkerArray());  // nothing yet
-  for (int cycle = 0; cycle < 40; ++cycle) {
+/// A random scene that evolves update by update: moves, removals and returns among 600 names (10
+/// links), a crowd of 3,000 obstacles arriving at cycle 20 (B changes), and collisions and
+/// warnings among them.
+class EvolvingScene {
+ public:
+  struct Step {
     std::vector<core::NamedEllipse> placed;
+    std::vector<core::CollidingPair> collisions;
+    std::vector<core::NearPair> warnings;
+  };
+
+  explicit EvolvingScene(unsigned seed) : random_(seed) {
+    for (int i = 0; i < 600; ++i) scene_[nameOf(i)] = named(nameOf(i), roleOf(i), i % 30, i / 30);
+  }
+
+  Step next(int cycle) {
     for (int k = 0; k < 20; ++k) {  // moves, removals and returns
-      const int i = pick(random);
-      const std::string name = (i < 10 ? "l" : "o") + std::to_string(i);
-      if (scene.count(name) && k % 4 == 0) {
-        scene.erase(name);
+      const int i = pick_(random_);
+      if (scene_.count(nameOf(i)) && k % 4 == 0) {
+        scene_.erase(nameOf(i));
       } else {
-        core::NamedEllipse e =
-            named(name, i < 10 ? kLink : kObstacle, i % 30 + shift(random), i / 30);
-        scene[name] = e;
+        scene_[nameOf(i)] = named(nameOf(i), roleOf(i), i % 30 + shift_(random_), i / 30);
       }
     }
     if (cycle == 20) {  // a crowd arrives: the obstacles are regrouped into more buckets
       for (int i = 0; i < 3000; ++i)
-        scene["c" + std::to_string(i)] = named("c" + std::to_string(i), kObstacle, i, 50);
+        scene_["c" + std::to_string(i)] = named("c" + std::to_string(i), kObstacle, i, 50);
     }
-    for (const auto& [name, e] : scene) placed.push_back(e);
-    std::vector<core::CollidingPair> collisions;
-    std::vector<core::NearPair> warnings;
+    Step step;
+    for (const auto& [name, e] : scene_) step.placed.push_back(e);
     for (int k = 0; k < 5; ++k) {
-      const int i = pick(random);
+      const int i = pick_(random_);
       const std::string other = "o" + std::to_string(10 + i % 590);
-      if (!scene.count(other)) continue;
+      if (!scene_.count(other)) continue;
       if (k % 2) {
-        collisions.push_back({"l" + std::to_string(i % 10), other, 0.5});
+        step.collisions.push_back({"l" + std::to_string(i % 10), other, 0.5});
       } else {
-        warnings.push_back(
-            nearPair("l" + std::to_string(i % 10), other, {0, 0}, {shift(random), 1}));
+        step.warnings.push_back(
+            nearPair("l" + std::to_string(i % 10), other, {0, 0}, {shift_(random_), 1}));
       }
     }
-    changes.apply(update(markers, placed, collisions, warnings, "m", kStamp));
-    MarkerView full;
-    full.apply(markers.fullArray());
-    ASSERT_EQ(changes.shown().size(), full.shown().size()) << "cycle " << cycle;
-    for (const auto& [key, m] : full.shown()) {
-      const Marker* mine = changes.find(key.first, key.second);
-      ASSERT_TRUE(mine) << key.first << "/" << key.second << " cycle " << cycle;
-      EXPECT_EQ(mine->color.r, m.color.r);
-      EXPECT_EQ(mine->color.g, m.color.g);
+    return step;
+  }
+
+  const std::map<std::string, core::NamedEllipse>& scene() const { return scene_; }
+  static std::string nameOf(int i) { return (i < 10 ? "l" : "o") + std::to_string(i); }
+
+ private:
+  static core::EllipseRole roleOf(int i) { return i < 10 ? kLink : kObstacle; }
+
+  std::mt19937 random_;
+  std::uniform_int_distribution<int> pick_{0, 599};
+  std::uniform_real_distribution<double> shift_{-0.5, 0.5};
+  std::map<std::string, core::NamedEllipse> scene_;
+};
+
+MarkerArray update(CollisionMarkers& markers, const EvolvingScene::Step& step) {
+  return update(markers, step.placed, step.collisions, step.warnings, "m", kStamp);
+}
+
+/// Whether `view` draws what `truth` draws: the same markers, colours and triangles.
+::testing::AssertionResult sameDrawing(const MarkerView& view, const MarkerView& truth) {
+  if (view.shown().size() != truth.shown().size()) {
+    return ::testing::AssertionFailure()
+           << view.shown().size() << " markers shown, " << truth.shown().size() << " wanted";
+  }
+  for (const auto& [key, m] : truth.shown()) {
+    const Marker* mine = view.find(key.first, key.second);
+    if (!mine) return ::testing::AssertionFailure() << key.first << "/" << key.second << " missing";
+    if (mine->color.r != m.color.r || mine->color.g != m.color.g) {
+      return ::testing::AssertionFailure() << key.first << "/" << key.second << " colour differs";
     }
-    for (const std::string ns : {"links", "obstacles", "clearance"}) {
-      ASSERT_EQ(drawnTriangles(changes, ns), drawnTriangles(full, ns)) << ns << " cycle " << cycle;
+  }
+  for (const std::string ns : {"links", "obstacles", "clearance"}) {
+    if (drawnTriangles(view, ns) != drawnTriangles(truth, ns)) {
+      return ::testing::AssertionFailure() << ns << ": other triangles drawn";
     }
+  }
+  return ::testing::AssertionSuccess();
+}
+
+MarkerView viewOf(const MarkerArray& array) {
+  MarkerView view;
+  view.apply(array);
+  return view;
+}
+
+TEST(CollisionMarkers, ChangesAppliedInOrderShowWhatTheFullArrayShows) {
+  // A random scene evolves; after every update the view built from the changes alone must equal
+  // the view a new subscriber builds from fullArray() (which starts with DELETEALL).
+  EvolvingScene evolving(16);
+  CollisionMarkers markers;
+  MarkerView changes;
+  changes.apply(MarkerArray());  // nothing yet
+  for (int cycle = 0; cycle < 40; ++cycle) {
+    const EvolvingScene::Step step = evolving.next(cycle);
+    changes.apply(update(markers, step));
+    ASSERT_TRUE(sameDrawing(changes, viewOf(markers.fullArray()))) << "cycle " << cycle;
     // And every ellipse is drawn once, in the colour of its state.
     std::set<std::string> colliding;
-    for (const auto& c : collisions) colliding.insert({c.name_a, c.name_b});
+    for (const auto& c : step.collisions) colliding.insert({c.name_a, c.name_b});
     for (const int i : {0, 5, 100, 333, 599}) {
-      const std::string name = (i < 10 ? "l" : "o") + std::to_string(i);
-      if (!scene.count(name)) continue;
-      const Marker* fill = fillOf(changes, i < 10 ? "links" : "obstacles", scene[name].ellipse);
+      const std::string name = EvolvingScene::nameOf(i);
+      if (!evolving.scene().count(name)) continue;
+      const Marker* fill =
+          fillOf(changes, i < 10 ? "links" : "obstacles", evolving.scene().at(name).ellipse);
       ASSERT_TRUE(fill) << name;
       if (colliding.count(name)) {
         EXPECT_TRUE(isRed(*fill)) << name;
       }
     }
   }
+}
+
+TEST(CollisionMarkers, ASubscriberThatLostArraysIsWholeAgainOneRefreshPeriodAfterTheLastLoss) {
+  // Two builders see the same evolving scene; a slow subscriber of each loses the same half of
+  // the arrays in the first 40 cycles (a publisher queue overflowing), then receives everything.
+  // With a refresh sweep of 10 updates the view is whole 10 updates after the last loss, while
+  // the scene keeps changing; without it the losses stay.
+  EvolvingScene evolving(21);
+  CollisionMarkers refreshing, plain;
+  MarkerView healed, broken;
+  std::mt19937 losses(5);
+  constexpr double kPerUpdate = 0.1;  // of the refresh period
+  for (int cycle = 0; cycle < 60; ++cycle) {
+    const EvolvingScene::Step step = evolving.next(cycle);
+    MarkerArray with_refresh = update(refreshing, step);
+    refreshing.appendRefresh(with_refresh, kPerUpdate);
+    const MarkerArray without = update(plain, step);
+    const bool lost = cycle < 40 && losses() % 2 == 0;
+    if (!lost) {
+      healed.apply(with_refresh);
+      broken.apply(without);
+    }
+    if (cycle >= 50) {
+      EXPECT_TRUE(sameDrawing(healed, viewOf(refreshing.fullArray()))) << "cycle " << cycle;
+    }
+  }
+  EXPECT_FALSE(sameDrawing(broken, viewOf(plain.fullArray())))
+      << "the losses changed nothing: this test shows no healing";
+}
+
+TEST(CollisionMarkers, RefreshSweepResendsEveryMarkerOncePerPeriodAsItIsAndDeletesWhatWentAway) {
+  CollisionMarkers markers;
+  std::vector<core::NamedEllipse> placed = {named("arm", kLink), named("hand", kLink, 0, 1)};
+  for (int i = 0; i < 200; ++i) placed.push_back(named("o" + std::to_string(i), kObstacle, i, 5));
+  update(markers, placed, {{"arm", "o1", 0.5}}, {nearPair("arm", "o2", {0, 0}, {1, 5})}, "m",
+         kStamp);
+  // The collision and the warning end: their red fill and the line are deleted, once.
+  const MarkerArray ended = update(markers, placed, {}, {}, "m", kStamp);
+  std::set<std::pair<std::string, int>> deleted;
+  for (const Marker& m : ended.markers) {
+    if (m.action == Marker::DELETE) deleted.emplace(m.ns, m.id);
+  }
+  // Red for arm (links) and o1 (obstacles), yellow for o2 (arm is red), and the line.
+  ASSERT_EQ(deleted.size(), 4u);
+
+  // The scene stands still: each update sends nothing but a quarter of the sweep.
+  const MarkerView truth = viewOf(markers.fullArray());
+  std::map<std::pair<std::string, int>, int> resent;
+  MarkerView view = truth;
+  for (int k = 0; k < 4; ++k) {
+    MarkerArray array = update(markers, placed, {}, {}, "m", kStamp);
+    ASSERT_TRUE(array.markers.empty());
+    const std::size_t appended = markers.appendRefresh(array, 0.25);
+    EXPECT_EQ(appended, array.markers.size());
+    EXPECT_GT(appended, 0u);
+    for (const Marker& m : array.markers) ++resent[{m.ns, m.id}];
+    view.apply(array);
+  }
+  // Every marker shown once more, and every deleted id deleted once more; nothing else.
+  std::map<std::pair<std::string, int>, int> wanted;
+  for (const auto& [key, m] : truth.shown()) wanted[key] = 1;
+  for (const auto& key : deleted) wanted[key] = 1;
+  EXPECT_EQ(resent, wanted);
+  EXPECT_TRUE(sameDrawing(view, truth));
+
+  // No share, no markers; a long gap owes one sweep, not five.
+  MarkerArray none;
+  EXPECT_EQ(markers.appendRefresh(none, 0.0), 0u);
+  EXPECT_TRUE(none.markers.empty());
+  MarkerArray gap;
+  EXPECT_EQ(markers.appendRefresh(gap, 5.0), wanted.size());
+}
+
+TEST(CollisionMarkers, RefreshSkipsWhatTheArrayAlreadySendsSoNoIdGoesTwice) {
+  CollisionMarkers markers;
+  std::vector<core::NamedEllipse> placed = {named("arm", kLink)};
+  for (int i = 0; i < 100; ++i) placed.push_back(named("o" + std::to_string(i), kObstacle, i, 5));
+  update(markers, placed, {}, {}, "m", kStamp);
+  placed[0].ellipse.center.x() += 0.5;  // the arm's marker changes
+  MarkerArray array = update(markers, placed, {}, {}, "m", kStamp);
+  ASSERT_EQ(array.markers.size(), 1u);
+  const std::size_t appended = markers.appendRefresh(array, 1.0);  // a whole sweep at once
+  std::set<std::pair<std::string, int>> ids;
+  for (const Marker& m : array.markers) {
+    EXPECT_TRUE(ids.emplace(m.ns, m.id).second) << m.ns << "/" << m.id << " twice";
+  }
+  EXPECT_EQ(appended + 1, viewOf(markers.fullArray()).shown().size());
+  EXPECT_TRUE(sameDrawing(viewOf(array), viewOf(markers.fullArray())));
 }
 
 TEST(CollisionMarkers, FullArrayStartsWithDeleteAll) {

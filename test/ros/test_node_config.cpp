@@ -96,6 +96,7 @@ TEST(NodeConfig, OptionalKeysTakeTheirDocumentedDefaults) {
   EXPECT_TRUE(config.links.empty());
   EXPECT_TRUE(config.obstacles.empty());
   EXPECT_TRUE(config.allowed_pairs.empty());
+  EXPECT_EQ(config.marker_refresh_period_s, 10.0);
 }
 
 TEST(NodeConfig, IntegersAreAcceptedWhereNumbersAreExpected) {
@@ -291,6 +292,25 @@ TEST(NodeConfig, TfTimeoutIsWithinItsDocumentedRange) {
   EXPECT_EQ(errorOf(p),
             "parameter ~tf_timeout, key 'tf_timeout': expected a number within [0, 3600], got "
             "1e+12");
+}
+
+TEST(NodeConfig, MarkerRefreshPeriodIsZeroOrWithinItsDocumentedRange) {
+  XmlRpcValue p = validParams();
+  for (double ok : {0.0, 0.5, kMaxTfTimeoutS}) {
+    p["marker_refresh_period"] = ok;
+    EXPECT_EQ(parseNodeConfig(p).marker_refresh_period_s, ok);
+  }
+  p["marker_refresh_period"] = -1.0;
+  EXPECT_EQ(errorOf(p),
+            "parameter ~marker_refresh_period, key 'marker_refresh_period': expected a finite "
+            "number >= 0, got -1");
+  p["marker_refresh_period"] = 3600.5;
+  EXPECT_EQ(errorOf(p),
+            "parameter ~marker_refresh_period, key 'marker_refresh_period': expected a number "
+            "within [0, 3600], got 3600.5");
+  p["marker_refresh_period"] = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_CONTAINS(errorOf(p), "parameter ~marker_refresh_period, key 'marker_refresh_period'");
+  EXPECT_CONTAINS(errorOf(p), "nan");
 }
 
 TEST(NodeConfig, GlobalPaddingIsWithinTheCoreRadiusRange) {

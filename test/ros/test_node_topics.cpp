@@ -239,6 +239,45 @@ TEST_F(NodeTopics, UnchangedSceneSendsNoMarkersAndANewSubscriberSeesTheSameView)
   }
 }
 
+TEST_F(NodeTopics, WithARefreshPeriodAnUnchangedSceneResendsEachMarkerOncePerPeriodAsItIs) {
+  // The node "refreshing" has the same scene and marker_refresh_period 1 s.
+  Recorder<MarkerArray> refreshing(nh_, "/refreshing/markers");
+  const auto viewOf = [](const std::vector<MarkerArray>& arrays) { return MarkerView(arrays); };
+  ASSERT_TRUE(waitUntil(
+      [&] {
+        const MarkerView view = viewOf(refreshing.all());
+        return markerNamed(view, "crate") && markerNamed(view, "arm");
+      },
+      20.0));
+  ros::Duration(0.5).sleep();  // whatever was still changing has settled
+  const MarkerView view = viewOf(refreshing.all());
+  const std::size_t before = refreshing.count();
+  ros::Duration(2.5).sleep();
+  const std::vector<MarkerArray> arrays = refreshing.all();
+  ASSERT_GT(arrays.size(), before);
+  std::map<std::pair<std::string, int>, int> resent;
+  for (std::size_t k = before; k < arrays.size(); ++k) {
+    std::set<std::pair<std::string, int>> in_array;
+    for (const Marker& m : arrays[k].markers) {
+      EXPECT_TRUE(in_array.emplace(m.ns, m.id).second) << m.ns << "/" << m.id << " twice";
+      ++resent[{m.ns, m.id}];
+      // Nothing changed: each marker comes again as the view shows it.
+      const Marker* shown = view.find(m.ns, m.id);
+      ASSERT_TRUE(shown) << m.ns << "/" << m.id << " is not in the view";
+      EXPECT_EQ(m.action, Marker::ADD);
+      EXPECT_EQ(m.points.size(), shown->points.size()) << m.ns << "/" << m.id;
+      EXPECT_EQ(m.color.r, shown->color.r) << m.ns << "/" << m.id;
+    }
+  }
+  // 2.5 periods: every marker at least twice, none more than three times (a slice per check at
+  // 20 Hz, not the whole view).
+  for (const auto& [key, m] : view.shown()) {
+    EXPECT_GE(resent[key], 2) << key.first << "/" << key.second;
+    EXPECT_LE(resent[key], 3) << key.first << "/" << key.second;
+  }
+  EXPECT_GT(arrays.size() - before, 10u) << "the sweep went out in a few arrays, not in slices";
+}
+
 TEST_F(NodeTopics, StateReportsTheWarningPairWithDistanceAndClosestPoints) {
   CollisionState state;
   ASSERT_TRUE(collisions_.waitForLatest([](const CollisionState& s) { return !s.warnings.empty(); },

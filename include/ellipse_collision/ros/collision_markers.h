@@ -79,6 +79,15 @@ class CollisionMarkers {
   /// hold markers of an earlier run of the node (a respawn) or only the latched last update.
   visualization_msgs::MarkerArray fullArray() const;
 
+  /// Appends to `array` (an update() about to be published) the next slice of the refresh sweep:
+  /// every marker id this object ever sent, in turn, again as it is now (ADD with its content if
+  /// shown, DELETE if not), `fraction` of them per call (the share of the refresh period since the
+  /// last call; fractions of a marker carry over), skipping ids `array` already holds. A
+  /// subscriber that lost arrays (a publisher queue overflowing behind a slow rviz) is thus
+  /// whole again once a sweep has passed, and nothing is sent twice in one array. Returns how
+  /// many markers it appended.
+  std::size_t appendRefresh(visualization_msgs::MarkerArray& array, double fraction);
+
   static const char* nameSpace(core::EllipseRole role);
   static const MarkerStateStyle& style(MarkerState state);
   /// The id of the marker of `state` and `bucket`.
@@ -105,6 +114,7 @@ class CollisionMarkers {
     std::vector<Entry*> by_position;  ///< entry at each index of the last `placed` (a fast path)
     std::uint32_t buckets{1};         ///< B
     std::set<std::int32_t> shown;     ///< ids of its markers rviz holds
+    std::set<std::int32_t> ever_sent;  ///< ids ever sent as ADD: the refresh sweep's fill ids
     /// The entries of each marker, by state index * B + bucket: a changed marker is rebuilt from
     /// its own ellipses, not by a pass over the whole namespace.
     std::vector<std::vector<Entry*>> members;
@@ -125,6 +135,12 @@ class CollisionMarkers {
   std::map<std::string, std::int32_t> line_ids_;
   std::set<std::int32_t> line_ids_taken_;
   std::map<std::int32_t, visualization_msgs::Marker> lines_shown_;
+
+  // The refresh sweep's position: the last id refreshed in part refresh_part_ (0, 1: the layers'
+  // fills, 2: clearance lines), and the fraction of a marker owed to the next call.
+  std::size_t refresh_part_{0};
+  std::int64_t refresh_after_{-1};
+  double refresh_owed_{0.0};
 };
 
 }  // namespace ellipse_collision

@@ -114,6 +114,9 @@ class CollisionNode {
                                 ///< paused simulation clock does not hold back durability)
 
   CollisionMarkers markers_;
+  /// When ~markers last went out to a subscriber (zero while there was none): the refresh
+  /// sweep's share of the period since then.
+  ros::WallTime last_markers_time_;
   PublishedState state_;
   CollisionState last_state_msg_;  ///< the ~collisions message last published
   bool state_published_{false};

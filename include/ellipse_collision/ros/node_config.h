@@ -29,7 +29,7 @@ class ConfigError : public std::runtime_error {
 constexpr double kMinRateHz = 1e-3;        ///< rate is 0 or within [kMinRateHz, kMaxRateHz]
 constexpr double kMaxRateHz = 1e3;         ///< [Hz]
 constexpr double kMaxTfTimeoutS = 3600.0;  ///< tf_timeout, max_transform_age, obstacle_timeout,
-                                           ///< obstacle_store_period within [0, kMaxTfTimeoutS] [s]
+                                           ///< obstacle_store_period, marker_refresh_period within [0, kMaxTfTimeoutS] [s]
 
 /// prediction_horizon within [0, kMaxPredictionHorizonS] [s]: a minute ahead is far beyond what
 /// constant velocities predict well, and keeps |angular_velocity| * horizon within the core's turn
@@ -58,6 +58,9 @@ struct NodeConfig {
   /// Longest wait before a change from ~obstacles (or its expiry) is written to the store [s];
   /// 0 = after every message. The services' changes are written before they answer.
   double obstacle_store_period_s{1.0};
+  /// Every ~markers marker is sent again within this period, a slice per published array, so a
+  /// subscriber that lost arrays heals [s]; 0 = off.
+  double marker_refresh_period_s{10.0};
   std::vector<app::EllipseSpec> links;  ///< `links` entries, then those of `links_from_urdf`
   /// Links of `links_from_urdf` that were skipped, and why ("base_footprint: no collision
   /// geometry"); the node logs them at start-up.
