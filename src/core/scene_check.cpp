@@ -78,6 +78,9 @@ std::string validate(const std::vector<EntryRef>& entries, const SceneRules& rul
   // as much as the pair tests); the set of names is the one findNameProblem() uses.
   detail::NameSet names(entries.size());
   for (std::size_t i = 0; i < entries.size(); ++i) {
+    if (i + detail::NameSet::kPrefetchAhead < entries.size()) {
+      names.prefetch(*entries[i + detail::NameSet::kPrefetchAhead].name);
+    }
     problem = entryProblem(i, entries[i], names);
     if (!problem.empty()) return problem;
   }
@@ -396,6 +399,9 @@ SceneCheckResult checkSceneWith(const std::vector<NamedEllipse>& ellipses,
   for (std::size_t k = stream_from; k < ellipses.size(); ++k) {
     const NamedEllipse& obstacle = ellipses[k];
     if (movers_first) {
+      if (k + detail::NameSet::kPrefetchAhead < ellipses.size()) {
+        names.prefetch(ellipses[k + detail::NameSet::kPrefetchAhead].name);
+      }
       if (obstacle.role != EllipseRole::Obstacle) {
         return checkSceneWith(ellipses, rules, only_names, /*movers_first=*/false);
       }

@@ -13,18 +13,27 @@ namespace detail {
 NameSet::NameSet(std::size_t capacity) {
   std::size_t slots = 16;
   while (slots < 2 * capacity) slots *= 2;  // at most half full: short probe sequences
-  slots_.assign(slots, {});
+  slots_.assign(slots, 0);
+  names_.reserve(capacity);
+}
+
+void NameSet::prefetch(std::string_view name) const {
+  __builtin_prefetch(&slots_[std::hash<std::string_view>{}(name) & (slots_.size() - 1)]);
 }
 
 bool NameSet::insert(std::string_view name) {
   const std::size_t mask = slots_.size() - 1;
-  const std::size_t hash = std::hash<std::string_view>{}(name);
+  const std::uint64_t hash = std::hash<std::string_view>{}(name);
+  // The slot from the low bits, the tag from the high ones: independent of each other.
+  const std::uint64_t tag = hash >> 32;
   for (std::size_t k = hash & mask;; k = (k + 1) & mask) {
-    if (slots_[k].data() == nullptr) {
-      slots_[k] = name;
+    const std::uint64_t slot = slots_[k];
+    if (slot == 0) {
+      names_.push_back(name);
+      slots_[k] = (tag << 32) | static_cast<std::uint64_t>(names_.size());
       return true;
     }
-    if (slots_[k] == name) return false;
+    if ((slot >> 32) == tag && names_[(slot & 0xffffffffu) - 1] == name) return false;
   }
 }
 
