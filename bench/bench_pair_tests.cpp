@@ -161,15 +161,9 @@ const CollidingPairs& collidingPairs() {
     }
     long steps = 0;
     for (const auto& [a, b] : result.plain) {
-      detail::ScaleProblem problem = detail::scaleProblem(detail::canonicalRelativeShape(a, b));
-      double scale = 0.0;
-      int taken = 1;
-      while (taken <= detail::kMaxQuarticSteps && !problem.fallback &&
-             !detail::stepContactScale(problem, &scale)) {
-        ++taken;
-      }
+      const int taken = detail::quarticStepsOf(detail::canonicalRelativeShape(a, b));
       steps += taken;
-      result.fallbacks += problem.fallback || taken > detail::kMaxQuarticSteps ? 1 : 0;
+      result.fallbacks += taken > detail::kMaxQuarticSteps ? 1 : 0;
     }
     result.mean_steps = static_cast<double>(steps) / result.plain.size();
     return result;

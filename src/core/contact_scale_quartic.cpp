@@ -61,8 +61,7 @@ ScaleProblem scaleProblem(const RelativeShape& shape) {
   // the quad oracle, on opposite sides): there the certified maximisation answers, so that
   // contactScale() errs as overlap()'s decision does, not against it (fuzzer finding).
   problem.fallback = !(std::isfinite(problem.offset_scale) && std::isfinite(k2) &&
-                       std::isfinite(at_one) && k0 > 0.0 &&
-                       std::isfinite(k0) && std::isfinite(tau) &&
+                       std::isfinite(at_one) && k0 > 0.0 && std::isfinite(k0) &&
                        tau * tau <= kMaxEigenvalueRatio * delta);
 
   // Start: t^2 ~ d^T M d / |d|^2, the squared radius of the other ellipse along the offset (exact
@@ -156,6 +155,17 @@ double solveContactScale(const RelativeShape& shape) {
   double scale = 0.0;
   solveContactScales(&problem, 1, &scale);
   return scale;
+}
+
+int quarticStepsOf(const RelativeShape& shape) {
+  ScaleProblem problem = scaleProblem(shape);
+  if (problem.offset_scale == 0.0) return 0;
+  if (problem.fallback) return kMaxQuarticSteps + 1;
+  double scale = 0.0;
+  for (int step = 1; step <= kMaxQuarticSteps; ++step) {
+    if (stepContactScale(problem, &scale)) return step;
+  }
+  return kMaxQuarticSteps + 1;
 }
 
 }  // namespace ellipse_collision::core::detail

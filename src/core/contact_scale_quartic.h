@@ -52,4 +52,9 @@ void solveContactScales(ScaleProblem* problems, std::size_t count, double* scale
 /// solveContactScales() of one pair.
 double solveContactScale(const RelativeShape& shape);
 
+/// How many steps solveContactScales() takes on this pair: kMaxQuarticSteps + 1 where the
+/// certified maximisation answers (fallback, or not done within kMaxQuarticSteps), 0 for
+/// coincident centres. For tests and benchmarks.
+int quarticStepsOf(const RelativeShape& shape);
+
 }  // namespace ellipse_collision::core::detail

@@ -138,13 +138,7 @@ TEST(ContactScaleQuartic, BatchGivesTheBitsOfEachPairAlone) {
 /// Steps the problem to its end; returns the steps taken, or kMaxQuarticSteps + 1 for a pair that
 /// takes the certified fallback.
 int stepsOf(const Ellipse& a, const Ellipse& b) {
-  ScaleProblem problem = detail::scaleProblem(detail::canonicalRelativeShape(a, b));
-  if (problem.fallback) return detail::kMaxQuarticSteps + 1;
-  double scale = 0.0;
-  for (int step = 1; step <= detail::kMaxQuarticSteps; ++step) {
-    if (detail::stepContactScale(problem, &scale)) return step;
-  }
-  return detail::kMaxQuarticSteps + 1;
+  return detail::quarticStepsOf(detail::canonicalRelativeShape(a, b));
 }
 
 TEST(ContactScaleQuartic, RobotLikePairsTakeFewStepsAndNoFallback) {
