@@ -41,6 +41,8 @@ class NameSet {
   /// waited on memory.
   void prefetch(std::string_view name) const;
   static constexpr std::size_t kPrefetchAhead = 8;
+  /// Below this many slots (512 kB, some 30,000 names) prefetch() does nothing.
+  static constexpr std::size_t kPrefetchFromSlots = std::size_t{1} << 16;
 
  private:
   /// Per slot 0 (free), or 32 bits of the name's hash above its index in names_ plus one. A probe
