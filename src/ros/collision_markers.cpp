@@ -91,17 +91,33 @@ std::int32_t CollisionMarkers::preferredId(const std::string& name_a, const std:
   return static_cast<std::int32_t>(fnv1a(pairKey(name_a, name_b)) & kIdMask);
 }
 
-std::int32_t CollisionMarkers::lineId(const std::string& key, std::int32_t preferred) {
-  const auto known = line_ids_.find(key);
-  if (known != line_ids_.end()) return known->second;
-  // Never reused: a key that comes back finds its old id above, a clash takes the next free one.
+std::int32_t CollisionMarkers::lineId(const std::string& key, std::int32_t preferred,
+                                     const std::map<std::string, std::int32_t>& ids_now,
+                                     const std::map<std::int32_t, Marker>& lines_now) const {
+  const auto now = ids_now.find(key);
+  if (now != ids_now.end()) return now->second;
+  const auto shown = line_ids_.find(key);
+  if (shown != line_ids_.end()) return shown->second;
+  // A new line avoids every id shown in the last update (its pair may come later in this one)
+  // and every id taken in this one.
   std::int32_t id = preferred;
-  while (line_ids_taken_.count(id)) {
+  while (lines_shown_.count(id) || lines_now.count(id)) {
     id = static_cast<std::int32_t>((static_cast<std::uint32_t>(id) + 1) & kIdMask);
   }
-  line_ids_taken_.insert(id);
-  line_ids_.emplace(key, id);
   return id;
+}
+
+void CollisionMarkers::noteLineDeleted(std::int32_t id) {
+  const std::uint64_t number = ++line_deletions_;
+  line_deletion_number_[id] = number;
+  line_deleted_by_number_[number] = id;
+  line_sweep_ids_.insert(id);
+  if (line_deleted_by_number_.size() > kSweptLineDeletions) {
+    const auto oldest = line_deleted_by_number_.begin();
+    line_deletion_number_.erase(oldest->second);
+    line_sweep_ids_.erase(oldest->second);  // not shown: a shown id has no deletion number
+    line_deleted_by_number_.erase(oldest);
+  }
 }
 
 Marker CollisionMarkers::emptyMarker(const std::string& ns, std::int32_t id) const {
@@ -292,9 +308,13 @@ visualization_msgs::MarkerArray CollisionMarkers::update(
   }
 
   std::map<std::int32_t, Marker> lines_now;
+  std::map<std::string, std::int32_t> ids_now;
   for (const core::NearPair& pair : warnings) {
-    Marker line = emptyMarker(kClearanceNamespace, lineId(pairKey(pair.name_a, pair.name_b),
-                                                          preferredId(pair.name_a, pair.name_b)));
+    const std::string key = pairKey(pair.name_a, pair.name_b);
+    const std::int32_t id =
+        lineId(key, preferredId(pair.name_a, pair.name_b), ids_now, lines_now);
+    ids_now[key] = id;
+    Marker line = emptyMarker(kClearanceNamespace, id);
     line.type = Marker::LINE_LIST;
     line.action = Marker::ADD;
     line.scale.x = kLineWidth;
@@ -309,22 +329,29 @@ visualization_msgs::MarkerArray CollisionMarkers::update(
     if (old == lines_shown_.end() || !samePoints(old->second.points, line.points)) {
       array.markers.push_back(line);
     }
+    const auto deleted = line_deletion_number_.find(id);
+    if (deleted != line_deletion_number_.end()) {  // shown again
+      line_deleted_by_number_.erase(deleted->second);
+      line_deletion_number_.erase(deleted);
+    }
+    line_sweep_ids_.insert(id);
   }
   for (const auto& [id, line] : lines_shown_) {
     if (lines_now.count(id)) continue;
     Marker deletion = emptyMarker(kClearanceNamespace, id);
     deletion.action = Marker::DELETE;
     array.markers.push_back(deletion);
+    noteLineDeleted(id);
   }
   lines_shown_ = std::move(lines_now);
+  line_ids_ = std::move(ids_now);
   return array;
 }
 
 std::size_t CollisionMarkers::appendRefresh(visualization_msgs::MarkerArray& array,
                                             double fraction) {
-  // Line ids are never reused (lineId()), so line_ids_taken_ is every clearance line ever sent.
   const std::array<const std::set<std::int32_t>*, kLayers + 1> parts{
-      &layers_[0].ever_sent, &layers_[1].ever_sent, &line_ids_taken_};
+      &layers_[0].ever_sent, &layers_[1].ever_sent, &line_sweep_ids_};
   std::size_t total = 0;
   for (const std::set<std::int32_t>* ids : parts) total += ids->size();
   if (total == 0 || !(fraction > 0.0)) return 0;
@@ -345,8 +372,9 @@ std::size_t CollisionMarkers::appendRefresh(visualization_msgs::MarkerArray& arr
   std::array<std::vector<std::int32_t>, kLayers + 1> chosen;
   for (std::size_t visited = 0; due > 0 && visited < total;) {
     const std::set<std::int32_t>& ids = *parts[refresh_part_];
-    const auto next = refresh_after_ < 0 ? ids.begin()
-                                         : ids.upper_bound(static_cast<std::int32_t>(refresh_after_));
+    const auto next = refresh_after_ < 0
+                          ? ids.begin()
+                          : ids.upper_bound(static_cast<std::int32_t>(refresh_after_));
     if (next == ids.end()) {
       refresh_part_ = (refresh_part_ + 1) % parts.size();
       refresh_after_ = -1;
@@ -355,7 +383,9 @@ std::size_t CollisionMarkers::appendRefresh(visualization_msgs::MarkerArray& arr
     refresh_after_ = *next;
     ++visited;
     --due;
-    if (!in_array.count({nameSpaceOf(refresh_part_), *next})) chosen[refresh_part_].push_back(*next);
+    if (!in_array.count({nameSpaceOf(refresh_part_), *next})) {
+      chosen[refresh_part_].push_back(*next);
+    }
   }
 
   std::size_t appended = 0;
@@ -377,7 +407,8 @@ std::size_t CollisionMarkers::appendRefresh(visualization_msgs::MarkerArray& arr
       const std::int32_t code = id / kIdsPerState;
       const auto row = std::find_if(kMarkerStates.begin(), kMarkerStates.end(),
                                     [&](const MarkerStateStyle& r) { return r.code == code; });
-      wanted[stateIndex(row->state) * l.buckets + static_cast<std::uint32_t>(id % kIdsPerState)] = 1;
+      const auto bucket = static_cast<std::uint32_t>(id % kIdsPerState);
+      wanted[stateIndex(row->state) * l.buckets + bucket] = 1;
     }
     for (Marker& marker : fills(layer, wanted)) {
       array.markers.push_back(std::move(marker));

@@ -552,7 +552,7 @@ TEST(CollisionMarkers, PreferredIdIsTheFnv1aHashOfTheNameInThirtyOneBits) {
   EXPECT_NE(CollisionMarkers::preferredId("a", "b"), CollisionMarkers::preferredId("b", "a"));
 }
 
-TEST(CollisionMarkers, ClearanceHashClashGivesTheLaterPairTheNextFreeIdForGood) {
+TEST(CollisionMarkers, ClearanceHashClashGivesTheLaterPairTheNextFreeIdWhileItIsShown) {
   // ("arm", "o398824") and ("arm", "o768140") clash in 31-bit FNV-1a (found by search).
   ASSERT_EQ(CollisionMarkers::preferredId("arm", "o398824"),
             CollisionMarkers::preferredId("arm", "o768140"));
@@ -574,6 +574,45 @@ TEST(CollisionMarkers, ClearanceHashClashGivesTheLaterPairTheNextFreeIdForGood) 
   EXPECT_EQ(find(later, "clearance", preferred)->action, Marker::DELETE);
   EXPECT_EQ(find(later, "clearance", preferred + 1)->action, Marker::ADD);
   EXPECT_EQ(find(later, "clearance", preferred + 1)->points[1].y, 3.0);
+  // Once both are gone, nothing of them is kept: the later pair comes back on its preferred id.
+  const MarkerArray none = update(markers, placed, {}, {}, "m", kStamp);
+  EXPECT_EQ(find(none, "clearance", preferred + 1)->action, Marker::DELETE);
+  const MarkerArray back =
+      update(markers, placed, {}, {nearPair("arm", "o768140", {0, 0}, {0, 4})}, "m", kStamp);
+  ASSERT_TRUE(find(back, "clearance", preferred));
+  EXPECT_EQ(find(back, "clearance", preferred)->action, Marker::ADD);
+  EXPECT_EQ(find(back, "clearance", preferred)->points[1].y, 4.0);
+}
+
+TEST(CollisionMarkers, LinesOfPairsLongGoneLeaveTheRefreshSweep) {
+  // A new pair comes near and goes every update, 3 x kSweptLineDeletions of them (tracked
+  // obstacles with ever new names): the sweep sends DELETE for the last kSweptLineDeletions lines
+  // deleted only, and the ADD of the one line shown.
+  const std::size_t pairs = 3 * CollisionMarkers::kSweptLineDeletions;
+  CollisionMarkers markers;
+  for (std::size_t k = 0; k < pairs; ++k) {
+    const std::string track = "track_" + std::to_string(k);
+    update(markers, {named("arm", kLink), named(track, kObstacle, 0, 2)}, {},
+           {nearPair("arm", track, {0, 0}, {0, 1})}, "m", kStamp);
+  }
+  // The last line goes too.
+  MarkerArray sweep = update(markers, {named("arm", kLink)}, {}, {}, "m", kStamp);
+  sweep.markers.clear();
+  markers.appendRefresh(sweep, 1.0);
+  std::size_t line_deletions = 0;
+  for (const Marker& m : sweep.markers) {
+    if (m.ns == "clearance") {
+      EXPECT_EQ(m.action, Marker::DELETE);
+      ++line_deletions;
+    }
+  }
+  EXPECT_EQ(line_deletions, CollisionMarkers::kSweptLineDeletions);
+  // The newest are among them, the oldest not.
+  const auto swept = [&sweep](const std::string& track) {
+    return find(sweep, "clearance", CollisionMarkers::preferredId("arm", track)) != nullptr;
+  };
+  EXPECT_TRUE(swept("track_" + std::to_string(pairs - 1)));
+  EXPECT_FALSE(swept("track_0"));
 }
 
 TEST(CollisionMarkers, WarningPairIsALineBetweenItsWitnessPointsAboveTheEllipses) {

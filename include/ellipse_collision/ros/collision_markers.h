@@ -80,12 +80,13 @@ class CollisionMarkers {
   visualization_msgs::MarkerArray fullArray() const;
 
   /// Appends to `array` (an update() about to be published) the next slice of the refresh sweep:
-  /// every marker id this object ever sent, in turn, again as it is now (ADD with its content if
-  /// shown, DELETE if not), `fraction` of them per call (the share of the refresh period since the
-  /// last call; fractions of a marker carry over), skipping ids `array` already holds. A
-  /// subscriber that lost arrays (a publisher queue overflowing behind a slow rviz) is thus
-  /// whole again once a sweep has passed, and nothing is sent twice in one array. Returns how
-  /// many markers it appended.
+  /// every fill id this object ever sent (at most 4 states x 4,096 buckets per namespace) and the
+  /// clearance lines shown or among the last kSweptLineDeletions deleted, in turn, again as they
+  /// are now (ADD with its content if shown, DELETE if not). `fraction` of them per call (the
+  /// share of the refresh period since the last call; fractions of a marker carry over, at most
+  /// one whole sweep is owed), skipping ids `array` already holds. A subscriber that lost arrays
+  /// (a publisher queue overflowing behind a slow rviz) is thus whole again once a sweep has
+  /// passed, and nothing is sent twice in one array. Returns how many markers it appended.
   std::size_t appendRefresh(visualization_msgs::MarkerArray& array, double fraction);
 
   static const char* nameSpace(core::EllipseRole role);
@@ -95,9 +96,15 @@ class CollisionMarkers {
 
   /// A 31-bit FNV-1a hash of the name, the same in every run (the bucket is this modulo B).
   static std::int32_t preferredId(const std::string& name);
-  /// The id of the clearance line of a warning pair (names in the pair's order). Only if another
-  /// pair took it first (a hash clash) does the pair get the next free id instead.
+  /// The id the clearance line of a warning pair (names in the pair's order) gets when it appears.
+  /// Only if a line shown holds it (a hash clash) does the pair get the next free id instead, and
+  /// keeps that while its line stays shown.
   static std::int32_t preferredId(const std::string& name_a, const std::string& name_b);
+
+  /// The refresh sweep keeps sending DELETE for the clearance lines deleted last, up to this many:
+  /// pairs come and go without end (tracked obstacles with ever new names), and neither memory
+  /// nor the sweep may grow with every pair that ever came near.
+  static constexpr std::size_t kSweptLineDeletions = 1024;
 
  private:
   /// One drawn ellipse, as last sent.
@@ -124,17 +131,26 @@ class CollisionMarkers {
   std::vector<visualization_msgs::Marker> fills(std::size_t layer,
                                                 const std::vector<char>& wanted) const;
   visualization_msgs::Marker emptyMarker(const std::string& ns, std::int32_t id) const;
-  std::int32_t lineId(const std::string& key, std::int32_t preferred);
+  std::int32_t lineId(const std::string& key, std::int32_t preferred,
+                      const std::map<std::string, std::int32_t>& ids_now,
+                      const std::map<std::int32_t, visualization_msgs::Marker>& lines_now) const;
+  void noteLineDeleted(std::int32_t id);
 
   std::array<Layer, kLayers> layers_;
   std::uint64_t generation_{0};
   std::string fixed_frame_;
   ros::Time stamp_;
 
-  // Clearance lines: ids handed out (never reused for another pair) and the lines shown.
+  // Clearance lines shown: each pair's id (by pairKey()) and each id's line. Only lines shown are
+  // remembered.
   std::map<std::string, std::int32_t> line_ids_;
-  std::set<std::int32_t> line_ids_taken_;
   std::map<std::int32_t, visualization_msgs::Marker> lines_shown_;
+  // The sweep's clearance ids: the lines shown and the last kSweptLineDeletions deleted, which
+  // are kept by deletion number (and forgotten oldest first) while not shown again.
+  std::set<std::int32_t> line_sweep_ids_;
+  std::map<std::int32_t, std::uint64_t> line_deletion_number_;
+  std::map<std::uint64_t, std::int32_t> line_deleted_by_number_;
+  std::uint64_t line_deletions_{0};
 
   // The refresh sweep's position: the last id refreshed in part refresh_part_ (0, 1: the layers'
   // fills, 2: clearance lines), and the fraction of a marker owed to the next call.
