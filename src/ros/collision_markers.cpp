@@ -1,6 +1,7 @@
 #include "ellipse_collision/ros/collision_markers.h"
 
 #include <algorithm>
+#include <type_traits>
 #include <unordered_set>
 
 #include "ellipse_collision/core/ellipse_polygon.h"
@@ -111,11 +112,9 @@ void CollisionMarkers::noteLineDeleted(std::int32_t id) {
   const std::uint64_t number = ++line_deletions_;
   line_deletion_number_[id] = number;
   line_deleted_by_number_[number] = id;
-  line_sweep_ids_.insert(id);
   if (line_deleted_by_number_.size() > kSweptLineDeletions) {
     const auto oldest = line_deleted_by_number_.begin();
     line_deletion_number_.erase(oldest->second);
-    line_sweep_ids_.erase(oldest->second);  // not shown: a shown id has no deletion number
     line_deleted_by_number_.erase(oldest);
   }
 }
@@ -334,7 +333,6 @@ visualization_msgs::MarkerArray CollisionMarkers::update(
       line_deleted_by_number_.erase(deleted->second);
       line_deletion_number_.erase(deleted);
     }
-    line_sweep_ids_.insert(id);
   }
   for (const auto& [id, line] : lines_shown_) {
     if (lines_now.count(id)) continue;
@@ -350,10 +348,29 @@ visualization_msgs::MarkerArray CollisionMarkers::update(
 
 std::size_t CollisionMarkers::appendRefresh(visualization_msgs::MarkerArray& array,
                                             double fraction) {
-  const std::array<const std::set<std::int32_t>*, kLayers + 1> parts{
-      &layers_[0].ever_sent, &layers_[1].ever_sent, &line_sweep_ids_};
-  std::size_t total = 0;
-  for (const std::set<std::int32_t>* ids : parts) total += ids->size();
+  // The sweep's parts: each layer's fill ids, then the clearance ids, those shown and those
+  // deleted lately (a shown id has no deletion number, so the two never share an id).
+  constexpr std::size_t kParts = kLayers + 1;
+  const auto firstAfter = [](const auto& ordered, std::int64_t after) -> std::int64_t {
+    const auto it = after < 0 ? ordered.begin()
+                              : ordered.upper_bound(static_cast<std::int32_t>(after));
+    if (it == ordered.end()) return -1;
+    if constexpr (std::is_same_v<std::decay_t<decltype(ordered)>, std::set<std::int32_t>>) {
+      return *it;
+    } else {
+      return it->first;
+    }
+  };
+  // The part's first id after `after` (-1: none; ids are >= 0).
+  const auto nextIn = [&](std::size_t part, std::int64_t after) -> std::int64_t {
+    if (part < kLayers) return firstAfter(layers_[part].ever_sent, after);
+    const std::int64_t shown = firstAfter(lines_shown_, after);
+    const std::int64_t deleted = firstAfter(line_deletion_number_, after);
+    if (shown < 0 || deleted < 0) return std::max(shown, deleted);
+    return std::min(shown, deleted);
+  };
+  const std::size_t total = layers_[0].ever_sent.size() + layers_[1].ever_sent.size() +
+                            lines_shown_.size() + line_deletion_number_.size();
   if (total == 0 || !(fraction > 0.0)) return 0;
   // A long gap owes one whole sweep, not several.
   refresh_owed_ = std::min(refresh_owed_ + std::min(fraction, 1.0) * static_cast<double>(total),
@@ -369,23 +386,19 @@ std::size_t CollisionMarkers::appendRefresh(visualization_msgs::MarkerArray& arr
   };
   // Walk the sweep: ids in order within a part, the parts in turn. An id already in `array` counts
   // as refreshed (it goes out now anyway).
-  std::array<std::vector<std::int32_t>, kLayers + 1> chosen;
+  std::array<std::vector<std::int32_t>, kParts> chosen;
   for (std::size_t visited = 0; due > 0 && visited < total;) {
-    const std::set<std::int32_t>& ids = *parts[refresh_part_];
-    const auto next = refresh_after_ < 0
-                          ? ids.begin()
-                          : ids.upper_bound(static_cast<std::int32_t>(refresh_after_));
-    if (next == ids.end()) {
-      refresh_part_ = (refresh_part_ + 1) % parts.size();
+    const std::int64_t next = nextIn(refresh_part_, refresh_after_);
+    if (next < 0) {
+      refresh_part_ = (refresh_part_ + 1) % kParts;
       refresh_after_ = -1;
       continue;
     }
-    refresh_after_ = *next;
+    refresh_after_ = next;
     ++visited;
     --due;
-    if (!in_array.count({nameSpaceOf(refresh_part_), *next})) {
-      chosen[refresh_part_].push_back(*next);
-    }
+    const auto id = static_cast<std::int32_t>(next);
+    if (!in_array.count({nameSpaceOf(refresh_part_), id})) chosen[refresh_part_].push_back(id);
   }
 
   std::size_t appended = 0;

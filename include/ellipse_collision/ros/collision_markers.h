@@ -145,9 +145,8 @@ class CollisionMarkers {
   // remembered.
   std::map<std::string, std::int32_t> line_ids_;
   std::map<std::int32_t, visualization_msgs::Marker> lines_shown_;
-  // The sweep's clearance ids: the lines shown and the last kSweptLineDeletions deleted, which
-  // are kept by deletion number (and forgotten oldest first) while not shown again.
-  std::set<std::int32_t> line_sweep_ids_;
+  // The last kSweptLineDeletions clearance lines deleted and not shown again, for the sweep, by
+  // deletion number both ways (forgotten oldest first).
   std::map<std::int32_t, std::uint64_t> line_deletion_number_;
   std::map<std::uint64_t, std::int32_t> line_deleted_by_number_;
   std::uint64_t line_deletions_{0};
