@@ -10,9 +10,15 @@
 # they share the machine's noise; medians per build at the end. Not part of CI.
 #
 #   scripts/rviz_fps.sh [--obstacles N] [--runs R] [--warmup S] [--window S] [--display :97]
-#                       [--scale PX_PER_M] [--screenshot PATH] [--still] LABEL=PATH/TO/ellipse_collision_node...
+#                       [--scale PX_PER_M] [--centre X,Y] [--screenshot PATH] [--still]
+#                       LABEL=PATH/TO/ellipse_collision_node...
 #
 # --still parks the links (the scene never changes): rviz's drawing ceiling without marker traffic.
+# --centre puts the view's focal point at X, Y [m] in `map` (default: the field's centre). Far off
+# the field (e.g. --centre -1000,-1000) nothing is in view and the graphics driver draws no
+# triangle (rviz culls each marker by its bounding box): what is left is rviz's own work on the
+# markers (receiving them, rebuilding the changed ones, walking the scene), which a GPU does not
+# take off the CPU.
 #
 # A build's libraries are taken from the node's RUNPATH, or from a `lib` directory beside the
 # binary if there is one (a saved copy of an older build). Without LABEL=... it measures this
@@ -27,6 +33,7 @@ warmup=20
 window=30
 display=":97"
 scale=""
+view_centre=""
 screenshot=""
 scene_args=()
 builds=()
@@ -38,10 +45,11 @@ while (($#)); do
     --window) window="$2"; shift 2 ;;
     --display) display="$2"; shift 2 ;;
     --scale) scale="$2"; shift 2 ;;
+    --centre) view_centre="$2"; shift 2 ;;
     --screenshot) screenshot="$2"; shift 2 ;;
     --still) scene_args+=(--still); shift ;;
     *=*) builds+=("$1"); shift ;;
-    *) sed -n '2,20p' "$0" >&2; exit 2 ;;
+    *) sed -n '2,25p' "$0" >&2; exit 2 ;;
   esac
 done
 ((${#builds[@]})) || builds=("current=${repo}/build/ws/devel/lib/ellipse_collision/ellipse_collision_node")
@@ -58,7 +66,10 @@ gcc -shared -fPIC -O2 -Wall -o "${out}/glx_frame_log.so" "${repo}/bench/glx_fram
 side_m="$(/usr/bin/python3 -c "import math; print(math.ceil(math.sqrt(${obstacles})) * 0.6)")"
 [[ -n "${scale}" ]] || scale="$(/usr/bin/python3 -c "print(round(700 / (${side_m} + 2), 2))")"
 centre="$(/usr/bin/python3 -c "print(${side_m} / 2 - 0.3)")"
-sed -e "s/@SCALE@/${scale}/" -e "s/@X@/${centre}/" -e "s/@Y@/${centre}/" \
+centre_x="${view_centre%%,*}"
+centre_y="${view_centre#*,}"
+[[ -n "${view_centre}" ]] || { centre_x="${centre}"; centre_y="${centre}"; }
+sed -e "s/@SCALE@/${scale}/" -e "s/@X@/${centre_x}/" -e "s/@Y@/${centre_y}/" \
   "${repo}/bench/rviz_fps.rviz" > "${out}/view.rviz"
 
 # The node's configuration: 20 links, one per moving frame; no configured obstacles.
