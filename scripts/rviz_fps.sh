@@ -11,7 +11,7 @@
 #
 #   scripts/rviz_fps.sh [--obstacles N] [--runs R] [--warmup S] [--window S] [--display :97]
 #                       [--scale PX_PER_M] [--centre X,Y] [--screenshot PATH] [--still]
-#                       LABEL=PATH/TO/ellipse_collision_node...
+#                       [--synthetic MARKERS,TRIANGLES] LABEL=PATH/TO/ellipse_collision_node...
 #
 # --still parks the links (the scene never changes): rviz's drawing ceiling without marker traffic.
 # --centre puts the view's focal point at X, Y [m] in `map` (default: the field's centre). Far off
@@ -19,6 +19,10 @@
 # triangle (rviz culls each marker by its bounding box): what is left is rviz's own work on the
 # markers (receiving them, rebuilding the changed ones, walking the scene), which a GPU does not
 # take off the CPU.
+# --synthetic M,T replaces the node and its scene by bench/rviz_marker_count.py: M markers of T
+# tiny triangles each, published once, nearly nothing to rasterise, the view on them (the
+# LABEL=PATH arguments are ignored). rviz's cost per marker drawn, which a GPU does not remove
+# either: compare M,T with M/8,8T (the same triangles in fewer markers).
 #
 # A build's libraries are taken from the node's RUNPATH, or from a `lib` directory beside the
 # binary if there is one (a saved copy of an older build). Without LABEL=... it measures this
@@ -36,6 +40,7 @@ scale=""
 view_centre=""
 screenshot=""
 scene_args=()
+synthetic=""
 builds=()
 while (($#)); do
   case "$1" in
@@ -48,11 +53,17 @@ while (($#)); do
     --centre) view_centre="$2"; shift 2 ;;
     --screenshot) screenshot="$2"; shift 2 ;;
     --still) scene_args+=(--still); shift ;;
+    --synthetic) synthetic="$2"; shift 2 ;;
     *=*) builds+=("$1"); shift ;;
-    *) sed -n '2,25p' "$0" >&2; exit 2 ;;
+    *) sed -n '2,29p' "$0" >&2; exit 2 ;;
   esac
 done
 ((${#builds[@]})) || builds=("current=${repo}/build/ws/devel/lib/ellipse_collision/ellipse_collision_node")
+if [[ -n "${synthetic}" ]]; then
+  builds=("synthetic_${synthetic/,/x}=none")
+  # The grid the synthetic triangles lie on, in place of the obstacles'.
+  obstacles="$((${synthetic%%,*} * ${synthetic#*,}))"
+fi
 
 out="${repo}/build/rviz_fps"
 mkdir -p "${out}"
@@ -114,13 +125,21 @@ for run in $(seq "${runs}"); do
     rm -f "${out}/obstacle_store" "${out}/frames_${tag}.log" "${out}/scene_${tag}.json"
     rosparam delete /ellipse_collision > /dev/null 2>&1 || true
     rosparam load "${out}/node.yaml" /ellipse_collision
-    LD_LIBRARY_PATH="${libs}${LD_LIBRARY_PATH:+:${LD_LIBRARY_PATH}}" "${node}" __name:=ellipse_collision \
-      > "${out}/node_${tag}.txt" 2>&1 &
-    node_pid=$!
-    pids+=(${node_pid})
-    /usr/bin/python3 "${repo}/bench/rviz_fps_scene.py" --obstacles "${obstacles}" --warmup "${warmup}" \
-      --window "${window}" --stats "${out}/scene_${tag}.json" ${scene_args[@]+"${scene_args[@]}"} > "${out}/scene_${tag}.txt" 2>&1 &
-    pids+=($!)
+    if [[ -n "${synthetic}" ]]; then
+      # "node CPU" is then the publisher's.
+      /usr/bin/python3 "${repo}/bench/rviz_marker_count.py" "${synthetic%%,*}" "${synthetic#*,}" \
+        > "${out}/node_${tag}.txt" 2>&1 &
+      node_pid=$!
+      pids+=(${node_pid})
+    else
+      LD_LIBRARY_PATH="${libs}${LD_LIBRARY_PATH:+:${LD_LIBRARY_PATH}}" "${node}" __name:=ellipse_collision \
+        > "${out}/node_${tag}.txt" 2>&1 &
+      node_pid=$!
+      pids+=(${node_pid})
+      /usr/bin/python3 "${repo}/bench/rviz_fps_scene.py" --obstacles "${obstacles}" --warmup "${warmup}" \
+        --window "${window}" --stats "${out}/scene_${tag}.json" ${scene_args[@]+"${scene_args[@]}"} > "${out}/scene_${tag}.txt" 2>&1 &
+      pids+=($!)
+    fi
     DISPLAY="${display}" LIBGL_ALWAYS_SOFTWARE=1 FRAME_LOG="${out}/frames_${tag}.log" \
       LD_PRELOAD="${out}/glx_frame_log.so" rviz -d "${out}/view.rviz" > "${out}/rviz_${tag}.txt" 2>&1 &
     rviz_pid=$!

@@ -13,8 +13,13 @@ using visualization_msgs::Marker;
 
 constexpr std::uint32_t kIdMask = 0x7fffffffu;  // marker ids are int32; keep them >= 0
 constexpr std::size_t kStateCount = kMarkerStates.size();
-// B's ceiling: beyond 4096 x kEllipsesPerMarker = 131,072 ellipses the buckets grow instead.
-constexpr std::uint32_t kMaxBuckets = 4096;
+// B's ceiling: beyond 1024 x kEllipsesPerMarker = 32,768 ellipses the buckets grow instead.
+// rviz draws each marker with a draw call of its own, some 4-7 us of its one render thread per
+// marker and frame (scripts/rviz_fps.sh --synthetic: the same 4,096 triangles in 4,096 markers
+// took all of a core at 25-30 frames/s, in 1,024 markers 57-66 % at 31), so 4,096 markers of
+// 100,000 obstacles would cost it most of a frame at 30 Hz before any triangle was drawn; larger
+// buckets re-send more per change (at 100,000 obstacles, 24 against 17 MB/s).
+constexpr std::uint32_t kMaxBuckets = 1024;
 static_assert(kMaxBuckets <= static_cast<std::uint32_t>(CollisionMarkers::kIdsPerState));
 
 std::uint32_t fnv1a(const std::string& bytes, std::uint32_t hash = 2166136261u) {

@@ -3,6 +3,7 @@
 // DELETE, and that only changes are sent; no master.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <set>
@@ -329,6 +330,26 @@ TEST(CollisionMarkers, ManyEllipsesAreSplitIntoBoundedMarkersThatRegroupWhenTheC
   EXPECT_EQ(view.shown().begin()->second.points.size(),
             7u * 3 * (core::drawSegments(placed[0].ellipse) - 2));
   EXPECT_TRUE(isGreen(fillOf(view, "obstacles", placed[6].ellipse)));
+}
+
+TEST(CollisionMarkers, BeyondAThousandBucketsTheBucketsGrowNotTheirCount) {
+  // rviz spends a draw call per marker and frame (kMaxBuckets): 40,000 obstacles would be 2,048
+  // buckets of about 20 at 32 per bucket; they are 1,024 of about 39.
+  CollisionMarkers markers;
+  std::vector<core::NamedEllipse> placed;
+  for (int i = 0; i < 40000; ++i) placed.push_back(named("o" + std::to_string(i), kObstacle, i, 0));
+  MarkerView view;
+  view.apply(update(markers, placed, {}, {}, "m", kStamp));
+  EXPECT_EQ(view.shown().size(), 1024u);
+  const std::size_t per_ellipse = 3 * (core::drawSegments(placed[0].ellipse) - 2);
+  std::size_t points = 0, largest = 0;
+  for (const auto& [key, m] : view.shown()) {
+    points += m.points.size();
+    largest = std::max(largest, m.points.size());
+  }
+  EXPECT_EQ(points, 40000u * per_ellipse);  // each ellipse once
+  EXPECT_GT(largest, 32u * per_ellipse);    // more than 32 per bucket now...
+  EXPECT_LE(largest, 2u * 40000 / 1024 * per_ellipse);  // ...and at most twice the mean share
 }
 
 /// A random scene that evolves update by update: moves, removals and returns among 600 names (10

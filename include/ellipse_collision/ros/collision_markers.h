@@ -80,7 +80,7 @@ class CollisionMarkers {
   visualization_msgs::MarkerArray fullArray() const;
 
   /// Appends to `array` (an update() about to be published) the next slice of the refresh sweep:
-  /// every fill id this object ever sent (at most 4 states x 4,096 buckets per namespace) and the
+  /// every fill id this object ever sent (at most 4 states x 1,024 buckets per namespace) and the
   /// clearance lines shown or among the last kSweptLineDeletions deleted, in turn, again as they
   /// are now (ADD with its content if shown, DELETE if not). `fraction` of them per call (the
   /// share of the refresh period since the last call; fractions of a marker carry over, at most
