@@ -45,9 +45,10 @@ inline constexpr std::array<MarkerStateStyle, 4> kMarkerStates{{
 /// kEllipseAlpha), flat at z = 0. So that a change does not re-send a namespace's every ellipse,
 /// a namespace's ellipses are split by a hash of their name into B buckets (B a power of two,
 /// about kEllipsesPerMarker ellipses per bucket; it changes only when the count leaves
-/// [kEllipsesPerMarker / 4 B, kEllipsesPerMarker B]); one marker per (state, bucket) with id
-/// code * kIdsPerState + bucket. A marker is sent when an ellipse in it appeared, moved, changed
-/// state or went away, and DELETEd when its bucket holds no ellipse of its state any more.
+/// [kEllipsesPerMarker / 4 B, kEllipsesPerMarker B]; at most 1,024, since rviz spends a draw
+/// call per marker and frame, so beyond that the buckets grow); one marker per (state, bucket)
+/// with id code * kIdsPerState + bucket. A marker is sent when an ellipse in it appeared, moved,
+/// changed state or went away, and DELETEd when its bucket holds no ellipse of its state any more.
 ///
 /// Clearance: namespace `clearance`, one LINE_LIST segment per warning pair between its witness
 /// points, id from preferredId(name_a, name_b), re-sent when the points move, DELETEd when the
