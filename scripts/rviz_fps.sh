@@ -180,7 +180,11 @@ PY
 done
 
 echo
-echo "Medians over ${runs} runs (${obstacles} obstacles, 20 moving links, node at 30 Hz, rviz target 30 fps):"
+if [[ -n "${synthetic}" ]]; then
+  echo "Medians over ${runs} runs (${synthetic%%,*} markers of ${synthetic#*,} triangles, no node: \"node CPU\" is the publisher's; rviz target 30 fps):"
+else
+  echo "Medians over ${runs} runs (${obstacles} obstacles, 20 moving links, node at 30 Hz, rviz target 30 fps):"
+fi
 /usr/bin/python3 - "${results}" <<'PY'
 import statistics, sys
 rows = [line.split() for line in open(sys.argv[1])][1:]
