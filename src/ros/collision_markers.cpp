@@ -1,6 +1,7 @@
 #include "ellipse_collision/ros/collision_markers.h"
 
 #include <algorithm>
+#include <optional>
 #include <type_traits>
 #include <unordered_set>
 
@@ -36,6 +37,17 @@ std::string pairKey(const std::string& name_a, const std::string& name_b) {
 }
 
 std::size_t stateIndex(MarkerState state) { return static_cast<std::size_t>(state); }
+
+/// The inverse of CollisionMarkers::fillId() in a namespace of `buckets` buckets: the slot
+/// (state index * B + bucket) of fill marker `id`, or none if no current slot has that id.
+std::optional<std::size_t> slotOfFillId(std::int32_t id, std::uint32_t buckets) {
+  const std::int32_t code = id / CollisionMarkers::kIdsPerState;
+  const auto bucket = static_cast<std::uint32_t>(id % CollisionMarkers::kIdsPerState);
+  const auto row = std::find_if(kMarkerStates.begin(), kMarkerStates.end(),
+                                [code](const MarkerStateStyle& r) { return r.code == code; });
+  if (row == kMarkerStates.end() || bucket >= buckets) return std::nullopt;
+  return stateIndex(row->state) * buckets + bucket;
+}
 
 void setColour(Marker& marker, float r, float g, float b, float alpha) {
   marker.color.r = r;
@@ -292,12 +304,8 @@ visualization_msgs::MarkerArray CollisionMarkers::update(
     }
     const char* ns = nameSpace(layer == 0 ? core::EllipseRole::Link : core::EllipseRole::Obstacle);
     for (auto it = l.shown.begin(); it != l.shown.end();) {
-      const std::int32_t code = *it / kIdsPerState;
-      const std::uint32_t bucket = static_cast<std::uint32_t>(*it % kIdsPerState);
-      const auto s = std::find_if(kMarkerStates.begin(), kMarkerStates.end(),
-                                  [&](const MarkerStateStyle& row) { return row.code == code; });
-      const bool asked = rebuild[layer] || s == kMarkerStates.end() ||
-                         dirty[layer][stateIndex(s->state) * l.buckets + bucket];
+      const std::optional<std::size_t> slot = slotOfFillId(*it, l.buckets);
+      const bool asked = rebuild[layer] || !slot || dirty[layer][*slot];
       if (!asked || sent.count(*it)) {
         ++it;
         continue;
@@ -422,11 +430,7 @@ std::size_t CollisionMarkers::appendRefresh(visualization_msgs::MarkerArray& arr
         continue;
       }
       // A shown id is always of a current bucket (a change of B deletes the rest).
-      const std::int32_t code = id / kIdsPerState;
-      const auto row = std::find_if(kMarkerStates.begin(), kMarkerStates.end(),
-                                    [&](const MarkerStateStyle& r) { return r.code == code; });
-      const auto bucket = static_cast<std::uint32_t>(id % kIdsPerState);
-      wanted[stateIndex(row->state) * l.buckets + bucket] = 1;
+      if (const std::optional<std::size_t> slot = slotOfFillId(id, l.buckets)) wanted[*slot] = 1;
     }
     for (Marker& marker : fills(layer, wanted)) {
       array.markers.push_back(std::move(marker));
