@@ -13,6 +13,7 @@ set(ELLIPSE_COLLISION_CORE_SOURCES
   src/core/first_contact.cpp
   src/core/frame_projection.cpp
   src/core/indexed_obstacles.cpp
+  src/core/median_partition.cpp
   src/core/motion_line_parser.cpp
   src/core/number_fields.cpp
   src/core/number_format.cpp

@@ -35,7 +35,8 @@ ellipse_collision_add_gtest(test_scene_core LIBRARIES ellipse_collision_core SOU
   test/core/test_frame_projection.cpp
   test/core/test_scene_check.cpp
   test/core/test_scene_broadphase.cpp
-  test/core/test_scene_clearance.cpp)
+  test/core/test_scene_clearance.cpp
+  test/core/test_median_partition.cpp)
 ellipse_collision_add_gtest(test_distance LIBRARIES ellipse_collision_core quadmath SOURCES
   test/core/test_distance.cpp
   test/support/contact_scale_oracle.cpp)

@@ -23,7 +23,8 @@ constexpr std::size_t kStateCount = kMarkerStates.size();
 constexpr std::uint32_t kMaxBuckets = 1024;
 static_assert(kMaxBuckets <= static_cast<std::uint32_t>(CollisionMarkers::kIdsPerState));
 
-std::uint32_t fnv1a(const std::string& bytes, std::uint32_t hash = 2166136261u) {
+std::uint32_t fnv1a(const std::string& bytes) {
+  std::uint32_t hash = 2166136261u;
   for (const char c : bytes) {
     hash ^= static_cast<unsigned char>(c);
     hash *= 16777619u;
@@ -101,10 +102,6 @@ std::int32_t CollisionMarkers::fillId(MarkerState state, std::uint32_t bucket) {
   return style(state).code * kIdsPerState + static_cast<std::int32_t>(bucket);
 }
 
-std::int32_t CollisionMarkers::preferredId(const std::string& name) {
-  return static_cast<std::int32_t>(fnv1a(name) & kIdMask);
-}
-
 std::int32_t CollisionMarkers::preferredId(const std::string& name_a, const std::string& name_b) {
   return static_cast<std::int32_t>(fnv1a(pairKey(name_a, name_b)) & kIdMask);
 }
@@ -134,6 +131,18 @@ void CollisionMarkers::noteLineDeleted(std::int32_t id) {
     line_deletion_number_.erase(oldest->second);
     line_deleted_by_number_.erase(oldest);
   }
+}
+
+std::size_t CollisionMarkers::largestCell(const Layer& layer) {
+  std::size_t largest = 0;
+  for (std::uint32_t cell = 0; cell < layer.buckets; ++cell) {
+    std::size_t in_cell = 0;
+    for (std::size_t state = 0; state < kStateCount; ++state) {
+      in_cell += layer.members[state * layer.buckets + cell].size();
+    }
+    largest = std::max(largest, in_cell);
+  }
+  return largest;
 }
 
 Marker CollisionMarkers::emptyMarker(const std::string& ns, std::int32_t id) const {
@@ -201,32 +210,32 @@ visualization_msgs::MarkerArray CollisionMarkers::update(
   for (std::size_t i = 0; i < placed.size(); ++i) {
     if (placed.role(i) != core::EllipseRole::Query) ++counts[layerOf(placed.role(i))];
   }
-  std::array<bool, kLayers> rebuild{};
-  std::array<std::vector<char>, kLayers> dirty;  // by state index * B + bucket
+  std::array<bool, kLayers> regroup{};
+  std::array<std::vector<char>, kLayers> dirty;  // by state index * B + cell
   for (std::size_t layer = 0; layer < kLayers; ++layer) {
     Layer& l = layers_[layer];
     const std::uint32_t buckets = bucketsFor(counts[layer], l.buckets);
-    // Every bucket changes (or, at the first update, none exists yet): regroup, send all anew.
-    rebuild[layer] = buckets != l.buckets || l.members.size() != kStateCount * buckets;
+    // Every marker changes (or, at the first update, none exists yet): cut anew and send all,
+    // below, once the entries are where the scene has them now.
+    regroup[layer] = buckets != l.buckets || l.members.size() != kStateCount * buckets;
     l.buckets = buckets;
-    dirty[layer].assign(kStateCount * buckets, rebuild[layer] ? 1 : 0);
+    dirty[layer].assign(kStateCount * buckets, regroup[layer] ? 1 : 0);
   }
-  const auto indexOf = [&](std::size_t layer, MarkerState state, std::uint32_t hash) {
-    return stateIndex(state) * layers_[layer].buckets + hash % layers_[layer].buckets;
+  const auto indexOf = [&](std::size_t layer, MarkerState state, std::uint32_t cell) {
+    return stateIndex(state) * layers_[layer].buckets + cell;
   };
-  const auto markDirty = [&](std::size_t layer, MarkerState state, std::uint32_t hash) {
-    dirty[layer][indexOf(layer, state, hash)] = 1;
+  // In a layer cut anew everything is sent and grouped below: nothing to mark or move.
+  const auto markDirty = [&](std::size_t layer, MarkerState state, std::uint32_t cell) {
+    if (!regroup[layer]) dirty[layer][indexOf(layer, state, cell)] = 1;
   };
-  // Membership is kept up to date entry by entry, except in a layer whose B changed: that one is
-  // regrouped as a whole below.
   const auto join = [&](std::size_t layer, Entry* entry) {
-    if (rebuild[layer]) return;
-    layers_[layer].members[indexOf(layer, entry->state, entry->hash)].push_back(entry);
+    if (regroup[layer]) return;
+    layers_[layer].members[indexOf(layer, entry->state, entry->cell)].push_back(entry);
   };
   const auto leave = [&](std::size_t layer, Entry* entry) {
-    if (rebuild[layer]) return;
+    if (regroup[layer]) return;
     std::vector<Entry*>& members =
-        layers_[layer].members[indexOf(layer, entry->state, entry->hash)];
+        layers_[layer].members[indexOf(layer, entry->state, entry->cell)];
     const auto it = std::find(members.begin(), members.end(), entry);
     *it = members.back();
     members.pop_back();
@@ -256,17 +265,25 @@ visualization_msgs::MarkerArray CollisionMarkers::update(
     if (!entry) {
       entry = &l.entries[name];
       entry->name = name;
-      entry->hash = fnv1a(name) & kIdMask;
       entry->ellipse = ellipse;
       entry->state = state;
-      markDirty(layer, state, entry->hash);
+      if (!regroup[layer]) entry->cell = l.partition.cellOf(ellipse.center);
+      markDirty(layer, state, entry->cell);
       join(layer, entry);
+    } else if (regroup[layer]) {
+      entry->ellipse = ellipse;
+      entry->state = state;
     } else if (entry->state != state || !sameEllipse(entry->ellipse, ellipse)) {
-      markDirty(layer, entry->state, entry->hash);
-      markDirty(layer, state, entry->hash);
-      if (entry->state != state) {
+      // An ellipse that moved into another cell leaves its old marker for that cell's.
+      const std::uint32_t cell = entry->ellipse.center == ellipse.center
+                                     ? entry->cell
+                                     : l.partition.cellOf(ellipse.center);
+      markDirty(layer, entry->state, entry->cell);
+      markDirty(layer, state, cell);
+      if (entry->state != state || entry->cell != cell) {
         leave(layer, entry);
         entry->state = state;
+        entry->cell = cell;
         join(layer, entry);
       }
       entry->ellipse = ellipse;
@@ -285,16 +302,29 @@ visualization_msgs::MarkerArray CollisionMarkers::update(
         ++it;
         continue;
       }
-      markDirty(layer, it->second.state, it->second.hash);
+      markDirty(layer, it->second.state, it->second.cell);
       leave(layer, &it->second);
       it = l.entries.erase(it);
     }
     l.by_position = std::move(positions[layer]);
-    if (rebuild[layer]) {
+    // Ellipses crowding into one place: once a cell holds more than twice what the fullest held
+    // when cut, each change there would re-send that many; cut anew.
+    if (!regroup[layer] &&
+        largestCell(l) > 2 * std::max(l.largest_cell_when_cut, kEllipsesPerMarker)) {
+      regroup[layer] = true;
+      dirty[layer].assign(dirty[layer].size(), 1);
+    }
+    if (regroup[layer]) {
+      std::vector<Eigen::Vector2d> centres;
+      centres.reserve(l.entries.size());
+      for (const auto& [name, entry] : l.entries) centres.push_back(entry.ellipse.center);
+      l.partition = core::MedianPartition(std::move(centres), l.buckets);
       l.members.assign(kStateCount * l.buckets, {});
       for (auto& [name, entry] : l.entries) {
-        l.members[indexOf(layer, entry.state, entry.hash)].push_back(&entry);
+        entry.cell = l.partition.cellOf(entry.ellipse.center);
+        l.members[indexOf(layer, entry.state, entry.cell)].push_back(&entry);
       }
+      l.largest_cell_when_cut = largestCell(l);
     }
 
     std::set<std::int32_t> sent;
@@ -305,7 +335,7 @@ visualization_msgs::MarkerArray CollisionMarkers::update(
     const char* ns = nameSpace(layer == 0 ? core::EllipseRole::Link : core::EllipseRole::Obstacle);
     for (auto it = l.shown.begin(); it != l.shown.end();) {
       const std::optional<std::size_t> slot = slotOfFillId(*it, l.buckets);
-      const bool asked = rebuild[layer] || !slot || dirty[layer][*slot];
+      const bool asked = regroup[layer] || !slot || dirty[layer][*slot];
       if (!asked || sent.count(*it)) {
         ++it;
         continue;

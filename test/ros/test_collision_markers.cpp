@@ -8,6 +8,7 @@
 #include <random>
 #include <set>
 
+#include "ellipse_collision/core/broadphase.h"
 #include "ellipse_collision/core/ellipse_polygon.h"
 #include "ellipse_collision/ros/collision_markers.h"
 #include "marker_view.h"
@@ -276,7 +277,7 @@ TEST(CollisionMarkers, AStateThatEmptiesIsDeletedAndTheEllipseShownInItsNewColou
   EXPECT_EQ(view.shown().size(), 2u);
 }
 
-TEST(CollisionMarkers, IdsDependOnStateAndNameNotOnOrderOrHistory) {
+TEST(CollisionMarkers, IdsDependOnStateAndPlaceNotOnTheOrderOfTheScene) {
   CollisionMarkers one;
   CollisionMarkers other;
   std::vector<core::NamedEllipse> placed;
@@ -350,6 +351,114 @@ TEST(CollisionMarkers, BeyondAThousandBucketsTheBucketsGrowNotTheirCount) {
   EXPECT_EQ(points, 40000u * per_ellipse);  // each ellipse once
   EXPECT_GT(largest, 32u * per_ellipse);    // more than 32 per bucket now...
   EXPECT_LE(largest, 2u * 40000 / 1024 * per_ellipse);  // ...and at most twice the mean share
+}
+
+/// 10,000 obstacles on a 100 x 100 grid at 0.6 m (a 59.4 m square field), named row by row.
+std::vector<core::NamedEllipse> gridOfObstacles() {
+  std::vector<core::NamedEllipse> placed;
+  for (int i = 0; i < 10000; ++i) {
+    core::NamedEllipse e = named("o" + std::to_string(i), kObstacle, 0.6 * (i % 100), 0.6 * (i / 100));
+    e.ellipse.radius_x = 0.2;
+    e.ellipse.radius_y = 0.1;
+    placed.push_back(e);
+  }
+  return placed;
+}
+
+/// The box a viewer culls a marker by: around all its points.
+core::BoundingBox boxOfMarker(const Marker& m) {
+  core::BoundingBox box{m.points[0].x, m.points[0].y, m.points[0].x, m.points[0].y};
+  for (const auto& p : m.points) {
+    box = {std::min(box.min_x, p.x), std::min(box.min_y, p.y), std::max(box.max_x, p.x),
+           std::max(box.max_y, p.y)};
+  }
+  return box;
+}
+
+TEST(CollisionMarkers, BucketsAreByPlaceSoAViewOfOnePartOfTheFieldMeetsFewMarkers) {
+  // rviz culls a marker whose box is out of view. Buckets by a hash of the name would each
+  // spread over the whole field: every one of the 512 markers would meet any view.
+  CollisionMarkers markers;
+  const std::vector<core::NamedEllipse> placed = gridOfObstacles();
+  MarkerView view;
+  view.apply(update(markers, placed, {}, {}, "m", kStamp));
+  ASSERT_EQ(view.shown().size(), 512u);
+  const core::BoundingBox part{27.0, 27.0, 33.0, 33.0};  // 6 x 6 m in the middle: 1 % of it
+  int meeting = 0;
+  double area = 0.0;
+  for (const auto& [key, m] : view.shown()) {
+    const core::BoundingBox box = boxOfMarker(m);
+    meeting += core::boxesOverlap(box, part);
+    area += (box.max_x - box.min_x) * (box.max_y - box.min_y);
+  }
+  EXPECT_LE(meeting, 12);
+  EXPECT_LE(area, 1.1 * 60.0 * 60.0) << "the markers' boxes barely overlap";
+}
+
+TEST(CollisionMarkers, AChangeInOnePlaceResendsOnlyTheMarkersOfThatPlace) {
+  // A link touches six neighbouring obstacles: they turn red together. Hashed by name they would
+  // sit in six buckets, twelve markers to re-send (six green, six red); by place in one or two.
+  CollisionMarkers markers;
+  std::vector<core::NamedEllipse> placed = gridOfObstacles();
+  placed.push_back(named("arm", kLink, 30.0, 30.0));
+  const MarkerArray first = update(markers, placed, {}, {}, "m", kStamp);
+  std::vector<core::CollidingPair> touching;
+  for (const int i : {5050, 5051, 5052, 5150, 5151, 5152}) {
+    touching.push_back({"arm", "o" + std::to_string(i), 0.5});
+  }
+  const MarkerArray red = update(markers, placed, touching, {}, "m", kStamp);
+  int obstacle_markers = 0;
+  for (const Marker& m : red.markers) obstacle_markers += m.ns == "obstacles";
+  EXPECT_LE(obstacle_markers, 4);
+  EXPECT_LT(test::wireBytes(red), test::wireBytes(first) / 100);
+  MarkerView view;
+  view.apply(first);
+  view.apply(red);
+  for (const int i : {5050, 5152}) EXPECT_TRUE(isRed(fillOf(view, "obstacles", placed[i].ellipse)));
+  EXPECT_TRUE(isGreen(fillOf(view, "obstacles", placed[5053].ellipse)));
+}
+
+TEST(CollisionMarkers, AnEllipseThatCrossesTheFieldMovesToTheMarkerOfItsNewPlace) {
+  CollisionMarkers markers;
+  std::vector<core::NamedEllipse> placed = gridOfObstacles();
+  MarkerView view;
+  view.apply(update(markers, placed, {}, {}, "m", kStamp));
+  const int old_id = fillOf(view, "obstacles", placed[0].ellipse)->id;
+  placed[0].ellipse.center = {59.5, 59.7};  // corner to corner
+  const MarkerArray moved = update(markers, placed, {}, {}, "m", kStamp);
+  EXPECT_EQ(moved.markers.size(), 2u) << "the marker it left and the one it joined";
+  view.apply(moved);
+  const Marker* now = fillOf(view, "obstacles", placed[0].ellipse);
+  ASSERT_TRUE(now);
+  EXPECT_NE(now->id, old_id);
+  const core::BoundingBox box = boxOfMarker(*now);
+  EXPECT_GT(box.min_x, 40.0);  // a marker of that corner, not stretched across the field
+  EXPECT_GT(box.min_y, 40.0);
+  EXPECT_TRUE(fillsOf(view, "obstacles", makeEllipse(0, 0, 0.2, 0.1)).empty());
+  EXPECT_TRUE(update(markers, placed, {}, {}, "m", kStamp).markers.empty());
+}
+
+TEST(CollisionMarkers, EllipsesCrowdingIntoOnePlaceAreCutAnewSoNoMarkerGrowsUnbounded) {
+  // 1,000 obstacles spread out (32 buckets of about 31); then 300 of them gather in one spot:
+  // their cell would hold some 330, re-sent whole on every change there. The cells are cut
+  // anew in that same update.
+  CollisionMarkers markers;
+  std::vector<core::NamedEllipse> placed;
+  for (int i = 0; i < 1000; ++i) placed.push_back(named("o" + std::to_string(i), kObstacle, i % 40, i / 40));
+  MarkerView view;
+  view.apply(update(markers, placed, {}, {}, "m", kStamp));
+  ASSERT_EQ(view.shown().size(), 32u);
+  for (int i = 0; i < 300; ++i) placed[i * 3].ellipse.center = {5.0 + 0.01 * (i % 17), 5.0 + 0.01 * i};
+  view.apply(update(markers, placed, {}, {}, "m", kStamp));
+  const std::size_t per_ellipse = 3 * (core::drawSegments(placed[0].ellipse) - 2);
+  std::size_t largest = 0, points = 0;
+  for (const auto& [key, m] : view.shown()) {
+    largest = std::max(largest, m.points.size());
+    points += m.points.size();
+  }
+  EXPECT_EQ(points, 1000u * per_ellipse);
+  EXPECT_LE(largest, 2u * 1000 / 32 * per_ellipse);
+  EXPECT_TRUE(update(markers, placed, {}, {}, "m", kStamp).markers.empty()) << "and it settles";
 }
 
 /// A random scene that evolves update by update: moves, removals and returns among 600 names (10
@@ -563,12 +672,21 @@ TEST(CollisionMarkers, FullArrayStartsWithDeleteAll) {
   EXPECT_EQ(full.markers[1].action, Marker::ADD);
 }
 
-TEST(CollisionMarkers, PreferredIdIsTheFnv1aHashOfTheNameInThirtyOneBits) {
-  // FNV-1a 32 of "" is 0x811c9dc5 and of "a" 0xe40c292c (published test vectors), masked to 31
-  // bits.
-  EXPECT_EQ(CollisionMarkers::preferredId(""), 0x011c9dc5);
-  EXPECT_EQ(CollisionMarkers::preferredId("a"), 0x640c292c);
-  EXPECT_GE(CollisionMarkers::preferredId("\xff\xfe any name"), 0);
+/// FNV-1a, 32 bits, written from its definition: the test's own.
+std::uint32_t fnv1aOracle(const std::string& bytes) {
+  std::uint32_t hash = 0x811c9dc5u;
+  for (const unsigned char c : bytes) hash = (hash ^ c) * 0x01000193u;
+  return hash;
+}
+
+TEST(CollisionMarkers, ClearanceLineIdIsTheFnv1aHashOfThePairInThirtyOneBits) {
+  // The oracle first, on published test vectors: "" -> 0x811c9dc5, "a" -> 0xe40c292c.
+  ASSERT_EQ(fnv1aOracle(""), 0x811c9dc5u);
+  ASSERT_EQ(fnv1aOracle("a"), 0xe40c292cu);
+  // The pair's key is the first name's length, ':', then both names.
+  EXPECT_EQ(CollisionMarkers::preferredId("arm", "box"),
+            static_cast<std::int32_t>(fnv1aOracle("3:armbox") & 0x7fffffffu));
+  EXPECT_GE(CollisionMarkers::preferredId("\xff\xfe any name", "b"), 0);
   EXPECT_NE(CollisionMarkers::preferredId("ab", "c"), CollisionMarkers::preferredId("a", "bc"));
   EXPECT_NE(CollisionMarkers::preferredId("a", "b"), CollisionMarkers::preferredId("b", "a"));
 }

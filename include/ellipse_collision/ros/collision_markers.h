@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "ellipse_collision/core/median_partition.h"
 #include "ellipse_collision/core/scene_check.h"
 
 namespace ellipse_collision {
@@ -43,12 +44,18 @@ inline constexpr std::array<MarkerStateStyle, 4> kMarkerStates{{
 /// filled polygons (core::appendEllipseTriangles: inscribed, within 2 mm of the rim, 16 to 64
 /// segments) in TRIANGLE_LIST markers of that state's colour (kMarkerStates, alpha
 /// kEllipseAlpha), flat at z = 0. So that a change does not re-send a namespace's every ellipse,
-/// a namespace's ellipses are split by a hash of their name into B buckets (B a power of two,
-/// about kEllipsesPerMarker ellipses per bucket; it changes only when the count leaves
+/// a namespace's ellipses are split by place into B buckets: the cells of a core::MedianPartition
+/// of their centres, rectangles holding about equal shares (B a power of two, about
+/// kEllipsesPerMarker ellipses per bucket; it changes only when the count leaves
 /// [kEllipsesPerMarker / 4 B, kEllipsesPerMarker B]; at most 1,024, since rviz spends a draw
 /// call per marker and frame, so beyond that the buckets grow); one marker per (state, bucket)
-/// with id code * kIdsPerState + bucket. A marker is sent when an ellipse in it appeared, moved,
-/// changed state or went away, and DELETEd when its bucket holds no ellipse of its state any more.
+/// with id code * kIdsPerState + bucket. Being by place, a bucket's marker is small on screen:
+/// rviz culls the markers out of view (a view of one part of 100,000 obstacles draws a few dozen
+/// of 1,024), and the changes around a robot touch the few buckets there. The cells are cut where
+/// the ellipses are when B changes, and again when one cell has come to hold more than twice
+/// what the fullest held then; an ellipse that moves into another cell moves to its marker. A
+/// marker is sent when an ellipse in it appeared, moved, changed state or went away, and DELETEd
+/// when its bucket holds no ellipse of its state any more.
 ///
 /// Clearance: namespace `clearance`, one LINE_LIST segment per warning pair between its witness
 /// points, id from preferredId(name_a, name_b), re-sent when the points move, DELETEd when the
@@ -95,8 +102,6 @@ class CollisionMarkers {
   /// The id of the marker of `state` and `bucket`.
   static std::int32_t fillId(MarkerState state, std::uint32_t bucket);
 
-  /// A 31-bit FNV-1a hash of the name, the same in every run (the bucket is this modulo B).
-  static std::int32_t preferredId(const std::string& name);
   /// The id the clearance line of a warning pair (names in the pair's order) gets when it appears.
   /// Only if a line shown holds it (a hash clash) does the pair get the next free id instead, and
   /// keeps that while its line stays shown.
@@ -113,7 +118,7 @@ class CollisionMarkers {
     std::string name;
     core::Ellipse ellipse;
     MarkerState state{MarkerState::Free};
-    std::uint32_t hash{0};
+    std::uint32_t cell{0};  ///< of its centre in the layer's partition: its marker's bucket
     std::uint64_t generation{0};  ///< the update() that last saw it
   };
   /// One namespace's ellipses.
@@ -121,13 +126,17 @@ class CollisionMarkers {
     std::unordered_map<std::string, Entry> entries;
     std::vector<Entry*> by_position;  ///< entry at each index of the last `placed` (a fast path)
     std::uint32_t buckets{1};         ///< B
+    core::MedianPartition partition;  ///< B cells, cut where the ellipses were at the last regroup
+    std::size_t largest_cell_when_cut{0};  ///< ellipses in the fullest cell, all states, when cut
     std::set<std::int32_t> shown;     ///< ids of its markers rviz holds
     std::set<std::int32_t> ever_sent;  ///< ids ever sent as ADD: the refresh sweep's fill ids
-    /// The entries of each marker, by state index * B + bucket: a changed marker is rebuilt from
+    /// The entries of each marker, by state index * B + cell: a changed marker is rebuilt from
     /// its own ellipses, not by a pass over the whole namespace.
     std::vector<std::vector<Entry*>> members;
   };
   static constexpr std::size_t kLayers = 2;  // links, obstacles
+
+  static std::size_t largestCell(const Layer& layer);
 
   std::vector<visualization_msgs::Marker> fills(std::size_t layer,
                                                 const std::vector<char>& wanted) const;
