@@ -254,13 +254,15 @@ class PairCollector {
   /// a check of 50 links and 100 obstacles.
   template <typename Found>
   std::vector<std::uint32_t> canonicalOrder(const std::vector<Found>& pairs) const {
-    std::vector<std::uint32_t> start(rank_.size() + 1, 0);
-    for (const Found& pair : pairs) ++start[pair.first_rank + 1];
-    for (std::size_t r = 1; r < start.size(); ++r) start[r] += start[r - 1];
     std::vector<std::uint32_t> order(pairs.size());
-    std::vector<std::uint32_t> next(start.begin(), start.end() - 1);
-    for (std::size_t k = 0; k < pairs.size(); ++k) {
-      order[next[pairs[k].first_rank]++] = static_cast<std::uint32_t>(k);
+    if (pairs.empty()) return order;
+    // start[r] is first one past the last place of rank r's pairs (start[R] = all of them);
+    // filling from the back, in decreasing k, counts each rank down to where its pairs start.
+    std::vector<std::uint32_t> start(rank_.size() + 1, 0);
+    for (const Found& pair : pairs) ++start[pair.first_rank];
+    for (std::size_t r = 1; r < start.size(); ++r) start[r] += start[r - 1];
+    for (std::size_t k = pairs.size(); k-- > 0;) {
+      order[--start[pairs[k].first_rank]] = static_cast<std::uint32_t>(k);
     }
     const auto before = [&pairs](std::uint32_t a, std::uint32_t b) {
       const Pair& x = pairs[a];
