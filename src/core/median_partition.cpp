@@ -9,19 +9,39 @@ namespace {
 
 constexpr int kMaxLevels = 20;
 
+// NaN breaks the ordering nth_element needs; such a point has no place to cut at.
+void dropNaN(std::vector<Eigen::Vector2d>& points) {
+  points.erase(std::remove_if(points.begin(), points.end(),
+                              [](const Eigen::Vector2d& p) {
+                                return std::isnan(p.x()) || std::isnan(p.y());
+                              }),
+               points.end());
+}
+
 }  // namespace
 
 MedianPartition::MedianPartition(std::vector<Eigen::Vector2d> points, std::uint32_t cells) {
   while (levels_ < kMaxLevels && (std::uint64_t{2} << levels_) <= cells) ++levels_;
   cells_ = std::uint32_t{1} << levels_;
   cuts_.resize(cells_ - 1);
-  // NaN breaks the ordering nth_element needs; such a point has no place to cut at.
-  points.erase(std::remove_if(points.begin(), points.end(),
-                              [](const Eigen::Vector2d& p) {
-                                return std::isnan(p.x()) || std::isnan(p.y());
-                              }),
-               points.end());
+  dropNaN(points);
   cutNode(0, points.begin(), points.end(), levels_);
+}
+
+bool MedianPartition::recut(std::uint32_t first, std::uint32_t count,
+                            std::vector<Eigen::Vector2d> points) {
+  if (count == 0 || count > cells_ || (count & (count - 1)) != 0 || first % count != 0 ||
+      first >= cells_) {
+    return false;
+  }
+  int levels_below = 0;
+  while ((std::uint32_t{1} << levels_below) < count) ++levels_below;
+  // The node above those cells: in heap order the nodes of a level are numbered from
+  // 2^level - 1, left to right, and each has `count` cells under it.
+  const std::size_t level_start = (std::size_t{cells_} / count) - 1;
+  dropNaN(points);
+  cutNode(level_start + first / count, points.begin(), points.end(), levels_below);
+  return true;
 }
 
 void MedianPartition::cutNode(std::size_t node, Iterator begin, Iterator end, int levels_below) {

@@ -145,6 +145,56 @@ std::size_t CollisionMarkers::largestCell(const Layer& layer) {
   return largest;
 }
 
+void CollisionMarkers::recutCrowdedCells(Layer& layer, std::vector<char>& dirty) {
+  const std::uint32_t buckets = layer.buckets;
+  const std::size_t normal = std::max(layer.largest_cell_when_cut, kEllipsesPerMarker);
+  std::vector<std::size_t> in_cell(buckets, 0);  // ellipses of every state
+  for (std::size_t slot = 0; slot < layer.members.size(); ++slot) {
+    in_cell[slot % buckets] += layer.members[slot].size();
+  }
+  for (std::uint32_t cell = 0; cell < buckets; ++cell) {
+    if (in_cell[cell] <= 2 * normal) continue;
+    // The smallest part of the tree around the cell whose ellipses fit its cells at the normal
+    // size (the whole plane at worst): the cells under one node, a power of two from `first`.
+    std::uint32_t first = cell, count = 1;
+    std::size_t total = in_cell[cell];
+    while (count < buckets && total > count * normal) {
+      count *= 2;
+      first = cell / count * count;
+      total = 0;
+      for (std::uint32_t c = first; c < first + count; ++c) total += in_cell[c];
+    }
+    std::vector<Entry*> moving;
+    std::vector<Eigen::Vector2d> centres;
+    moving.reserve(total);
+    centres.reserve(total);
+    for (std::size_t state = 0; state < kStateCount; ++state) {
+      for (std::uint32_t c = first; c < first + count; ++c) {
+        const std::size_t slot = state * buckets + c;
+        for (Entry* entry : layer.members[slot]) {
+          moving.push_back(entry);
+          centres.push_back(entry->ellipse.center);
+        }
+        layer.members[slot].clear();
+        dirty[slot] = 1;  // re-sent as it is now, or DELETEd if it ends empty
+      }
+    }
+    layer.partition.recut(first, count, std::move(centres));
+    std::size_t largest = 0;
+    for (std::uint32_t c = first; c < first + count; ++c) in_cell[c] = 0;
+    for (Entry* entry : moving) {
+      // Within the part: the cuts above it did not change.
+      entry->cell = layer.partition.cellOf(entry->ellipse.center);
+      layer.members[stateIndex(entry->state) * buckets + entry->cell].push_back(entry);
+      largest = std::max(largest, ++in_cell[entry->cell]);
+    }
+    // Ellipses no cut can part (many at one point) stay crowded: that is the size to beat now,
+    // or they would be cut again on every update.
+    if (largest > 2 * normal) layer.largest_cell_when_cut = largest;
+    cell = first + count - 1;
+  }
+}
+
 Marker CollisionMarkers::emptyMarker(const std::string& ns, std::int32_t id) const {
   Marker marker;
   marker.header.frame_id = fixed_frame_;
@@ -307,13 +357,7 @@ visualization_msgs::MarkerArray CollisionMarkers::update(
       it = l.entries.erase(it);
     }
     l.by_position = std::move(positions[layer]);
-    // Ellipses crowding into one place: once a cell holds more than twice what the fullest held
-    // when cut, each change there would re-send that many; cut anew.
-    if (!regroup[layer] &&
-        largestCell(l) > 2 * std::max(l.largest_cell_when_cut, kEllipsesPerMarker)) {
-      regroup[layer] = true;
-      dirty[layer].assign(dirty[layer].size(), 1);
-    }
+    if (!regroup[layer]) recutCrowdedCells(l, dirty[layer]);
     if (regroup[layer]) {
       std::vector<Eigen::Vector2d> centres;
       centres.reserve(l.entries.size());

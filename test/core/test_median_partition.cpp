@@ -107,6 +107,50 @@ TEST(MedianPartition, PointsOnAGridAreCutBetweenTheirRowsAndColumns) {
   EXPECT_LE(largest, 2u * 10000 / 64);
 }
 
+TEST(MedianPartition, RecutCutsTheCellsOfOneNodeAnewAndLeavesTheRestOfThePlane) {
+  std::vector<Eigen::Vector2d> points = randomPoints(10000, 7);
+  MedianPartition partition(points, 64);
+  std::vector<std::uint32_t> before;
+  for (const Eigen::Vector2d& p : points) before.push_back(partition.cellOf(p));
+  // 2,000 more crowd into one spot of cell c: its node of 8 cells is cut anew for its points.
+  const Eigen::Vector2d spot(10.0, 5.0);
+  const std::uint32_t c = partition.cellOf(spot);
+  const std::uint32_t first = c / 8 * 8;
+  std::mt19937 random(8);
+  std::uniform_real_distribution<double> jitter(-0.01, 0.01);
+  std::vector<Eigen::Vector2d> crowd;
+  for (int i = 0; i < 2000; ++i) crowd.push_back(spot + Eigen::Vector2d(jitter(random), jitter(random)));
+  std::vector<Eigen::Vector2d> part = crowd;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (before[i] >= first && before[i] < first + 8) part.push_back(points[i]);
+  }
+  ASSERT_TRUE(partition.recut(first, 8, part));
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const std::uint32_t now = partition.cellOf(points[i]);
+    if (before[i] < first || before[i] >= first + 8) {
+      ASSERT_EQ(now, before[i]) << "a point outside the part changed cell";
+    } else {
+      ASSERT_GE(now, first);
+      ASSERT_LT(now, first + 8);
+    }
+  }
+  std::vector<std::size_t> in_cell(64, 0);
+  for (const Eigen::Vector2d& p : part) ++in_cell[partition.cellOf(p)];
+  for (std::uint32_t k = first; k < first + 8; ++k) {
+    EXPECT_GE(in_cell[k], part.size() / 8);  // equal shares of the part, crowd included
+    EXPECT_LE(in_cell[k], part.size() / 8 + 1);
+  }
+  // Only the cells under one node.
+  EXPECT_FALSE(partition.recut(first + 1, 8, part));
+  EXPECT_FALSE(partition.recut(0, 3, part));
+  EXPECT_FALSE(partition.recut(0, 0, part));
+  EXPECT_FALSE(partition.recut(0, 128, part));
+  EXPECT_FALSE(partition.recut(64, 1, part));
+  EXPECT_TRUE(partition.recut(0, 64, points));  // the whole plane: as a new partition
+  const MedianPartition fresh(points, 64);
+  for (const Eigen::Vector2d& p : randomPoints(2000, 9)) ASSERT_EQ(partition.cellOf(p), fresh.cellOf(p));
+}
+
 TEST(MedianPartition, EveryPointHasACellAlsoFarOutsideOrNaNAndCoincidentPointsShareOne) {
   std::vector<Eigen::Vector2d> points(1000, Eigen::Vector2d(3.0, 4.0));
   const double nan = std::numeric_limits<double>::quiet_NaN();

@@ -33,6 +33,13 @@ class MedianPartition {
 
   std::uint32_t cells() const { return cells_; }
 
+  /// Cuts anew the `count` cells from `first` on (`count` a power of two that divides `first`:
+  /// the cells under one node of the tree) for `points`, which must be the points that lie in
+  /// them, as the constructor cuts the plane: the rest of the plane keeps its cells. For points
+  /// that crowded into one part of it since the cut, at the cost of that part only. Returns
+  /// false, changing nothing, for a range that is not such a node's.
+  bool recut(std::uint32_t first, std::uint32_t count, std::vector<Eigen::Vector2d> points);
+
   /// The cell of `point`, in [0, cells()). Any point has one: beyond the points the partition was
   /// built for, the outer cells extend to infinity; a NaN coordinate counts as above every cut.
   std::uint32_t cellOf(const Eigen::Vector2d& point) const;
@@ -43,6 +50,8 @@ class MedianPartition {
     int axis{0};  ///< 0: x, 1: y
   };
   using Iterator = std::vector<Eigen::Vector2d>::iterator;
+  /// Cuts node `node` and the nodes below it, `levels_below` levels, for the points in
+  /// [begin, end) (NaN left out by the caller).
   void cutNode(std::size_t node, Iterator begin, Iterator end, int levels_below);
 
   std::uint32_t cells_{1};

@@ -52,8 +52,9 @@ inline constexpr std::array<MarkerStateStyle, 4> kMarkerStates{{
 /// with id code * kIdsPerState + bucket. Being by place, a bucket's marker is small on screen:
 /// rviz culls the markers out of view (a view of one part of 100,000 obstacles draws a few dozen
 /// of 1,024), and the changes around a robot touch the few buckets there. The cells are cut where
-/// the ellipses are when B changes, and again when one cell has come to hold more than twice
-/// what the fullest held then; an ellipse that moves into another cell moves to its marker. A
+/// the ellipses are when B changes; where one cell has come to hold more than twice what the
+/// fullest held then, the smallest part around it that can take them is cut anew, re-sending
+/// that part's markers only; an ellipse that moves into another cell moves to its marker. A
 /// marker is sent when an ellipse in it appeared, moved, changed state or went away, and DELETEd
 /// when its bucket holds no ellipse of its state any more.
 ///
@@ -126,7 +127,7 @@ class CollisionMarkers {
     std::unordered_map<std::string, Entry> entries;
     std::vector<Entry*> by_position;  ///< entry at each index of the last `placed` (a fast path)
     std::uint32_t buckets{1};         ///< B
-    core::MedianPartition partition;  ///< B cells, cut where the ellipses were at the last regroup
+    core::MedianPartition partition;  ///< B cells, cut where the ellipses were (recutCrowdedCells())
     std::size_t largest_cell_when_cut{0};  ///< ellipses in the fullest cell, all states, when cut
     std::set<std::int32_t> shown;     ///< ids of its markers rviz holds
     std::set<std::int32_t> ever_sent;  ///< ids ever sent as ADD: the refresh sweep's fill ids
@@ -137,6 +138,11 @@ class CollisionMarkers {
   static constexpr std::size_t kLayers = 2;  // links, obstacles
 
   static std::size_t largestCell(const Layer& layer);
+  /// Ellipses crowding into one place: a cell holding more than twice what the fullest held
+  /// when the layer was cut would re-send that many on each change there. The smallest part of
+  /// the tree around it whose ellipses fit its cells at that size is cut anew (MedianPartition::
+  /// recut()), and only that part's markers are marked in `dirty` (by state index * B + cell).
+  static void recutCrowdedCells(Layer& layer, std::vector<char>& dirty);
 
   std::vector<visualization_msgs::Marker> fills(std::size_t layer,
                                                 const std::vector<char>& wanted) const;
