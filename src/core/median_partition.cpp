@@ -47,13 +47,14 @@ bool MedianPartition::recut(std::uint32_t first, std::uint32_t count,
 void MedianPartition::cutNode(std::size_t node, Iterator begin, Iterator end, int levels_below) {
   if (levels_below == 0) return;
   Cut& cut = cuts_[node];
+  // A node without points keeps the cut it has: any cut is as good as another there.
   if (begin != end) {
     Eigen::Vector2d low = *begin, high = *begin;
     for (Iterator p = begin; p != end; ++p) {
       low = low.cwiseMin(*p);
       high = high.cwiseMax(*p);
     }
-    // The wider side (x on a tie; an infinite extent compares as NaN, and then y).
+    // The wider side, x on a tie.
     cut.axis = high.x() - low.x() >= high.y() - low.y() ? 0 : 1;
     const int axis = cut.axis;
     const Iterator median = begin + (end - begin) / 2;

@@ -312,7 +312,7 @@ TEST(CollisionMarkers, ManyEllipsesAreSplitIntoBoundedMarkersThatRegroupWhenTheC
   EXPECT_EQ(view.shown().size(), 512u);
   std::size_t points = 0;
   for (const auto& [key, m] : view.shown()) {
-    // A hash bucket holds at most twice its mean share here (about 20 of each 10,000 / 512).
+    // A bucket holds at most twice its mean share here (about 20 of each 10,000 / 512).
     EXPECT_LE(m.points.size(), 2 * CollisionMarkers::kEllipsesPerMarker * 3 *
                                    (core::drawSegments(placed[0].ellipse) - 2))
         << "bucket " << key.second;
