@@ -133,25 +133,18 @@ void CollisionMarkers::noteLineDeleted(std::int32_t id) {
   }
 }
 
-std::size_t CollisionMarkers::largestCell(const Layer& layer) {
-  std::size_t largest = 0;
-  for (std::uint32_t cell = 0; cell < layer.buckets; ++cell) {
-    std::size_t in_cell = 0;
-    for (std::size_t state = 0; state < kStateCount; ++state) {
-      in_cell += layer.members[state * layer.buckets + cell].size();
-    }
-    largest = std::max(largest, in_cell);
+std::vector<std::size_t> CollisionMarkers::ellipsesPerCell(const Layer& layer) {
+  std::vector<std::size_t> in_cell(layer.buckets, 0);
+  for (std::size_t slot = 0; slot < layer.members.size(); ++slot) {
+    in_cell[slot % layer.buckets] += layer.members[slot].size();
   }
-  return largest;
+  return in_cell;
 }
 
 void CollisionMarkers::recutCrowdedCells(Layer& layer, std::vector<char>& dirty) {
   const std::uint32_t buckets = layer.buckets;
   const std::size_t normal = std::max(layer.largest_cell_when_cut, kEllipsesPerMarker);
-  std::vector<std::size_t> in_cell(buckets, 0);  // ellipses of every state
-  for (std::size_t slot = 0; slot < layer.members.size(); ++slot) {
-    in_cell[slot % buckets] += layer.members[slot].size();
-  }
+  std::vector<std::size_t> in_cell = ellipsesPerCell(layer);
   for (std::uint32_t cell = 0; cell < buckets; ++cell) {
     if (in_cell[cell] <= 2 * normal) continue;
     // The smallest part of the tree around the cell whose ellipses fit its cells at the normal
@@ -368,7 +361,8 @@ visualization_msgs::MarkerArray CollisionMarkers::update(
         entry.cell = l.partition.cellOf(entry.ellipse.center);
         l.members[indexOf(layer, entry.state, entry.cell)].push_back(&entry);
       }
-      l.largest_cell_when_cut = largestCell(l);
+      const std::vector<std::size_t> in_cell = ellipsesPerCell(l);
+      l.largest_cell_when_cut = *std::max_element(in_cell.begin(), in_cell.end());
     }
 
     std::set<std::int32_t> sent;

@@ -137,7 +137,8 @@ class CollisionMarkers {
   };
   static constexpr std::size_t kLayers = 2;  // links, obstacles
 
-  static std::size_t largestCell(const Layer& layer);
+  /// The ellipses of every state in each of the layer's cells.
+  static std::vector<std::size_t> ellipsesPerCell(const Layer& layer);
   /// Ellipses crowding into one place: a cell holding more than twice what the fullest held
   /// when the layer was cut would re-send that many on each change there. The smallest part of
   /// the tree around it whose ellipses fit its cells at that size is cut anew (MedianPartition::
