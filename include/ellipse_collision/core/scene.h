@@ -48,6 +48,8 @@ class Scene {
   const Ellipse& ellipse(std::size_t i) const { return ellipses_[i]; }
   /// The geometry alone is rewritten in place (a cache refilling last check's scene).
   Ellipse& ellipse(std::size_t i) { return ellipses_[i]; }
+  /// The packed column of ellipses, entry i at [i].
+  const std::vector<Ellipse>& ellipses() const { return ellipses_; }
 
   /// Entry i as a record (a copy).
   NamedEllipse entry(std::size_t i) const { return {names_[i], roles_[i], ellipses_[i]}; }
