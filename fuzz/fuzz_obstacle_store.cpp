@@ -36,6 +36,7 @@ bool sameSpec(const EllipseSpec& a, const EllipseSpec& b) {
 
 bool sameStore(const StoredObstacles& a, const StoredObstacles& b) {
   if (a.session != b.session || !sameNumber(a.topic_stamp_s, b.topic_stamp_s) ||
+      a.service_revision != b.service_revision ||
       a.service.size() != b.service.size() || a.topic.size() != b.topic.size()) {
     return false;
   }

@@ -323,6 +323,8 @@ def store_seeds():
                              "0.050000000000000003 0.25 -0.14285714285714285 "
                              "3.0000000000000001e-05\nend\n").encode(),
         "no-velocities": (header + "service 1:a 3:map 1 2 0 0.5 0.5 0\nend\n").encode(),
+        "service-record": (header + session + "topic_stamp 0\nservice_revision 18446744073709551\n"
+                           "service 3:box 9:base_link 0.1 2 0 0.5 0.5 0 0 0 0\nend\n").encode(),
         "name-with-newline": (header + "service 11:line\nbreak\n 4:odom 1e300 2 0 0.5 0.5 0 0 0 0"
                               "\nend\n").encode(),
         "truncated": (header + session + "topic 10:obstacle_0 3:map -6.9").encode(),

@@ -1,5 +1,6 @@
 #include "ellipse_collision/app/ellipse_registry.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "ellipse_collision/core/unique_names.h"
@@ -160,6 +161,21 @@ StoredObstacles EllipseRegistry::runtimeObstacles() const {
   }
   stored.topic_stamp_s = topic_stamp_s_;
   return stored;
+}
+
+StoredObstacles EllipseRegistry::serviceObstacles() const {
+  StoredObstacles stored;
+  for (const auto& named : entries_) {
+    if (named.second.source == EllipseSource::ServiceObstacle) stored.service.push_back(named.second.spec);
+  }
+  return stored;
+}
+
+bool EllipseRegistry::namesTopicObstacle(const std::vector<std::string>& names) const {
+  return std::any_of(names.begin(), names.end(), [this](const std::string& name) {
+    const auto found = entries_.find(name);
+    return found != entries_.end() && found->second.source == EllipseSource::TopicObstacle;
+  });
 }
 
 std::string EllipseRegistry::restore(const StoredObstacles& stored) {

@@ -4,9 +4,11 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 #include "ellipse_collision/core/number_fields.h"
@@ -78,6 +80,18 @@ bool readNumbers(const std::string& line, EllipseSpec& spec) {
   return true;
 }
 
+/// `line` as a decimal count: digits only, no sign, no overflow.
+bool readCount(const std::string& line, std::uint64_t& out) {
+  if (line.empty() || line.size() > 19) return false;  // 19 digits never overflow 64 bits
+  std::uint64_t value = 0;
+  for (const char c : line) {
+    if (c < '0' || c > '9') return false;
+    value = 10 * value + static_cast<std::uint64_t>(c - '0');
+  }
+  out = value;
+  return true;
+}
+
 std::string errnoText(const std::string& step, const std::string& path) {
   return step + " '" + path + "': " + std::strerror(errno);
 }
@@ -94,6 +108,8 @@ std::string serializeObstacles(const StoredObstacles& obstacles) {
   appendText(out, obstacles.session);
   out += "\ntopic_stamp ";
   core::appendNumber(out, obstacles.topic_stamp_s);
+  out += "\nservice_revision ";
+  out += std::to_string(obstacles.service_revision);
   out += '\n';
   for (const EllipseSpec& spec : obstacles.service) appendSpec(out, "service", spec);
   for (const EllipseSpec& spec : obstacles.topic) appendSpec(out, "topic", spec);
@@ -146,6 +162,10 @@ std::string parseObstacles(const std::string& input, StoredObstacles& out) {
       if (!(value >> parsed.topic_stamp_s) || (value >> extra)) {
         return at("expected topic_stamp <seconds>");
       }
+    } else if (kind == "service_revision") {
+      if (!restOfLine(line) || !readCount(line, parsed.service_revision)) {
+        return at("expected service_revision <count>");
+      }
     } else if (kind == "service" || kind == "topic") {
       EllipseSpec spec;
       if (!readText(input, pos, spec.name) || !readText(input, pos, spec.frame_id) ||
@@ -160,6 +180,59 @@ std::string parseObstacles(const std::string& input, StoredObstacles& out) {
   }
   out = std::move(parsed);
   return {};
+}
+
+std::string serviceRecordPath(const std::string& store_path) { return store_path + ".service"; }
+
+bool applyNewerServiceRecord(StoredObstacles& store, const StoredObstacles& record) {
+  if (record.session != store.session || record.service_revision <= store.service_revision) {
+    return false;
+  }
+  std::set<std::string> service_names;
+  for (const EllipseSpec& spec : record.service) service_names.insert(spec.name);
+  store.topic.erase(std::remove_if(store.topic.begin(), store.topic.end(),
+                                   [&](const EllipseSpec& spec) {
+                                     return service_names.count(spec.name) != 0;
+                                   }),
+                    store.topic.end());
+  store.service = record.service;
+  store.service_revision = record.service_revision;
+  return true;
+}
+
+LoadedStore loadObstacleStore(const std::string& path, const std::string& session) {
+  LoadedStore loaded;
+  loaded.obstacles.session = session;
+  // One file: parsed, or left out with a note; true when it is of this launch.
+  const auto read = [&](const std::string& file, StoredObstacles& out) {
+    std::string text, error;
+    bool missing = false;
+    if (!readWholeFile(file, text, missing, error)) {
+      if (!missing) loaded.notes.push_back({true, "'" + file + "' is unreadable: " + error});
+      return false;
+    }
+    error = parseObstacles(text, out);
+    if (!error.empty()) {
+      loaded.notes.push_back({true, "'" + file + "' is corrupt: " + error});
+      return false;
+    }
+    if (out.session != session) {
+      loaded.notes.push_back(
+          {false, "'" + file + "' is from another launch (run_id '" + out.session + "')"});
+      return false;
+    }
+    return true;
+  };
+  StoredObstacles store;
+  if (read(path, store)) {
+    loaded.obstacles = std::move(store);
+    loaded.found = true;
+  }
+  StoredObstacles record;
+  if (read(serviceRecordPath(path), record) && applyNewerServiceRecord(loaded.obstacles, record)) {
+    loaded.found = true;
+  }
+  return loaded;
 }
 
 std::string writeFileAtomically(const std::string& path, const std::string& content) {

@@ -5,7 +5,7 @@
 namespace ellipse_collision::app {
 
 ObstacleStoreWriter::ObstacleStoreWriter(std::string path)
-    : path_(std::move(path)), thread_([this] { run(); }) {}
+    : path_(std::move(path)), record_path_(serviceRecordPath(path_)), thread_([this] { run(); }) {}
 
 ObstacleStoreWriter::~ObstacleStoreWriter() {
   {
@@ -16,27 +16,38 @@ ObstacleStoreWriter::~ObstacleStoreWriter() {
   thread_.join();
 }
 
-void ObstacleStoreWriter::writeLater(StoredObstacles obstacles) {
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    queued_ = std::move(obstacles);
-    ++queued_version_;
-  }
+std::uint64_t ObstacleStoreWriter::queue(Slot& slot, StoredObstacles content) {
+  slot.queued = std::move(content);
+  ++slot.queued_version;
   queued_or_stopping_.notify_one();
+  return slot.queued_version;
+}
+
+void ObstacleStoreWriter::writeLater(StoredObstacles obstacles) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  queue(store_, std::move(obstacles));
 }
 
 std::string ObstacleStoreWriter::writeNow(StoredObstacles obstacles) {
   std::unique_lock<std::mutex> lock(mutex_);
-  queued_ = std::move(obstacles);
-  const std::uint64_t version = ++queued_version_;
-  queued_or_stopping_.notify_one();
-  written_.wait(lock, [&] { return written_version_ >= version; });
-  return last_error_;
+  const std::uint64_t version = queue(store_, std::move(obstacles));
+  written_.wait(lock, [&] { return store_.written_version >= version; });
+  return store_.last_error;
+}
+
+std::string ObstacleStoreWriter::writeServiceNow(StoredObstacles record) {
+  std::unique_lock<std::mutex> lock(mutex_);
+  const std::uint64_t version = queue(service_, std::move(record));
+  written_.wait(lock, [&] { return service_.written_version >= version; });
+  return service_.last_error;
 }
 
 void ObstacleStoreWriter::flush() {
   std::unique_lock<std::mutex> lock(mutex_);
-  written_.wait(lock, [&] { return written_version_ >= queued_version_; });
+  written_.wait(lock, [&] {
+    return store_.written_version >= store_.queued_version &&
+           service_.written_version >= service_.queued_version;
+  });
 }
 
 std::string ObstacleStoreWriter::lastError() const {
@@ -49,23 +60,37 @@ std::size_t ObstacleStoreWriter::writes() const {
   return writes_;
 }
 
+void ObstacleStoreWriter::writeSlot(Slot& slot, const std::string& path,
+                                    std::unique_lock<std::mutex>& lock) {
+  const StoredObstacles content = std::move(*slot.queued);
+  slot.queued.reset();
+  const std::uint64_t version = slot.queued_version;
+  lock.unlock();
+  // Serialised here too: for 10,000 obstacles that is milliseconds the caller does not wait for.
+  std::string error = makeParentDirectories(path);
+  if (error.empty()) error = writeFileAtomically(path, serializeObstacles(content));
+  lock.lock();
+  slot.last_error = error;
+  last_error_ = std::move(error);
+  slot.written_version = version;
+  ++writes_;
+  written_.notify_all();
+}
+
 void ObstacleStoreWriter::run() {
   std::unique_lock<std::mutex> lock(mutex_);
   while (true) {
-    queued_or_stopping_.wait(lock, [&] { return queued_.has_value() || stopping_; });
-    if (!queued_) return;  // stopping, and everything queued is written
-    const StoredObstacles obstacles = std::move(*queued_);
-    queued_.reset();
-    const std::uint64_t version = queued_version_;
-    lock.unlock();
-    // Serialised here too: for 10,000 obstacles that is milliseconds the caller does not wait for.
-    std::string error = makeParentDirectories(path_);
-    if (error.empty()) error = writeFileAtomically(path_, serializeObstacles(obstacles));
-    lock.lock();
-    last_error_ = std::move(error);
-    written_version_ = version;
-    ++writes_;
-    written_.notify_all();
+    queued_or_stopping_.wait(
+        lock, [&] { return service_.queued.has_value() || store_.queued.has_value() || stopping_; });
+    // A service record first: its caller is waiting. Either order is safe, since a record
+    // applies only over a store of an older service_revision (applyNewerServiceRecord()).
+    if (service_.queued) {
+      writeSlot(service_, record_path_, lock);
+    } else if (store_.queued) {
+      writeSlot(store_, path_, lock);
+    } else {
+      return;  // stopping, and everything queued is written
+    }
   }
 }
 

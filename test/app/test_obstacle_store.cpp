@@ -3,8 +3,13 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cstdint>
 #include <cstdio>
+#include <random>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "ellipse_collision/app/ellipse_registry.h"
 #include "ellipse_collision/app/obstacle_store.h"
@@ -82,7 +87,9 @@ TEST(ObstacleStore, CorruptTextIsRefusedWithTheLine) {
             "record 1: expected 'ellipse_collision obstacle store 1'");
   const std::string good = serializeObstacles({"s", {spec("a", "map", 1.0)}, {}, 0.0});
   EXPECT_EQ(parseObstacles(good.substr(0, good.size() - 4), out), "truncated: no 'end' record");
-  EXPECT_EQ(parseObstacles(good.substr(0, good.size() / 2), out).rfind("record", 0), 0u);
+  // Cut inside the obstacle's record.
+  EXPECT_EQ(parseObstacles(good.substr(0, good.find("service 1:a") + 15), out).rfind("record", 0),
+            0u);
   EXPECT_EQ(parseObstacles("ellipse_collision obstacle store 1\nservice 9:a map 1\nend\n", out),
             "record 2: expected service <name> <frame> x y angle radius_x radius_y padding "
             "[vx vy angular_velocity]");
@@ -102,8 +109,237 @@ TEST(ObstacleStore, CorruptTextIsRefusedWithTheLine) {
       << "velocities are all three or none";
   EXPECT_EQ(parseObstacles("ellipse_collision obstacle store 1\nfoo\nend\n", out),
             "record 2: unknown entry 'foo'");
-  EXPECT_EQ(parseObstacles(good + "x", out), "record 5: expected nothing after 'end'");
+  EXPECT_EQ(parseObstacles(good + "x", out), "record 6: expected nothing after 'end'");
+  for (const char* revision : {"-1", "1.5", "x", "", "12345678901234567890"}) {
+    EXPECT_EQ(parseObstacles("ellipse_collision obstacle store 1\nservice_revision " +
+                                 std::string(revision) + "\nend\n",
+                             out),
+              "record 2: expected service_revision <count>")
+        << revision;
+  }
   EXPECT_EQ(out.session, "kept") << "left untouched on failure";
+}
+
+TEST(ObstacleStore, ServiceRevisionRoundTripsAndOlderStoresReadZero) {
+  StoredObstacles stored;
+  stored.session = "s";
+  stored.service_revision = 18446744073709551ull;
+  StoredObstacles back;
+  ASSERT_EQ(parseObstacles(serializeObstacles(stored), back), "");
+  EXPECT_EQ(back.service_revision, stored.service_revision);
+  ASSERT_EQ(parseObstacles("ellipse_collision obstacle store 1\nsession 1:s\nend\n", back), "");
+  EXPECT_EQ(back.service_revision, 0u) << "a store written before the service record";
+}
+
+TEST(ObstacleStore, ANewerServiceRecordOfTheSameLaunchReplacesTheServiceObstacles) {
+  StoredObstacles store;
+  store.session = "launch";
+  store.service_revision = 4;
+  store.service = {spec("old", "map", 1.0)};
+  store.topic = {spec("rock", "map", 2.0), spec("reused", "map", 3.0)};
+  store.topic_stamp_s = 9.0;
+  StoredObstacles record;
+  record.session = "launch";
+  record.service_revision = 5;
+  record.service = {spec("new", "map", 4.0), spec("reused", "odom", 5.0)};
+
+  StoredObstacles applied = store;
+  ASSERT_TRUE(applyNewerServiceRecord(applied, record));
+  ASSERT_EQ(applied.service.size(), 2u);
+  EXPECT_TRUE(same(applied.service[0], record.service[0]));
+  EXPECT_TRUE(same(applied.service[1], record.service[1]));
+  // The topic obstacle under a name the service took later was gone when the record was made.
+  ASSERT_EQ(applied.topic.size(), 1u);
+  EXPECT_EQ(applied.topic[0].name, "rock");
+  EXPECT_EQ(applied.topic_stamp_s, 9.0);
+  EXPECT_EQ(applied.service_revision, 5u);
+
+  for (const auto& [session, revision] :
+       std::vector<std::pair<std::string, std::uint64_t>>{{"launch", 4}, {"launch", 3}, {"other", 9}}) {
+    StoredObstacles kept = store;
+    record.session = session;
+    record.service_revision = revision;
+    EXPECT_FALSE(applyNewerServiceRecord(kept, record)) << session << " " << revision;
+    ASSERT_EQ(kept.service.size(), 1u);
+    EXPECT_EQ(kept.service[0].name, "old");
+    EXPECT_EQ(kept.topic.size(), 2u);
+  }
+}
+
+/// A directory of its own, removed with what is in it.
+class StoreDirectory : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    ASSERT_NE(mkdtemp(directory_), nullptr);
+    path_ = std::string(directory_) + "/store";
+  }
+  void TearDown() override {
+    std::remove(path_.c_str());
+    std::remove(serviceRecordPath(path_).c_str());
+    rmdir(directory_);
+  }
+  void write(const std::string& path, const StoredObstacles& stored) {
+    ASSERT_EQ(writeFileAtomically(path, serializeObstacles(stored)), "");
+  }
+  char directory_[32] = "/tmp/obstacle_store_XXXXXX";
+  std::string path_;
+};
+
+TEST_F(StoreDirectory, LoadUsesEachFileOfThisLaunchAndSaysWhyAnotherIsLeftOut) {
+  LoadedStore nothing = loadObstacleStore(path_, "launch");
+  EXPECT_FALSE(nothing.found);
+  EXPECT_TRUE(nothing.notes.empty()) << "missing files are no news";
+
+  StoredObstacles store;
+  store.session = "launch";
+  store.service_revision = 2;
+  store.service = {spec("old", "map", 1.0)};
+  store.topic = {spec("rock", "map", 2.0)};
+  StoredObstacles record;
+  record.session = "launch";
+  record.service_revision = 3;
+  record.service = {spec("new", "map", 4.0)};
+
+  // The record alone (no periodic write yet in this launch).
+  write(serviceRecordPath(path_), record);
+  LoadedStore alone = loadObstacleStore(path_, "launch");
+  ASSERT_TRUE(alone.found);
+  ASSERT_EQ(alone.obstacles.service.size(), 1u);
+  EXPECT_EQ(alone.obstacles.service[0].name, "new");
+  EXPECT_EQ(alone.obstacles.service_revision, 3u);
+
+  // Both: the newer record's service obstacles over the store's topic obstacles.
+  write(path_, store);
+  LoadedStore both = loadObstacleStore(path_, "launch");
+  ASSERT_TRUE(both.found);
+  ASSERT_EQ(both.obstacles.service.size(), 1u);
+  EXPECT_EQ(both.obstacles.service[0].name, "new");
+  ASSERT_EQ(both.obstacles.topic.size(), 1u);
+  EXPECT_TRUE(both.notes.empty());
+
+  // A store written after the record holds the service obstacles itself.
+  store.service_revision = 3;
+  write(path_, store);
+  LoadedStore newer_store = loadObstacleStore(path_, "launch");
+  ASSERT_EQ(newer_store.obstacles.service.size(), 1u);
+  EXPECT_EQ(newer_store.obstacles.service[0].name, "old");
+
+  // A store of another launch is left out (not an error), the record still counts.
+  store.session = "earlier";
+  write(path_, store);
+  LoadedStore foreign = loadObstacleStore(path_, "launch");
+  ASSERT_TRUE(foreign.found);
+  EXPECT_TRUE(foreign.obstacles.topic.empty());
+  ASSERT_EQ(foreign.notes.size(), 1u);
+  EXPECT_FALSE(foreign.notes[0].failed);
+  EXPECT_NE(foreign.notes[0].text.find("run_id 'earlier'"), std::string::npos);
+
+  // A corrupt record is an error, and the store is used alone.
+  store.session = "launch";
+  write(path_, store);
+  ASSERT_EQ(writeFileAtomically(serviceRecordPath(path_), "ellipse_collision obstacle store 1\n"),
+            "");
+  LoadedStore corrupt = loadObstacleStore(path_, "launch");
+  ASSERT_TRUE(corrupt.found);
+  EXPECT_EQ(corrupt.obstacles.service[0].name, "old");
+  ASSERT_EQ(corrupt.notes.size(), 1u);
+  EXPECT_TRUE(corrupt.notes[0].failed);
+  EXPECT_NE(corrupt.notes[0].text.find("is corrupt"), std::string::npos);
+}
+
+/// The node's way of keeping the store (CollisionNode::persistObstacles()), against a live
+/// registry: service calls that change only service obstacles write the record, one that removes
+/// a topic obstacle writes the whole store, topic messages write the whole store some time later
+/// (or not before the crash). At any crash the registry restored from the files has exactly the
+/// live service obstacles, and the topic obstacles of the last whole store written, less those
+/// the service took over since.
+TEST_F(StoreDirectory, WhatIsRestoredAfterAnyCrashIsEveryAcknowledgedServiceChange) {
+  std::mt19937 rng(16);
+  const auto name = [&rng](const char* prefix) {
+    return std::string(prefix) + std::to_string(std::uniform_int_distribution<int>(0, 7)(rng));
+  };
+  for (int trial = 0; trial < 200; ++trial) {
+    std::remove(path_.c_str());
+    std::remove(serviceRecordPath(path_).c_str());
+    EllipseRegistry live({spec("arm", "map", 0.0)}, {});
+    std::uint64_t revision = 0;
+    StoredObstacles last_store;  // the last whole store written
+    bool store_behind = false;
+    const auto snapshot = [&] {
+      StoredObstacles stored = live.runtimeObstacles();
+      stored.session = "launch";
+      stored.service_revision = revision;
+      return stored;
+    };
+    const int steps = std::uniform_int_distribution<int>(1, 30)(rng);
+    for (int step = 0; step < steps; ++step) {
+      const int action = std::uniform_int_distribution<int>(0, 3)(rng);
+      if (action == 0) {  // ~add_obstacles
+        const std::string added = name(rng() % 2 == 0 ? "t" : "s");
+        if (live.addObstacles({spec(added, "map", step)}, "o") != "") continue;
+        ++revision;
+        StoredObstacles record = live.serviceObstacles();
+        record.session = "launch";
+        record.service_revision = revision;
+        write(serviceRecordPath(path_), record);
+      } else if (action == 1) {  // ~remove_obstacles
+        std::vector<std::string> names = {name(rng() % 2 == 0 ? "t" : "s")};
+        if (rng() % 3 == 0) names.push_back(name("s"));  // a topic and a service obstacle at once
+        const bool topic_changed = live.namesTopicObstacle(names);
+        if (live.removeObstacles(names, "n") != "") continue;
+        ++revision;
+        if (topic_changed) {
+          last_store = snapshot();
+          write(path_, last_store);
+        } else {
+          StoredObstacles record = live.serviceObstacles();
+          record.session = "launch";
+          record.service_revision = revision;
+          write(serviceRecordPath(path_), record);
+        }
+      } else if (action == 2) {  // an ~obstacles message
+        std::vector<EllipseSpec> topic;
+        for (int k = std::uniform_int_distribution<int>(0, 3)(rng); k > 0; --k) {
+          topic.push_back(spec(name("t"), "map", k));
+        }
+        std::sort(topic.begin(), topic.end(),
+                  [](const EllipseSpec& a, const EllipseSpec& b) { return a.name < b.name; });
+        topic.erase(std::unique(topic.begin(), topic.end(),
+                                [](const EllipseSpec& a, const EllipseSpec& b) {
+                                  return a.name == b.name;
+                                }),
+                    topic.end());
+        if (live.replaceTopicObstacles(topic, "e", step) == "") store_behind = true;
+      } else if (store_behind) {  // the periodic write
+        last_store = snapshot();
+        write(path_, last_store);
+        store_behind = false;
+      }
+    }
+
+    // The crash: a new registry restores what is on disk.
+    const LoadedStore loaded = loadObstacleStore(path_, "launch");
+    EllipseRegistry restarted({spec("arm", "map", 0.0)}, {});
+    if (loaded.found) {
+      ASSERT_EQ(restarted.restore(loaded.obstacles), "") << "trial " << trial;
+    }
+    const StoredObstacles expected_service = live.serviceObstacles();
+    const StoredObstacles restored = restarted.runtimeObstacles();
+    ASSERT_EQ(restored.service.size(), expected_service.service.size()) << "trial " << trial;
+    for (std::size_t i = 0; i < restored.service.size(); ++i) {
+      EXPECT_TRUE(same(restored.service[i], expected_service.service[i])) << "trial " << trial;
+    }
+    std::vector<std::string> expected_topic;
+    for (const EllipseSpec& topic : last_store.topic) {
+      if (!live.contains(topic.name) ||
+          live.entries().at(topic.name).source != EllipseSource::ServiceObstacle) {
+        expected_topic.push_back(topic.name);
+      }
+    }
+    std::vector<std::string> restored_topic;
+    for (const EllipseSpec& topic : restored.topic) restored_topic.push_back(topic.name);
+    EXPECT_EQ(restored_topic, expected_topic) << "trial " << trial;
+  }
 }
 
 TEST(ObstacleStore, AtomicWriteReplacesTheFile) {

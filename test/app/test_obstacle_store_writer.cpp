@@ -49,6 +49,7 @@ class StoreWriter : public ::testing::Test {
   }
   void TearDown() override {
     std::remove(path_.c_str());
+    std::remove(serviceRecordPath(path_).c_str());
     rmdir((std::string(directory_) + "/sub/dir").c_str());
     rmdir((std::string(directory_) + "/sub").c_str());
     rmdir(directory_);
@@ -107,6 +108,23 @@ TEST_F(StoreWriter, AFailedWriteIsReportedWithTheStepAndPathUntilOneSucceeds) {
     EXPECT_EQ(writer.lastError(), "");
   }
   EXPECT_EQ(onDisk(path_).topic_stamp_s, 3.0);
+}
+
+TEST_F(StoreWriter, AServiceRecordIsOnDiskBesideTheStoreWhenItReturns) {
+  ObstacleStoreWriter writer(path_);
+  writer.writeLater(snapshot(1.0, 5000));
+  StoredObstacles record;
+  record.session = "test";
+  record.service_revision = 7;
+  record.service = snapshot(0.0, 2).topic;
+  ASSERT_EQ(writer.writeServiceNow(record), "");
+  const StoredObstacles back = onDisk(serviceRecordPath(path_));
+  EXPECT_EQ(back.service_revision, 7u);
+  EXPECT_EQ(back.service.size(), 2u);
+  EXPECT_TRUE(back.topic.empty());
+  writer.flush();
+  EXPECT_EQ(onDisk(path_).topic_stamp_s, 1.0) << "the store itself, untouched by the record";
+  EXPECT_EQ(onDisk(path_).topic.size(), 5000u);
 }
 
 TEST_F(StoreWriter, WhatIsQueuedWhenTheWriterGoesIsWritten) {

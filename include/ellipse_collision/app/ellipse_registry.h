@@ -57,6 +57,11 @@ class EllipseRegistry {
   std::size_t dropExpiredTopicObstacles(double now_s, double timeout_s);
   /// The runtime obstacles (service and topic, with the topic stamp) for the obstacle store.
   StoredObstacles runtimeObstacles() const;
+  /// The service obstacles alone (no topic obstacles, no stamp): the store's service record.
+  StoredObstacles serviceObstacles() const;
+  /// Whether any of `names` is a topic obstacle: removing those changes more than the service
+  /// record holds, so the whole store must be written.
+  bool namesTopicObstacle(const std::vector<std::string>& names) const;
   /// Puts back what runtimeObstacles() returned (after a restart), through the same rules as the
   /// service and the topic; "" or why it was refused (then nothing is restored).
   std::string restore(const StoredObstacles& stored);

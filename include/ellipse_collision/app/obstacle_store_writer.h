@@ -32,6 +32,10 @@ class ObstacleStoreWriter {
   /// Queues `obstacles` like writeLater() and waits until they (or a newer snapshot) are on disk:
   /// "" or why the write failed (the failing step with errno's text).
   std::string writeNow(StoredObstacles obstacles);
+  /// Writes `record` (service obstacles alone) to serviceRecordPath() of the store and waits
+  /// until it (or a newer record) is on disk: "" or why the write failed. Queued records replace
+  /// each other as snapshots do, and a record goes before a queued snapshot (its caller waits).
+  std::string writeServiceNow(StoredObstacles record);
   /// Waits until nothing is queued or being written.
   void flush();
 
@@ -47,9 +51,21 @@ class ObstacleStoreWriter {
   mutable std::mutex mutex_;
   std::condition_variable queued_or_stopping_;
   std::condition_variable written_;
-  std::optional<StoredObstacles> queued_;
-  std::uint64_t queued_version_{0};   ///< version of the newest snapshot ever queued
-  std::uint64_t written_version_{0};  ///< version of the newest snapshot written
+  /// One file's newest queued content and how far its writes got.
+  struct Slot {
+    std::optional<StoredObstacles> queued;
+    std::uint64_t queued_version{0};   ///< version of the newest content ever queued
+    std::uint64_t written_version{0};  ///< version of the newest content written
+    std::string last_error;            ///< outcome of the newest finished write
+  };
+  /// Queues `content` in `slot`; returns its version.
+  std::uint64_t queue(Slot& slot, StoredObstacles content);
+  /// Writes what `slot` holds to `path` (the lock is released meanwhile).
+  void writeSlot(Slot& slot, const std::string& path, std::unique_lock<std::mutex>& lock);
+
+  const std::string record_path_;
+  Slot store_;    ///< the whole store, at path_
+  Slot service_;  ///< the service record, at record_path_
   std::string last_error_;
   std::size_t writes_{0};
   bool stopping_{false};

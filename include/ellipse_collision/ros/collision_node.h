@@ -59,9 +59,10 @@ class CollisionNode {
   /// (roslaunch's /run_id) from ~obstacle_store; a missing, corrupt or foreign store is logged and
   /// the node starts without it.
   void restoreObstacles();
-  /// Writes the runtime obstacles to ~obstacle_store (atomically, durable on return); "" or why not.
-  /// For the services, which answer success only once their change is durable.
-  std::string persistObstacles();
+  /// Counts a service change and makes it durable before returning: "" or why not. For the
+  /// services, which answer success only once their change is durable. A change that touched
+  /// topic obstacles (`topic_changed`) writes the whole store, any other the service record alone.
+  std::string persistObstacles(bool topic_changed);
   /// For ~obstacles messages and expiry: the store is written in the background, at most once
   /// per ~obstacle_store_period (0: after every message), so a perception stream never waits
   /// for the disk.
@@ -128,6 +129,7 @@ class CollisionNode {
   std::uint64_t time_jumps_{0};
   std::string obstacle_store_;  ///< path of the store; "" = off
   std::string session_;         ///< /run_id of this launch
+  std::uint64_t service_revision_{0};  ///< service changes of this launch (StoredObstacles)
   std::unique_ptr<app::ObstacleStoreWriter> store_writer_;  ///< null when the store is off
   bool store_behind_{false};  ///< runtime obstacles changed since the last snapshot was queued
 };
