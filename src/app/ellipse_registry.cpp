@@ -48,18 +48,30 @@ EllipseRegistry::EllipseRegistry(const std::vector<EllipseSpec>& links,
     : limits_(limits) {
   const auto add = [this](const EllipseSpec& spec, EllipseSource source) {
     if (spec.name.empty()) throw std::invalid_argument("ellipse with an empty name");
-    if (!entries_.emplace(spec.name, StoredEllipse{spec, source}).second) {
+    if (entries_.count(spec.name) != 0) {
       throw std::invalid_argument("duplicate ellipse name '" + spec.name + "'");
     }
+    put(spec, source);
   };
   for (const EllipseSpec& spec : links) add(spec, EllipseSource::ConfiguredLink);
   for (const EllipseSpec& spec : obstacles) add(spec, EllipseSource::ConfiguredObstacle);
 }
 
-std::size_t EllipseRegistry::count(EllipseSource source) const {
-  std::size_t n = 0;
-  for (const auto& named : entries_) n += named.second.source == source ? 1 : 0;
-  return n;
+void EllipseRegistry::put(const EllipseSpec& spec, EllipseSource source) {
+  const auto [it, inserted] = entries_.try_emplace(spec.name, StoredEllipse{spec, source});
+  if (!inserted) {
+    --counts_[static_cast<std::size_t>(it->second.source)];
+    if (it->second.source == EllipseSource::ServiceObstacle) service_names_.erase(spec.name);
+    it->second = StoredEllipse{spec, source};
+  }
+  ++counts_[static_cast<std::size_t>(source)];
+  if (source == EllipseSource::ServiceObstacle) service_names_.insert(spec.name);
+}
+
+EllipseRegistry::Entries::iterator EllipseRegistry::erase(Entries::iterator it) {
+  --counts_[static_cast<std::size_t>(it->second.source)];
+  if (it->second.source == EllipseSource::ServiceObstacle) service_names_.erase(it->first);
+  return entries_.erase(it);
 }
 
 std::string EllipseRegistry::checkLimits(const std::vector<EllipseSpec>& obstacles,
@@ -103,7 +115,7 @@ std::string EllipseRegistry::addObstacles(const std::vector<EllipseSpec>& obstac
     }
   }
   for (const EllipseSpec& spec : obstacles) {
-    entries_[spec.name] = StoredEllipse{spec, EllipseSource::ServiceObstacle};
+    put(spec, EllipseSource::ServiceObstacle);
   }
   ++revision_;
   return {};
@@ -124,7 +136,7 @@ std::string EllipseRegistry::removeObstacles(const std::vector<std::string>& nam
              "': expected an obstacle name, got a configured link (links cannot be removed)";
     }
   }
-  for (const std::string& name : names) entries_.erase(name);
+  for (const std::string& name : names) erase(entries_.find(name));
   ++revision_;
   return {};
 }
@@ -143,10 +155,10 @@ std::string EllipseRegistry::replaceTopicObstacles(const std::vector<EllipseSpec
     }
   }
   for (auto it = entries_.begin(); it != entries_.end();) {
-    it = it->second.source == EllipseSource::TopicObstacle ? entries_.erase(it) : std::next(it);
+    it = it->second.source == EllipseSource::TopicObstacle ? erase(it) : std::next(it);
   }
   for (const EllipseSpec& spec : obstacles) {
-    entries_.emplace(spec.name, StoredEllipse{spec, EllipseSource::TopicObstacle});
+    put(spec, EllipseSource::TopicObstacle);
   }
   topic_stamp_s_ = stamp_s;
   ++revision_;
@@ -165,9 +177,8 @@ StoredObstacles EllipseRegistry::runtimeObstacles() const {
 
 StoredObstacles EllipseRegistry::serviceObstacles() const {
   StoredObstacles stored;
-  for (const auto& named : entries_) {
-    if (named.second.source == EllipseSource::ServiceObstacle) stored.service.push_back(named.second.spec);
-  }
+  stored.service.reserve(service_names_.size());
+  for (const std::string& name : service_names_) stored.service.push_back(entries_.at(name).spec);
   return stored;
 }
 
@@ -179,12 +190,16 @@ bool EllipseRegistry::namesTopicObstacle(const std::vector<std::string>& names) 
 }
 
 std::string EllipseRegistry::restore(const StoredObstacles& stored) {
-  const std::map<std::string, StoredEllipse> before = entries_;
+  const Entries before = entries_;
+  const std::array<std::size_t, 4> counts_before = counts_;
+  const std::set<std::string> service_names_before = service_names_;
   const double stamp_before = topic_stamp_s_;
   std::string error = addObstacles(stored.service, "service obstacles");
   if (error.empty()) error = replaceTopicObstacles(stored.topic, "topic obstacles", stored.topic_stamp_s);
   if (!error.empty()) {
     entries_ = before;
+    counts_ = counts_before;
+    service_names_ = service_names_before;
     topic_stamp_s_ = stamp_before;
     ++revision_;
   }
@@ -196,7 +211,7 @@ std::size_t EllipseRegistry::dropExpiredTopicObstacles(double now_s, double time
   std::size_t dropped = 0;
   for (auto it = entries_.begin(); it != entries_.end();) {
     if (it->second.source == EllipseSource::TopicObstacle) {
-      it = entries_.erase(it);
+      it = erase(it);
       ++dropped;
       ++revision_;
     } else {

@@ -1,6 +1,10 @@
 // Name rules of the stored ellipses (links, configured, service and topic obstacles); no master.
 #include <gtest/gtest.h>
 
+#include <random>
+#include <string>
+#include <vector>
+
 #include "ellipse_collision/app/ellipse_registry.h"
 
 namespace ellipse_collision::app {
@@ -153,6 +157,56 @@ TEST(EllipseRegistry, RuntimeObstaclesBeyondTheLimitsAreRefusedNamingTheLimit) {
             "ellipses[1].name: expected at most max_name_length = 8 characters, got 9");
   EXPECT_EQ(registry.removeObstacles({"a"}, "names"), "");
   EXPECT_EQ(registry.addObstacles({spec("12345678")}, "obstacles"), "");
+}
+
+TEST(EllipseRegistry, CountsAndServiceObstaclesFollowEveryChangeAsAScanOfTheEntriesFindsThem) {
+  EllipseRegistry registry = makeRegistry();
+  std::mt19937 rng(7);
+  const auto name = [&rng] {
+    static const char* const kNames[] = {"arm", "table", "a", "b", "c", "d", "e", "f"};
+    return std::string(kNames[std::uniform_int_distribution<int>(0, 7)(rng)]);
+  };
+  for (int step = 0; step < 2000; ++step) {
+    switch (std::uniform_int_distribution<int>(0, 4)(rng)) {
+      case 0:
+        registry.addObstacles({spec(name())}, "o");
+        break;
+      case 1:
+        registry.removeObstacles({name()}, "n");
+        break;
+      case 2: {
+        std::vector<EllipseSpec> topic;
+        for (int k = std::uniform_int_distribution<int>(0, 2)(rng); k > 0; --k) {
+          topic.push_back(spec(name()));
+        }
+        registry.replaceTopicObstacles(topic, "e", step);
+        break;
+      }
+      case 3:
+        registry.dropExpiredTopicObstacles(step, 1.0);
+        break;
+      default: {
+        StoredObstacles stored;
+        stored.service = {spec(name())};
+        stored.topic = {spec(name())};
+        registry.restore(stored);  // refused whole on a clash: the counts too
+      }
+    }
+    for (const EllipseSource source :
+         {EllipseSource::ConfiguredLink, EllipseSource::ConfiguredObstacle,
+          EllipseSource::ServiceObstacle, EllipseSource::TopicObstacle}) {
+      std::size_t scanned = 0;
+      for (const auto& entry : registry.entries()) scanned += entry.second.source == source ? 1 : 0;
+      ASSERT_EQ(registry.count(source), scanned)
+          << "step " << step << ", source " << static_cast<int>(source);
+    }
+    std::vector<std::string> service, listed;
+    for (const auto& entry : registry.entries()) {
+      if (entry.second.source == EllipseSource::ServiceObstacle) service.push_back(entry.first);
+    }
+    for (const EllipseSpec& spec : registry.serviceObstacles().service) listed.push_back(spec.name);
+    ASSERT_EQ(listed, service) << "step " << step;
+  }
 }
 
 TEST(EllipseRegistry, DuplicateConfiguredNameIsRejected) {

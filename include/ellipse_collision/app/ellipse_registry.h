@@ -1,8 +1,10 @@
 #pragma once
 
 #include <cstddef>
+#include <array>
 #include <cstdint>
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -70,7 +72,7 @@ class EllipseRegistry {
 
   const std::map<std::string, StoredEllipse>& entries() const { return entries_; }
   bool contains(const std::string& name) const { return entries_.count(name) != 0; }
-  std::size_t count(EllipseSource source) const;
+  std::size_t count(EllipseSource source) const { return counts_[static_cast<std::size_t>(source)]; }
   /// Changes with every change of entries(): while it is the same, the entries are the same
   /// objects with the same specs (what PlacementCache relies on).
   std::uint64_t revision() const { return revision_; }
@@ -81,7 +83,19 @@ class EllipseRegistry {
   std::string checkLimits(const std::vector<EllipseSpec>& obstacles, const std::string& field,
                           std::size_t runtime_after) const;
 
-  std::map<std::string, StoredEllipse> entries_;
+  using Entries = std::map<std::string, StoredEllipse>;
+  /// `spec` under its name, from `source`, in place of any entry of that name; keeps counts_.
+  void put(const EllipseSpec& spec, EllipseSource source);
+  /// Erases the entry at `it` and returns the next; keeps counts_.
+  Entries::iterator erase(Entries::iterator it);
+
+  Entries entries_;
+  /// Entries per EllipseSource: every request checks the runtime obstacles against max_obstacles,
+  /// and counting them in the map took 2 ms each at 100,000.
+  std::array<std::size_t, 4> counts_{};
+  /// The service obstacles' names, for serviceObstacles(): a service call's record is written
+  /// from them without walking a perception stream's 100,000 topic obstacles (1.4-4 ms).
+  std::set<std::string> service_names_;
   RegistryLimits limits_;
   double topic_stamp_s_{0.0};
   std::uint64_t revision_{0};
