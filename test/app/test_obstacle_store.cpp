@@ -271,6 +271,12 @@ TEST_F(StoreDirectory, WhatIsRestoredAfterAnyCrashIsEveryAcknowledgedServiceChan
       stored.service_revision = revision;
       return stored;
     };
+    const auto writeRecord = [&] {
+      StoredObstacles record = live.serviceObstacles();
+      record.session = "launch";
+      record.service_revision = revision;
+      write(serviceRecordPath(path_), record);
+    };
     const int steps = std::uniform_int_distribution<int>(1, 30)(rng);
     for (int step = 0; step < steps; ++step) {
       const int action = std::uniform_int_distribution<int>(0, 3)(rng);
@@ -278,10 +284,7 @@ TEST_F(StoreDirectory, WhatIsRestoredAfterAnyCrashIsEveryAcknowledgedServiceChan
         const std::string added = name(rng() % 2 == 0 ? "t" : "s");
         if (live.addObstacles({spec(added, "map", step)}, "o") != "") continue;
         ++revision;
-        StoredObstacles record = live.serviceObstacles();
-        record.session = "launch";
-        record.service_revision = revision;
-        write(serviceRecordPath(path_), record);
+        writeRecord();
       } else if (action == 1) {  // ~remove_obstacles
         std::vector<std::string> names = {name(rng() % 2 == 0 ? "t" : "s")};
         if (rng() % 3 == 0) names.push_back(name("s"));  // a topic and a service obstacle at once
@@ -292,10 +295,7 @@ TEST_F(StoreDirectory, WhatIsRestoredAfterAnyCrashIsEveryAcknowledgedServiceChan
           last_store = snapshot();
           write(path_, last_store);
         } else {
-          StoredObstacles record = live.serviceObstacles();
-          record.session = "launch";
-          record.service_revision = revision;
-          write(serviceRecordPath(path_), record);
+          writeRecord();
         }
       } else if (action == 2) {  // an ~obstacles message
         std::vector<EllipseSpec> topic;
