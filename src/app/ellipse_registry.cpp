@@ -182,7 +182,7 @@ StoredObstacles EllipseRegistry::serviceObstacles() const {
   return stored;
 }
 
-bool EllipseRegistry::namesTopicObstacle(const std::vector<std::string>& names) const {
+bool EllipseRegistry::anyTopicObstacle(const std::vector<std::string>& names) const {
   return std::any_of(names.begin(), names.end(), [this](const std::string& name) {
     const auto found = entries_.find(name);
     return found != entries_.end() && found->second.source == EllipseSource::TopicObstacle;

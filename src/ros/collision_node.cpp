@@ -401,7 +401,7 @@ bool CollisionNode::onAddObstacles(AddObstacles::Request& request,
 
 bool CollisionNode::onRemoveObstacles(RemoveObstacles::Request& request,
                                       RemoveObstacles::Response& response) {
-  const bool topic_changed = registry_.namesTopicObstacle(request.names);
+  const bool topic_changed = registry_.anyTopicObstacle(request.names);
   std::string error = registry_.removeObstacles(request.names, "names");
   if (error.empty()) {
     const std::string store_error = persistObstacles(topic_changed);

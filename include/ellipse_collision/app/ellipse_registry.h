@@ -1,7 +1,7 @@
 #pragma once
 
-#include <cstddef>
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <map>
 #include <set>
@@ -63,7 +63,7 @@ class EllipseRegistry {
   StoredObstacles serviceObstacles() const;
   /// Whether any of `names` is a topic obstacle: removing those changes more than the service
   /// record holds, so the whole store must be written.
-  bool namesTopicObstacle(const std::vector<std::string>& names) const;
+  bool anyTopicObstacle(const std::vector<std::string>& names) const;
   /// Puts back what runtimeObstacles() returned (after a restart), through the same rules as the
   /// service and the topic; "" or why it was refused (then nothing is restored).
   std::string restore(const StoredObstacles& stored);
