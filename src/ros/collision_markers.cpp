@@ -350,7 +350,6 @@ visualization_msgs::MarkerArray CollisionMarkers::update(
       it = l.entries.erase(it);
     }
     l.by_position = std::move(positions[layer]);
-    if (!regroup[layer]) recutCrowdedCells(l, dirty[layer]);
     if (regroup[layer]) {
       std::vector<Eigen::Vector2d> centres;
       centres.reserve(l.entries.size());
@@ -363,6 +362,8 @@ visualization_msgs::MarkerArray CollisionMarkers::update(
       }
       const std::vector<std::size_t> in_cell = ellipsesPerCell(l);
       l.largest_cell_when_cut = *std::max_element(in_cell.begin(), in_cell.end());
+    } else {
+      recutCrowdedCells(l, dirty[layer]);
     }
 
     std::set<std::int32_t> sent;
