@@ -134,12 +134,15 @@ void CollisionNode::restoreObstacles() {
                   << " topic obstacle(s) from '" << obstacle_store_ << "'");
 }
 
-app::StoredObstacles CollisionNode::takeStoreSnapshot() {
-  app::StoredObstacles stored = registry_.runtimeObstacles();
+app::StoredObstacles CollisionNode::stamped(app::StoredObstacles stored) const {
   stored.session = session_;
   stored.service_revision = service_revision_;
-  store_behind_ = false;
   return stored;
+}
+
+app::StoredObstacles CollisionNode::takeStoreSnapshot() {
+  store_behind_ = false;
+  return stamped(registry_.runtimeObstacles());
 }
 
 std::string CollisionNode::persistObstacles(bool topic_changed) {
@@ -151,10 +154,7 @@ std::string CollisionNode::persistObstacles(bool topic_changed) {
   } else {
     // The service obstacles alone: a call does not rewrite a perception stream's topic
     // obstacles (100,000 of them took 88 ms per call, on the spinner's time).
-    app::StoredObstacles record = registry_.serviceObstacles();
-    record.session = session_;
-    record.service_revision = service_revision_;
-    error = store_writer_->writeServiceNow(std::move(record));
+    error = store_writer_->writeServiceNow(stamped(registry_.serviceObstacles()));
   }
   logStoreError(error);
   return error;

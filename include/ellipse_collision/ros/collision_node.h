@@ -70,6 +70,8 @@ class CollisionNode {
   void onStoreTimer(const ros::WallTimerEvent& event);
   /// The runtime obstacles as the store keeps them; clears store_behind_.
   app::StoredObstacles takeStoreSnapshot();
+  /// `stored` with this launch's session and service_revision_, as both files carry them.
+  app::StoredObstacles stamped(app::StoredObstacles stored) const;
   void logStoreError(const std::string& error) const;
   void publishState(StatePublishing publishing);
   void publishMarkers();
