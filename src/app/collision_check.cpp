@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <iterator>
+#include <string_view>
+#include <unordered_set>
 #include <utility>
 
 #include "ellipse_collision/app/scene_placement.h"
@@ -258,13 +260,20 @@ std::string validateAttached(const std::vector<EllipseSpec>& specs, const std::s
       return describeFieldError(entryName(field, i), *invalid);
     }
   }
+  // Each frame is asked for once: a message of 10,000 obstacles in a sensor frame asked tf
+  // 10,000 times for the same transform. Only found frames are remembered (the first missing
+  // one refuses the message).
+  std::unordered_set<std::string_view> found;
   for (std::size_t i = 0; i < specs.size(); ++i) {
-    const FrameTransform frame = lookup(specs[i].frame_id);
+    const std::string& name = specs[i].frame_id;
+    if ((i > 0 && name == specs[i - 1].frame_id) || found.count(name)) continue;
+    const FrameTransform frame = lookup(name);
     if (!frame.ok) {
       return entryName(field, i) + ".frame_id = '" + specs[i].frame_id +
              "': expected a known tf frame with a transform to '" + settings.fixed_frame +
              "', got none (" + frame.error + ")";
     }
+    found.insert(name);
   }
   return {};
 }

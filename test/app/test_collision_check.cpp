@@ -160,6 +160,26 @@ TEST_F(CollisionCheckTest, AttachedEllipsesNeedValidFieldsThenAKnownFrame) {
             "'map', got none (frame 'nowhere' does not exist)");
 }
 
+TEST_F(CollisionCheckTest, AttachedEllipsesAskForEachDistinctFrameOnce) {
+  const TransformLookup lookup(table_);
+  // 1,000 obstacles in two frames, interleaved and in runs: two lookups.
+  std::vector<EllipseSpec> specs;
+  for (int i = 0; i < 1000; ++i) {
+    const char* frame = (i % 7 == 0 || i > 900) ? "base_link" : "map";
+    specs.push_back(circle("o" + std::to_string(i), frame, i, 0, 0.1));
+  }
+  EXPECT_EQ(validateAttached(specs, "ellipses", settings_, lookup), "");
+  EXPECT_EQ(lookups_, (std::map<std::string, int>{{"base_link", 1}, {"map", 1}}));
+  // A missing frame after many known ones is still found, and named where it first stands.
+  lookups_.clear();
+  specs[950].frame_id = "nowhere";
+  specs[960].frame_id = "nowhere";
+  EXPECT_EQ(validateAttached(specs, "ellipses", settings_, lookup),
+            "ellipses[950].frame_id = 'nowhere': expected a known tf frame with a transform to "
+            "'map', got none (frame 'nowhere' does not exist)");
+  EXPECT_EQ(lookups_, (std::map<std::string, int>{{"base_link", 1}, {"map", 1}, {"nowhere", 1}}));
+}
+
 TEST(Freshness, OnlyStampedTransformsOlderThanTheMaximumAreStale) {
   FrameTransform transform;
   transform.ok = true;

@@ -103,7 +103,8 @@ void predictContacts(CheckOutcome& outcome, const CheckRequest& request,
 constexpr double kMaxPredictionLagS = 1.0;
 
 /// For ellipses that are to be stored (~add_obstacles, the ~obstacles topic): field rules
-/// (findInvalidPaddedField()) for all, then a transform to the fixed frame for each frame.
+/// (findInvalidPaddedField()) for all, then a transform to the fixed frame for each distinct
+/// frame, asked of `lookup` once.
 /// `field` names the list in messages ("obstacles" -> "obstacles[2].frame_id = ...").
 std::string validateAttached(const std::vector<EllipseSpec>& specs, const std::string& field,
                              const CheckSettings& settings, const TransformLookup& lookup);
