@@ -1,7 +1,9 @@
 // Name rules of the stored ellipses (links, configured, service and topic obstacles); no master.
 #include <gtest/gtest.h>
 
+#include <map>
 #include <random>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -207,6 +209,65 @@ TEST(EllipseRegistry, CountsAndServiceObstaclesFollowEveryChangeAsAScanOfTheEntr
     for (const EllipseSpec& spec : registry.serviceObstacles().service) listed.push_back(spec.name);
     ASSERT_EQ(listed, service) << "step " << step;
   }
+}
+
+// Topic messages that mostly repeat the last one's names (a perception stream), against a model
+// of the documented rule: an accepted message leaves exactly its obstacles, with its values, as
+// topic obstacles; every other entry stays as it was; a refused one changes nothing.
+TEST(EllipseRegistry, TopicMessagesLeaveExactlyTheirObstaclesWithTheirValues) {
+  EllipseRegistry registry = makeRegistry();
+  std::map<std::string, std::pair<EllipseSource, double>> model;  // name -> (source, x)
+  for (const auto& [name, entry] : registry.entries()) model[name] = {entry.source, entry.spec.x};
+  std::mt19937 rng(11);
+  std::uniform_int_distribution<int> pick(0, 14);
+  const auto nameOf = [](int k) {
+    return k == 0 ? std::string("table") : k == 1 ? std::string("arm") : "r" + std::to_string(k);
+  };
+  int accepted = 0, refused = 0;
+  for (int step = 0; step < 3000; ++step) {
+    if (step % 10 == 9) {  // now and then the service takes or frees a name
+      const std::string name = nameOf(pick(rng));
+      const bool add = rng() % 2 == 0;
+      const std::string error = add ? registry.addObstacles({spec(name, step)}, "o")
+                                    : registry.removeObstacles({name}, "n");
+      if (error.empty() && add) model[name] = {EllipseSource::ServiceObstacle, step};
+      if (error.empty() && !add) model.erase(name);
+      continue;
+    }
+    std::vector<EllipseSpec> message;
+    std::set<int> used;
+    for (int k = std::uniform_int_distribution<int>(0, 8)(rng); k > 0; --k) {
+      const int which = pick(rng);
+      if (used.insert(which).second) message.push_back(spec(nameOf(which), step + 0.25 * k));
+    }
+    bool clash = false;
+    for (const EllipseSpec& s : message) {
+      const auto found = model.find(s.name);
+      clash = clash || (found != model.end() && found->second.first != EllipseSource::TopicObstacle);
+    }
+    const std::string error = registry.replaceTopicObstacles(message, "ellipses", step);
+    ASSERT_EQ(error.empty(), !clash) << "step " << step << ": " << error;
+    if (!clash) {
+      ++accepted;
+      for (auto it = model.begin(); it != model.end();) {
+        it = it->second.first == EllipseSource::TopicObstacle ? model.erase(it) : std::next(it);
+      }
+      for (const EllipseSpec& s : message) model[s.name] = {EllipseSource::TopicObstacle, s.x};
+    } else {
+      ++refused;
+    }
+    std::map<std::string, std::pair<EllipseSource, double>> now;
+    for (const auto& [name, entry] : registry.entries()) {
+      ASSERT_EQ(entry.spec.name, name) << "step " << step;
+      now[name] = {entry.source, entry.spec.x};
+    }
+    ASSERT_EQ(now, model) << "step " << step;
+    std::size_t topic = 0;
+    for (const auto& [name, entry] : model) topic += entry.first == EllipseSource::TopicObstacle;
+    ASSERT_EQ(registry.count(EllipseSource::TopicObstacle), topic) << "step " << step;
+  }
+  EXPECT_GT(accepted, 500);
+  EXPECT_GT(refused, 500);
 }
 
 TEST(EllipseRegistry, DuplicateConfiguredNameIsRejected) {
