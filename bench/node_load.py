@@ -9,7 +9,10 @@ over a window after a warm-up, and prints one line:
 
 Usage (roscore and the node running, the node's ~links on frames link_0..link_19 in `map`):
   node_load.py --node /ellipse_collision --pid PID --obstacles N [--seconds 20] [--warmup 3]
-               [--no-markers] [--stream HZ]
+               [--no-markers] [--stream HZ] [--stream-frame FRAME]
+
+--stream-frame puts the streamed obstacles in FRAME instead of `map`, e.g. link_0: a sensor on
+the moving robot, whose obstacles move with it in `map` and are all placed anew every check.
 """
 import argparse
 import math
@@ -81,11 +84,11 @@ def random_obstacles(count, rng, frame_id="map"):
     return obstacles
 
 
-def stream_obstacles(node, count, rate_hz, rng, stop):
+def stream_obstacles(node, count, rate_hz, frame_id, rng, stop):
     # A perception node's output: the same obstacles, moved by a few millimetres from one message
     # to the next (two alternating arrays, built once, so that this script's own CPU stays low).
     publisher = rospy.Publisher(node + "/obstacles", EllipseArray, queue_size=1)
-    first = random_obstacles(count, rng)
+    first = random_obstacles(count, rng, frame_id)
     second = [Ellipse(name=e.name, frame_id=e.frame_id, x=e.x + 0.003, y=e.y - 0.002,
                       angle=e.angle, radius_x=e.radius_x, radius_y=e.radius_y) for e in first]
     arrays = [EllipseArray(ellipses=first), EllipseArray(ellipses=second)]
@@ -94,7 +97,7 @@ def stream_obstacles(node, count, rate_hz, rng, stop):
     while not stop.is_set() and not rospy.is_shutdown():
         array = arrays[sent % 2]
         array.header.stamp = rospy.Time.now()
-        array.header.frame_id = "map"
+        array.header.frame_id = frame_id
         publisher.publish(array)
         sent += 1
         rate.sleep()
@@ -111,6 +114,8 @@ def main():
                         help="no ~markers subscriber: the node's own cycle without marker output")
     parser.add_argument("--stream", type=float, default=0.0, metavar="HZ",
                         help="publish the obstacles on ~obstacles at HZ instead of adding them once")
+    parser.add_argument("--stream-frame", default="map", metavar="FRAME",
+                        help="the streamed obstacles' frame (map, or link_0..link_19)")
     args = parser.parse_args(rospy.myargv()[1:])
     rospy.init_node("node_load", anonymous=True)
 
@@ -121,7 +126,8 @@ def main():
     rng = random.Random(16)
     if args.stream > 0:
         stream_thread = threading.Thread(
-            target=stream_obstacles, args=(args.node, args.obstacles, args.stream, rng, stop),
+            target=stream_obstacles,
+            args=(args.node, args.obstacles, args.stream, args.stream_frame, rng, stop),
             daemon=True)
         stream_thread.start()
     else:
@@ -146,7 +152,7 @@ def main():
     time.sleep(args.seconds)
     cpu1, t1 = cpu_seconds(args.pid), time.time()
     elapsed = t1 - t0
-    stream = f"stream_hz={args.stream:g} " if args.stream > 0 else ""
+    stream = f"stream_hz={args.stream:g} stream_frame={args.stream_frame} " if args.stream > 0 else ""
     print(f"obstacles={args.obstacles} {stream}cpu_percent={100.0 * (cpu1 - cpu0) / elapsed:.1f} "
           f"rss_mb={rss_mb(args.pid):.1f} markers_per_s={(counts['markers'] - markers0) / elapsed:.1f} "
           f"checks_per_s={(counts['checks'] - checks0) / elapsed:.1f}", flush=True)

@@ -8,6 +8,8 @@
 #                        [--no-markers]   (the check cycle alone, without a ~markers subscriber)
 #                        [--stream HZ]    (the obstacles published on ~obstacles at HZ, moving a
 #                                          little each message, instead of added once)
+#                        [--stream-frame F] (the streamed obstacles in frame F, e.g. link_0: a sensor
+#                                          on the moving robot; default map)
 #                        [--store]        (the obstacle store on, as by default, in build/benchmark)
 #
 # Default runs: 200@30 2000@30 10000@30 100000@10 over 20 s each (goals: 10000@30 under 10 % of
@@ -29,9 +31,10 @@ while [[ $# -gt 0 ]]; do
     --seconds) seconds="$2"; shift ;;
     --runs) runs="$2"; shift ;;
     --no-markers) markers=(--no-markers) ;;
-    --stream) stream=(--stream "$2"); shift ;;
+    --stream) stream+=(--stream "$2"); shift ;;
+    --stream-frame) stream+=(--stream-frame "$2"); shift ;;
     --store) store=true ;;
-    *) echo "usage: $0 [--smoke] [--node PATH] [--seconds S] [--runs \"N@HZ ...\"] [--no-markers] [--stream HZ] [--store]" >&2
+    *) echo "usage: $0 [--smoke] [--node PATH] [--seconds S] [--runs \"N@HZ ...\"] [--no-markers] [--stream HZ] [--stream-frame F] [--store]" >&2
        exit 2 ;;
   esac
   shift
