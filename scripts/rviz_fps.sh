@@ -11,7 +11,7 @@
 #
 #   scripts/rviz_fps.sh [--obstacles N] [--runs R] [--warmup S] [--window S] [--display :97]
 #                       [--scale PX_PER_M] [--centre X,Y] [--screenshot PATH] [--still]
-#                       [--synthetic MARKERS,TRIANGLES] LABEL=PATH/TO/ellipse_collision_node...
+#                       [--synthetic MARKERS,TRIANGLES] [--rviz-arg ARG]... LABEL=PATH/TO/ellipse_collision_node...
 #
 # --still parks the links (the scene never changes): rviz's drawing ceiling without marker traffic.
 # --centre puts the view's focal point at X, Y [m] in `map` (default: the field's centre). Far off
@@ -19,6 +19,8 @@
 # triangle (rviz culls each marker by its bounding box): what is left is rviz's own work on the
 # markers (receiving them, rebuilding the changed ones, walking the scene), which a GPU does not
 # take off the CPU.
+# --rviz-arg passes ARG to rviz, e.g. --rviz-arg --disable-anti-aliasing (rviz asks the driver for
+# a multisampled window unless told not to, and software OpenGL rasterises every sample).
 # --synthetic M,T replaces the node and its scene by bench/rviz_marker_count.py: M markers of T
 # tiny triangles each, published once, nearly nothing to rasterise, the view on them (the
 # LABEL=PATH arguments are ignored). rviz's cost per marker drawn, which a GPU does not remove
@@ -41,6 +43,7 @@ view_centre=""
 screenshot=""
 scene_args=()
 synthetic=""
+rviz_args=()
 builds=()
 while (($#)); do
   case "$1" in
@@ -54,8 +57,9 @@ while (($#)); do
     --screenshot) screenshot="$2"; shift 2 ;;
     --still) scene_args+=(--still); shift ;;
     --synthetic) synthetic="$2"; shift 2 ;;
+    --rviz-arg) rviz_args+=("$2"); shift 2 ;;
     *=*) builds+=("$1"); shift ;;
-    *) sed -n '2,29p' "$0" >&2; exit 2 ;;
+    *) sed -n '2,32p' "$0" >&2; exit 2 ;;
   esac
 done
 ((${#builds[@]})) || builds=("current=${repo}/build/ws/devel/lib/ellipse_collision/ellipse_collision_node")
@@ -141,7 +145,7 @@ for run in $(seq "${runs}"); do
       pids+=($!)
     fi
     DISPLAY="${display}" LIBGL_ALWAYS_SOFTWARE=1 FRAME_LOG="${out}/frames_${tag}.log" \
-      LD_PRELOAD="${out}/glx_frame_log.so" rviz -d "${out}/view.rviz" > "${out}/rviz_${tag}.txt" 2>&1 &
+      LD_PRELOAD="${out}/glx_frame_log.so" rviz -d "${out}/view.rviz" ${rviz_args[@]+"${rviz_args[@]}"} > "${out}/rviz_${tag}.txt" 2>&1 &
     rviz_pid=$!
     pids+=(${rviz_pid})
     sleep "${warmup}"
