@@ -1,5 +1,6 @@
 #include "ellipse_collision/core/ellipse_polygon.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -33,6 +34,29 @@ const DrawTables& drawTables() {
   return tables;
 }
 
+/// Vertex i of the n-gon: centre + R(angle) (radius_x cos t, radius_y sin t), t = 2 pi i / n, the
+/// one expression of ellipsePolygon() and drawnPolygonInto() (so the two give the same bits).
+template <class Emit>
+void polygonVertices(const Ellipse& ellipse, int segments, Emit&& emit) {
+  const double c = std::cos(ellipse.angle);
+  const double s = std::sin(ellipse.angle);
+  const auto add = [&](double cos_t, double sin_t) {
+    const double x = ellipse.radius_x * cos_t;
+    const double y = ellipse.radius_y * sin_t;
+    emit(Eigen::Vector2d(ellipse.center.x() + c * x - s * y, ellipse.center.y() + s * x + c * y));
+  };
+  if (segments >= 3 && segments <= kMaxDrawSegments) {
+    for (const Eigen::Vector2d& direction : drawTables().unit[segments]) {
+      add(direction.x(), direction.y());
+    }
+  } else {
+    for (int i = 0; i < segments; ++i) {
+      const double t = 2.0 * M_PI * i / segments;
+      add(std::cos(t), std::sin(t));
+    }
+  }
+}
+
 }  // namespace
 
 int drawSegments(const Ellipse& ellipse, double max_gap) {
@@ -45,37 +69,26 @@ int drawSegments(const Ellipse& ellipse, double max_gap) {
 }
 
 std::vector<Eigen::Vector2d> ellipsePolygon(const Ellipse& ellipse, int segments) {
-  const double c = std::cos(ellipse.angle);
-  const double s = std::sin(ellipse.angle);
   std::vector<Eigen::Vector2d> vertices;
-  vertices.reserve(static_cast<std::size_t>(segments));
-  const auto add = [&](double cos_t, double sin_t) {
-    const double x = ellipse.radius_x * cos_t;
-    const double y = ellipse.radius_y * sin_t;
-    vertices.emplace_back(ellipse.center.x() + c * x - s * y, ellipse.center.y() + s * x + c * y);
-  };
-  if (segments >= 3 && segments <= kMaxDrawSegments) {
-    for (const Eigen::Vector2d& direction : drawTables().unit[segments]) {
-      add(direction.x(), direction.y());
-    }
-  } else {
-    for (int i = 0; i < segments; ++i) {
-      const double t = 2.0 * M_PI * i / segments;
-      add(std::cos(t), std::sin(t));
-    }
-  }
+  vertices.reserve(static_cast<std::size_t>(std::max(segments, 0)));
+  polygonVertices(ellipse, segments, [&](const Eigen::Vector2d& v) { vertices.push_back(v); });
   return vertices;
+}
+
+int drawnPolygonInto(const Ellipse& ellipse, Eigen::Vector2d* vertices) {
+  const int segments = drawSegments(ellipse);  // within [kMinDrawSegments, kMaxDrawSegments]
+  polygonVertices(ellipse, segments, [&](const Eigen::Vector2d& v) { *vertices++ = v; });
+  return segments;
+}
+
+std::size_t ellipseTrianglePoints(const Ellipse& ellipse) {
+  return 3 * static_cast<std::size_t>(drawSegments(ellipse) - 2);
 }
 
 std::size_t appendEllipseTriangles(const Ellipse& ellipse,
                                    std::vector<Eigen::Vector2d>& triangles) {
-  const std::vector<Eigen::Vector2d> vertices = ellipsePolygon(ellipse, drawSegments(ellipse));
   const std::size_t before = triangles.size();
-  for (std::size_t i = 1; i + 1 < vertices.size(); ++i) {
-    triangles.push_back(vertices[0]);
-    triangles.push_back(vertices[i]);
-    triangles.push_back(vertices[i + 1]);
-  }
+  forEachTrianglePoint(ellipse, [&](const Eigen::Vector2d& p) { triangles.push_back(p); });
   return triangles.size() - before;
 }
 

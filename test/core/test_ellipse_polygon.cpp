@@ -4,7 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <random>
 
 #include "ellipse_collision/core/ellipse_polygon.h"
 
@@ -142,6 +144,34 @@ TEST(EllipsePolygon, TriangleFanCoversTheAffineRegularPolygonCounterClockwise) {
   // An affine image of the regular n-gon inscribed in the unit circle: (n / 2) sin(2 pi / n) a b.
   EXPECT_NEAR(area, n / 2.0 * std::sin(2 * M_PI / n) * 0.3 * 0.2, 1e-14);
   EXPECT_GT(area, 0.97 * M_PI * 0.3 * 0.2);
+}
+
+TEST(EllipsePolygon, TheMarkersAllocationFreePathGivesTheSameBitsAsThePolygon) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int trial = 0; trial < 2000; ++trial) {
+    // Radii from 1e-4 to 1e3 m: every segment count from 16 to 64 is met.
+    const double a = std::pow(10.0, -4.0 + 7.0 * unit(rng));
+    const Ellipse e = makeEllipse(1e3 * (unit(rng) - 0.5), 1e3 * (unit(rng) - 0.5), a,
+                                  a * (0.01 + unit(rng)), 2 * M_PI * unit(rng));
+    const int n = drawSegments(e);
+    std::array<Eigen::Vector2d, kMaxDrawSegments> into;
+    ASSERT_EQ(drawnPolygonInto(e, into.data()), n);
+    const std::vector<Eigen::Vector2d> polygon = ellipsePolygon(e, n);
+    for (int i = 0; i < n; ++i) {
+      ASSERT_EQ(into[static_cast<std::size_t>(i)], polygon[static_cast<std::size_t>(i)])
+          << "trial " << trial << " vertex " << i;
+    }
+    std::vector<Eigen::Vector2d> fan;
+    forEachTrianglePoint(e, [&fan](const Eigen::Vector2d& p) { fan.push_back(p); });
+    ASSERT_EQ(fan.size(), ellipseTrianglePoints(e));
+    ASSERT_EQ(fan.size(), static_cast<std::size_t>(3 * (n - 2)));
+    for (std::size_t t = 0; t < fan.size() / 3; ++t) {
+      ASSERT_EQ(fan[3 * t], polygon[0]);
+      ASSERT_EQ(fan[3 * t + 1], polygon[t + 1]);
+      ASSERT_EQ(fan[3 * t + 2], polygon[t + 2]);
+    }
+  }
 }
 
 }  // namespace

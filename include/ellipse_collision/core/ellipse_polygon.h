@@ -1,6 +1,8 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <array>
+#include <cstddef>
 #include <vector>
 
 #include "ellipse_collision/core/ellipse.h"
@@ -28,9 +30,29 @@ int drawSegments(const Ellipse& ellipse, double max_gap = kMaxDrawGap);
 /// ellipse's own x axis). n >= 3.
 std::vector<Eigen::Vector2d> ellipsePolygon(const Ellipse& ellipse, int segments);
 
-/// Appends the filled polygon of drawSegments(ellipse) vertices to `triangles` as a fan from its
-/// first vertex: n - 2 triangles, three consecutive points each, counter-clockwise (what rviz's
-/// TRIANGLE_LIST marker draws). Returns the number of points appended.
+/// The vertices of ellipsePolygon(ellipse, drawSegments(ellipse)), the same bits, written to
+/// `vertices` (room for kMaxDrawSegments); returns their count. Without an allocation: the
+/// markers draw thousands of ellipses per cycle, and a vector per polygon was a tenth of that.
+int drawnPolygonInto(const Ellipse& ellipse, Eigen::Vector2d* vertices);
+
+/// The number of points the fan of `ellipse` has: 3 (drawSegments(ellipse) - 2).
+std::size_t ellipseTrianglePoints(const Ellipse& ellipse);
+
+/// Calls visit(point) for each point of the filled polygon of drawSegments(ellipse) vertices as a
+/// fan from its first vertex: n - 2 triangles, three consecutive points each, counter-clockwise
+/// (what rviz's TRIANGLE_LIST marker draws).
+template <class Visit>
+void forEachTrianglePoint(const Ellipse& ellipse, Visit&& visit) {
+  std::array<Eigen::Vector2d, kMaxDrawSegments> vertices;
+  const int n = drawnPolygonInto(ellipse, vertices.data());
+  for (int i = 1; i + 1 < n; ++i) {
+    visit(vertices[0]);
+    visit(vertices[i]);
+    visit(vertices[i + 1]);
+  }
+}
+
+/// The points of forEachTrianglePoint() appended to `triangles`. Returns how many.
 std::size_t appendEllipseTriangles(const Ellipse& ellipse, std::vector<Eigen::Vector2d>& triangles);
 
 }  // namespace ellipse_collision::core
