@@ -39,6 +39,7 @@ set(ELLIPSE_COLLISION_APP_SOURCES
   src/app/field_error.cpp
   src/app/link_fitting.cpp
   src/app/obstacle_store.cpp
+  src/app/obstacle_persistence.cpp
   src/app/obstacle_store_writer.cpp
   src/app/path_request.cpp
   src/app/scan_obstacles.cpp

@@ -62,9 +62,10 @@ CollisionNode::CollisionNode(const ros::NodeHandle& nh, const ros::NodeHandle& p
       tf_listener_(tf_buffer_) {
   obstacle_store_ = config_.obstacle_store ? *config_.obstacle_store
                                            : defaultObstacleStore(ros::this_node::getName());
-  restoreObstacles();
-  if (!obstacle_store_.empty()) {
-    store_writer_ = std::make_unique<app::ObstacleStoreWriter>(obstacle_store_);
+  const std::uint64_t service_revision = restoreObstacles();
+  persistence_ =
+      std::make_unique<app::ObstaclePersistence>(obstacle_store_, session_, service_revision);
+  if (persistence_->enabled()) {
     if (config_.obstacle_store_period_s > 0.0) {
       store_timer_ = nh_.createWallTimer(ros::WallDuration(config_.obstacle_store_period_s),
                                          &CollisionNode::onStoreTimer, this);
@@ -107,8 +108,8 @@ CollisionNode::CollisionNode(const ros::NodeHandle& nh, const ros::NodeHandle& p
                           : std::string()));
 }
 
-void CollisionNode::restoreObstacles() {
-  if (obstacle_store_.empty()) return;
+std::uint64_t CollisionNode::restoreObstacles() {
+  if (obstacle_store_.empty()) return 0;
   ros::param::get("/run_id", session_);
   const app::LoadedStore loaded = app::loadObstacleStore(obstacle_store_, session_);
   for (const app::LoadedStore::Note& note : loaded.notes) {
@@ -120,58 +121,36 @@ void CollisionNode::restoreObstacles() {
   }
   // Counted on from what this launch wrote, restored or not: a later record must never lose to
   // a stale one of the same launch.
-  service_revision_ = loaded.obstacles.service_revision;
-  if (!loaded.found) return;
+  const std::uint64_t service_revision = loaded.obstacles.service_revision;
+  if (!loaded.found) return service_revision;
   const app::StoredObstacles& stored = loaded.obstacles;
   const std::string error = registry_.restore(stored);
   if (!error.empty()) {
     ROS_ERROR_STREAM("ellipse_collision: obstacle store '" << obstacle_store_
                      << "' does not fit the configuration, starting without it: " << error);
-    return;
+    return service_revision;
   }
   ROS_WARN_STREAM("ellipse_collision: restarted: restored " << stored.service.size()
                   << " service obstacle(s) and " << stored.topic.size()
                   << " topic obstacle(s) from '" << obstacle_store_ << "'");
+  return service_revision;
 }
 
-app::StoredObstacles CollisionNode::stamped(app::StoredObstacles stored) const {
-  stored.session = session_;
-  stored.service_revision = service_revision_;
-  return stored;
-}
-
-app::StoredObstacles CollisionNode::takeStoreSnapshot() {
-  store_behind_ = false;
-  return stamped(registry_.runtimeObstacles());
-}
-
-std::string CollisionNode::persistObstacles(bool topic_changed) {
-  ++service_revision_;
-  if (!store_writer_) return {};
-  std::string error;
-  if (topic_changed) {
-    error = store_writer_->writeNow(takeStoreSnapshot());
-  } else {
-    // The service obstacles alone: a call does not rewrite a perception stream's topic
-    // obstacles (100,000 of them took 88 ms per call, on the spinner's time).
-    error = store_writer_->writeServiceNow(stamped(registry_.serviceObstacles()));
-  }
+std::string CollisionNode::persistServiceCall(bool removed_topic_obstacle) {
+  const std::string error = persistence_->afterServiceCall(registry_, removed_topic_obstacle);
   logStoreError(error);
   return error;
 }
 
 void CollisionNode::persistObstaclesLater() {
-  if (!store_writer_) return;
-  store_behind_ = true;
+  if (!persistence_->enabled()) return;
+  persistence_->topicChanged();
   if (config_.obstacle_store_period_s == 0.0) onStoreTimer(ros::WallTimerEvent());
 }
 
 void CollisionNode::onStoreTimer(const ros::WallTimerEvent& /*event*/) {
-  if (!store_writer_) return;
-  logStoreError(store_writer_->lastError());
-  // One snapshot per period however many messages came: the copy is taken here, the text and
-  // the disk are the writer thread's.
-  if (store_behind_) store_writer_->writeLater(takeStoreSnapshot());
+  logStoreError(persistence_->lastError());
+  persistence_->writeIfBehind(registry_);
 }
 
 void CollisionNode::logStoreError(const std::string& error) const {
@@ -180,8 +159,8 @@ void CollisionNode::logStoreError(const std::string& error) const {
 }
 
 CollisionNode::~CollisionNode() {
-  if (store_writer_ && store_behind_) store_writer_->writeLater(takeStoreSnapshot());
-  // store_writer_'s destructor writes what is queued before the node's members go.
+  persistence_->writeIfBehind(registry_);
+  // persistence_'s writer writes what is queued before the node's members go.
 }
 
 void CollisionNode::handleTimeJumpAndExpiry() {
@@ -390,7 +369,7 @@ bool CollisionNode::onAddObstacles(AddObstacles::Request& request,
   if (error.empty()) error = registry_.addObstacles(specs, "obstacles");
   // Durable before success: a node killed right after the answer restores them.
   if (error.empty()) {
-    const std::string store_error = persistObstacles(/*topic_changed=*/false);
+    const std::string store_error = persistServiceCall(/*removed_topic_obstacle=*/false);
     if (!store_error.empty()) error = "added in memory but not persisted: " + store_error;
   }
   response.success = error.empty();
@@ -401,10 +380,10 @@ bool CollisionNode::onAddObstacles(AddObstacles::Request& request,
 
 bool CollisionNode::onRemoveObstacles(RemoveObstacles::Request& request,
                                       RemoveObstacles::Response& response) {
-  const bool topic_changed = registry_.anyTopicObstacle(request.names);
+  const bool removes_topic_obstacle = registry_.anyTopicObstacle(request.names);
   std::string error = registry_.removeObstacles(request.names, "names");
   if (error.empty()) {
-    const std::string store_error = persistObstacles(topic_changed);
+    const std::string store_error = persistServiceCall(removes_topic_obstacle);
     if (!store_error.empty()) error = "removed in memory but not persisted: " + store_error;
   }
   response.success = error.empty();
@@ -467,7 +446,7 @@ void CollisionNode::onDiagnosticsTimer(const ros::TimerEvent& /*event*/) {
     inputs.missing_for_s.emplace_back(frame, (now - since).toSec());
   }
   inputs.obstacles_error = last_obstacles_error_;
-  if (store_writer_) inputs.store_error = store_writer_->lastError();
+  inputs.store_error = persistence_->lastError();
   const app::CheckHealth health = app::assessCheckHealth(inputs);
   status.level = health.level == app::CheckHealth::Level::Error ? diagnostic_msgs::DiagnosticStatus::ERROR
                  : health.level == app::CheckHealth::Level::Warn

@@ -6,12 +6,15 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstdio>
+#include <fstream>
 #include <random>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "ellipse_collision/app/ellipse_registry.h"
+#include "ellipse_collision/app/obstacle_persistence.h"
 #include "ellipse_collision/app/obstacle_store.h"
 
 namespace ellipse_collision::app {
@@ -247,12 +250,61 @@ TEST_F(StoreDirectory, LoadUsesEachFileOfThisLaunchAndSaysWhyAnotherIsLeftOut) {
   EXPECT_NE(corrupt.notes[0].text.find("is corrupt"), std::string::npos);
 }
 
-/// The node's way of keeping the store (CollisionNode::persistObstacles()), against a live
-/// registry: service calls that change only service obstacles write the record, one that removes
-/// a topic obstacle writes the whole store, topic messages write the whole store some time later
-/// (or not before the crash). At any crash the registry restored from the files has exactly the
-/// live service obstacles, and the topic obstacles of the last whole store written, less those
-/// the service took over since.
+/// What is in the file at `path` (false if there is none).
+bool readStored(const std::string& path, StoredObstacles& out) {
+  std::ifstream file(path);
+  if (!file) return false;
+  std::stringstream text;
+  text << file.rdbuf();
+  return parseObstacles(text.str(), out).empty();
+}
+
+TEST_F(StoreDirectory, PersistenceWritesTheRecordOrTheWholeStoreCountingFromTheLoadedRevision) {
+  EllipseRegistry live({spec("arm", "map", 0.0)}, {});
+  ObstaclePersistence persistence(path_, "launch", 7);
+  ASSERT_TRUE(persistence.enabled());
+  ASSERT_EQ(live.addObstacles({spec("crate", "map", 1.0)}, "o"), "");
+  ASSERT_EQ(persistence.afterServiceCall(live, false), "");
+  StoredObstacles record, store;
+  ASSERT_TRUE(readStored(serviceRecordPath(path_), record));
+  EXPECT_FALSE(readStored(path_, store)) << "a service-only call leaves the store alone";
+  EXPECT_EQ(record.session, "launch");
+  EXPECT_EQ(record.service_revision, 8u);
+  ASSERT_EQ(record.service.size(), 1u);
+  EXPECT_EQ(record.service[0].name, "crate");
+
+  ASSERT_EQ(live.replaceTopicObstacles({spec("rock", "map", 2.0)}, "e", 5.0), "");
+  persistence.topicChanged();
+  EXPECT_FALSE(readStored(path_, store)) << "a topic message waits for the periodic write";
+  persistence.writeIfBehind(live);
+  persistence.flush();
+  ASSERT_TRUE(readStored(path_, store));
+  EXPECT_EQ(store.service_revision, 8u);
+  ASSERT_EQ(store.topic.size(), 1u);
+  EXPECT_EQ(store.topic[0].name, "rock");
+
+  ASSERT_EQ(live.removeObstacles({"rock"}, "n"), "");
+  ASSERT_EQ(persistence.afterServiceCall(live, true), "");
+  ASSERT_TRUE(readStored(path_, store)) << "removing a topic obstacle writes the whole store";
+  EXPECT_EQ(store.service_revision, 9u);
+  EXPECT_TRUE(store.topic.empty());
+  EXPECT_EQ(store.service.size(), 1u);
+
+  ObstaclePersistence off("", "launch", 3);
+  EXPECT_FALSE(off.enabled());
+  EXPECT_EQ(off.afterServiceCall(live, true), "");
+  EXPECT_EQ(off.serviceRevision(), 4u);
+  off.topicChanged();
+  off.writeIfBehind(live);
+  EXPECT_EQ(off.lastError(), "");
+}
+
+/// The node's way of keeping the store (app::ObstaclePersistence, as CollisionNode uses it),
+/// against a live registry: service calls that change only service obstacles write the record,
+/// one that removes a topic obstacle writes the whole store, topic messages write the whole store
+/// some time later (or not before the crash). At any crash the registry restored from the files
+/// has exactly the live service obstacles, and the topic obstacles of the last whole store
+/// written, less those the service took over since.
 TEST_F(StoreDirectory, WhatIsRestoredAfterAnyCrashIsEveryAcknowledgedServiceChange) {
   std::mt19937 rng(16);
   const auto name = [&rng](const char* prefix) {
@@ -262,41 +314,22 @@ TEST_F(StoreDirectory, WhatIsRestoredAfterAnyCrashIsEveryAcknowledgedServiceChan
     std::remove(path_.c_str());
     std::remove(serviceRecordPath(path_).c_str());
     EllipseRegistry live({spec("arm", "map", 0.0)}, {});
-    std::uint64_t revision = 0;
-    StoredObstacles last_store;  // the last whole store written
-    bool store_behind = false;
-    const auto snapshot = [&] {
-      StoredObstacles stored = live.runtimeObstacles();
-      stored.session = "launch";
-      stored.service_revision = revision;
-      return stored;
-    };
-    const auto writeRecord = [&] {
-      StoredObstacles record = live.serviceObstacles();
-      record.session = "launch";
-      record.service_revision = revision;
-      write(serviceRecordPath(path_), record);
-    };
+    ObstaclePersistence persistence(path_, "launch", 0);
+    StoredObstacles last_store;  // the topic obstacles of the last whole store, as documented
     const int steps = std::uniform_int_distribution<int>(1, 30)(rng);
     for (int step = 0; step < steps; ++step) {
       const int action = std::uniform_int_distribution<int>(0, 3)(rng);
       if (action == 0) {  // ~add_obstacles
         const std::string added = name(rng() % 2 == 0 ? "t" : "s");
         if (live.addObstacles({spec(added, "map", step)}, "o") != "") continue;
-        ++revision;
-        writeRecord();
+        ASSERT_EQ(persistence.afterServiceCall(live, false), "");
       } else if (action == 1) {  // ~remove_obstacles
         std::vector<std::string> names = {name(rng() % 2 == 0 ? "t" : "s")};
         if (rng() % 3 == 0) names.push_back(name("s"));  // a topic and a service obstacle at once
-        const bool topic_changed = live.anyTopicObstacle(names);
+        const bool removes_topic_obstacle = live.anyTopicObstacle(names);
         if (live.removeObstacles(names, "n") != "") continue;
-        ++revision;
-        if (topic_changed) {
-          last_store = snapshot();
-          write(path_, last_store);
-        } else {
-          writeRecord();
-        }
+        if (removes_topic_obstacle) last_store = live.runtimeObstacles();
+        ASSERT_EQ(persistence.afterServiceCall(live, removes_topic_obstacle), "");
       } else if (action == 2) {  // an ~obstacles message
         std::vector<EllipseSpec> topic;
         for (int k = std::uniform_int_distribution<int>(0, 3)(rng); k > 0; --k) {
@@ -309,11 +342,13 @@ TEST_F(StoreDirectory, WhatIsRestoredAfterAnyCrashIsEveryAcknowledgedServiceChan
                                   return a.name == b.name;
                                 }),
                     topic.end());
-        if (live.replaceTopicObstacles(topic, "e", step) == "") store_behind = true;
-      } else if (store_behind) {  // the periodic write
-        last_store = snapshot();
-        write(path_, last_store);
-        store_behind = false;
+        if (live.replaceTopicObstacles(topic, "e", step) == "") persistence.topicChanged();
+      } else {  // the periodic write
+        if (persistence.behind()) last_store = live.runtimeObstacles();
+        persistence.writeIfBehind(live);
+        persistence.flush();
+        ASSERT_FALSE(persistence.behind());
+        ASSERT_EQ(persistence.lastError(), "");
       }
     }
 

@@ -13,7 +13,7 @@
 #include "ellipse_collision/ros/collision_markers.h"
 #include "ellipse_collision/app/collision_check.h"
 #include "ellipse_collision/app/ellipse_registry.h"
-#include "ellipse_collision/app/obstacle_store_writer.h"
+#include "ellipse_collision/app/obstacle_persistence.h"
 #include "ellipse_collision/ros/messages.h"
 #include "ellipse_collision/ros/node_config.h"
 #include "ellipse_collision/core/scene_check.h"
@@ -57,21 +57,16 @@ class CollisionNode {
                                  const std::string& min_distance_of = "");
   /// Restores the runtime obstacles of an earlier run of this node in the same launch session
   /// (roslaunch's /run_id) from ~obstacle_store; a missing, corrupt or foreign store is logged and
-  /// the node starts without it.
-  void restoreObstacles();
-  /// Counts a service change and makes it durable before returning: "" or why not. For the
-  /// services, which answer success only once their change is durable. A change that touched
-  /// topic obstacles (`topic_changed`) writes the whole store, any other the service record alone.
-  std::string persistObstacles(bool topic_changed);
+  /// the node starts without it. Returns the service_revision this launch's files counted.
+  std::uint64_t restoreObstacles();
+  /// After an accepted service call: persistence_'s rule, the error logged. "" or why the change
+  /// is not durable (the services answer success only once it is).
+  std::string persistServiceCall(bool removed_topic_obstacle);
   /// For ~obstacles messages and expiry: the store is written in the background, at most once
   /// per ~obstacle_store_period (0: after every message), so a perception stream never waits
   /// for the disk.
   void persistObstaclesLater();
   void onStoreTimer(const ros::WallTimerEvent& event);
-  /// The runtime obstacles as the store keeps them; clears store_behind_.
-  app::StoredObstacles takeStoreSnapshot();
-  /// `stored` with this launch's session and service_revision_, as both files carry them.
-  app::StoredObstacles stamped(app::StoredObstacles stored) const;
   void logStoreError(const std::string& error) const;
   void publishState(StatePublishing publishing);
   void publishMarkers();
@@ -131,9 +126,7 @@ class CollisionNode {
   std::uint64_t time_jumps_{0};
   std::string obstacle_store_;  ///< path of the store; "" = off
   std::string session_;         ///< /run_id of this launch
-  std::uint64_t service_revision_{0};  ///< service changes of this launch (StoredObstacles)
-  std::unique_ptr<app::ObstacleStoreWriter> store_writer_;  ///< null when the store is off
-  bool store_behind_{false};  ///< runtime obstacles changed since the last snapshot was queued
+  std::unique_ptr<app::ObstaclePersistence> persistence_;  ///< the store's rule and its writer
 };
 
 }  // namespace ellipse_collision
