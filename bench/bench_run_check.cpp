@@ -6,6 +6,9 @@
 //                 stores them): nothing moves
 //   moving_links  the same with the links on a base that moves every check among the obstacles
 //   core_only     checkVouchedScene() alone on the placed scene of `cached`, streamed
+//   topic_message what the node does with one ~obstacles message of N obstacles that moved a few
+//                 millimetres since the last one (a perception stream): validateAttached() and
+//                 EllipseRegistry::replaceTopicObstacles(), the message already converted
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -157,6 +160,32 @@ void registerSize(int count) {
       ->Unit(benchmark::kMicrosecond);
 }
 
+void registerTopicMessage(int count) {
+  // Two messages of the same names, alternating, as bench/node_load.py streams them.
+  auto* messages = new std::vector<std::vector<EllipseSpec>>(2, obstacles(count));
+  for (EllipseSpec& spec : (*messages)[1]) {
+    spec.x += 0.003;
+    spec.y -= 0.002;
+  }
+  auto* registry = new EllipseRegistry(links("map"), {},
+                                       RegistryLimits{static_cast<std::size_t>(count), 256});
+  const CheckSettings* check_settings = new CheckSettings(settings());
+  benchmark::RegisterBenchmark(
+      ("topic_message/" + std::to_string(count)).c_str(), [=](benchmark::State& state) {
+        std::size_t sent = 0;
+        for (auto _ : state) {
+          const std::vector<EllipseSpec>& message = (*messages)[sent++ % 2];
+          std::string error = validateAttached(message, "ellipses", *check_settings, fixedFrame);
+          if (error.empty()) error = registry->replaceTopicObstacles(message, "ellipses", 1.0);
+          if (!error.empty()) {
+            state.SkipWithError(error.c_str());
+            break;
+          }
+        }
+      })
+      ->Unit(benchmark::kMillisecond);
+}
+
 }  // namespace
 }  // namespace ellipse_collision::app
 
@@ -164,6 +193,7 @@ int main(int argc, char** argv) {
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   for (const int count : {90, 990, 9990}) ellipse_collision::app::registerSize(count);
+  for (const int count : {10000, 100000}) ellipse_collision::app::registerTopicMessage(count);
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   return 0;
