@@ -61,7 +61,8 @@ EllipseRegistry::EllipseRegistry(const std::vector<EllipseSpec>& links,
   for (const EllipseSpec& spec : obstacles) add(spec, EllipseSource::ConfiguredObstacle);
 }
 
-void EllipseRegistry::put(const EllipseSpec& spec, EllipseSource source) {
+EllipseRegistry::Entries::iterator EllipseRegistry::put(const EllipseSpec& spec,
+                                                        EllipseSource source) {
   const auto [it, inserted] = entries_.try_emplace(spec.name, StoredEllipse{spec, source});
   if (!inserted) {
     --counts_[static_cast<std::size_t>(it->second.source)];
@@ -70,6 +71,7 @@ void EllipseRegistry::put(const EllipseSpec& spec, EllipseSource source) {
   }
   ++counts_[static_cast<std::size_t>(source)];
   if (source == EllipseSource::ServiceObstacle) service_names_.insert(spec.name);
+  return it;
 }
 
 EllipseRegistry::Entries::iterator EllipseRegistry::erase(Entries::iterator it) {
@@ -157,8 +159,12 @@ std::string EllipseRegistry::replaceTopicObstacles(const std::vector<EllipseSpec
   // cost 30 ms per message of 100,000 (a node per name, the name copied, the tree rebalanced).
   std::vector<Entries::iterator> found(obstacles.size());
   std::size_t staying = 0;
+  const bool same_order_known = revision_ == topic_order_revision_;
   for (std::size_t i = 0; i < obstacles.size(); ++i) {
-    found[i] = entries_.find(obstacles[i].name);
+    const std::string& name = obstacles[i].name;
+    found[i] = same_order_known && i < topic_order_.size() && topic_order_[i]->first == name
+                   ? topic_order_[i]
+                   : entries_.find(name);
     if (found[i] == entries_.end()) continue;
     if (found[i]->second.source != EllipseSource::TopicObstacle) {
       return entryName(field, i) + ".name = '" + obstacles[i].name +
@@ -181,13 +187,15 @@ std::string EllipseRegistry::replaceTopicObstacles(const std::vector<EllipseSpec
   }
   for (std::size_t i = 0; i < obstacles.size(); ++i) {
     if (found[i] == entries_.end()) {
-      put(obstacles[i], EllipseSource::TopicObstacle);
+      found[i] = put(obstacles[i], EllipseSource::TopicObstacle);
     } else {
       found[i]->second.spec = obstacles[i];  // a topic obstacle already: the counts stay
     }
   }
   topic_stamp_s_ = stamp_s;
   ++revision_;
+  topic_order_ = std::move(found);
+  topic_order_revision_ = revision_;
   return {};
 }
 

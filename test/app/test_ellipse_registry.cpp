@@ -211,6 +211,35 @@ TEST(EllipseRegistry, CountsAndServiceObstaclesFollowEveryChangeAsAScanOfTheEntr
   }
 }
 
+// The registry remembers where the last message's names are; any change in between must not
+// leave it pointing at entries that went away or changed hands.
+TEST(EllipseRegistry, AMessageInTheLastOnesOrderAfterOtherChangesFindsTheEntriesAsTheyAreNow) {
+  EllipseRegistry registry = makeRegistry();
+  const std::vector<EllipseSpec> message = {spec("r1", 1.0), spec("r2", 2.0), spec("r3", 3.0)};
+  ASSERT_EQ(registry.replaceTopicObstacles(message, "ellipses"), "");
+  ASSERT_EQ(registry.removeObstacles({"r2"}, "names"), "");
+  ASSERT_EQ(registry.replaceTopicObstacles(message, "ellipses"), "");
+  ASSERT_TRUE(registry.contains("r2")) << "removed by the service, back with the next message";
+  EXPECT_EQ(registry.entries().at("r2").spec.x, 2.0);
+  EXPECT_EQ(registry.count(EllipseSource::TopicObstacle), 3u);
+
+  ASSERT_EQ(registry.removeObstacles({"r2"}, "names"), "");
+  ASSERT_EQ(registry.addObstacles({spec("r2", 9.0)}, "obstacles"), "");
+  EXPECT_CONTAINS(registry.replaceTopicObstacles(message, "ellipses"), "~add_obstacles");
+  EXPECT_EQ(registry.entries().at("r2").source, EllipseSource::ServiceObstacle);
+  EXPECT_EQ(registry.entries().at("r2").spec.x, 9.0);
+  ASSERT_EQ(registry.removeObstacles({"r2"}, "names"), "");
+
+  ASSERT_EQ(registry.replaceTopicObstacles(message, "ellipses", 10.0), "");
+  ASSERT_EQ(registry.dropExpiredTopicObstacles(20.0, 1.0), 3u);
+  ASSERT_EQ(registry.replaceTopicObstacles(message, "ellipses", 20.0), "");
+  EXPECT_EQ(registry.count(EllipseSource::TopicObstacle), 3u);
+  for (const EllipseSpec& s : message) {
+    ASSERT_TRUE(registry.contains(s.name)) << s.name;
+    EXPECT_EQ(registry.entries().at(s.name).spec.x, s.x);
+  }
+}
+
 // Topic messages that mostly repeat the last one's names (a perception stream), against a model
 // of the documented rule: an accepted message leaves exactly its obstacles, with its values, as
 // topic obstacles; every other entry stays as it was; a refused one changes nothing.
@@ -224,6 +253,7 @@ TEST(EllipseRegistry, TopicMessagesLeaveExactlyTheirObstaclesWithTheirValues) {
     return k == 0 ? std::string("table") : k == 1 ? std::string("arm") : "r" + std::to_string(k);
   };
   int accepted = 0, refused = 0;
+  std::vector<EllipseSpec> last_message;
   for (int step = 0; step < 3000; ++step) {
     if (step % 10 == 9) {  // now and then the service takes or frees a name
       const std::string name = nameOf(pick(rng));
@@ -235,10 +265,24 @@ TEST(EllipseRegistry, TopicMessagesLeaveExactlyTheirObstaclesWithTheirValues) {
       continue;
     }
     std::vector<EllipseSpec> message;
-    std::set<int> used;
-    for (int k = std::uniform_int_distribution<int>(0, 8)(rng); k > 0; --k) {
-      const int which = pick(rng);
-      if (used.insert(which).second) message.push_back(spec(nameOf(which), step + 0.25 * k));
+    if (rng() % 2 == 0) {
+      // A stream: the last message's names in the same order with new values, now and then one
+      // left out or one more at the end.
+      message = last_message;
+      for (EllipseSpec& s : message) s.x = step + 0.5;
+      if (!message.empty() && rng() % 4 == 0) message.erase(message.begin() + rng() % message.size());
+      if (rng() % 4 == 0) {
+        const std::string extra = nameOf(pick(rng));
+        bool taken = false;
+        for (const EllipseSpec& s : message) taken = taken || s.name == extra;
+        if (!taken) message.push_back(spec(extra, step + 0.75));
+      }
+    } else {
+      std::set<int> used;
+      for (int k = std::uniform_int_distribution<int>(0, 8)(rng); k > 0; --k) {
+        const int which = pick(rng);
+        if (used.insert(which).second) message.push_back(spec(nameOf(which), step + 0.25 * k));
+      }
     }
     bool clash = false;
     for (const EllipseSpec& s : message) {
@@ -249,6 +293,7 @@ TEST(EllipseRegistry, TopicMessagesLeaveExactlyTheirObstaclesWithTheirValues) {
     ASSERT_EQ(error.empty(), !clash) << "step " << step << ": " << error;
     if (!clash) {
       ++accepted;
+      last_message = message;
       for (auto it = model.begin(); it != model.end();) {
         it = it->second.first == EllipseSource::TopicObstacle ? model.erase(it) : std::next(it);
       }

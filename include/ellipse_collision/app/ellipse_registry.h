@@ -85,7 +85,8 @@ class EllipseRegistry {
 
   using Entries = std::map<std::string, StoredEllipse>;
   /// `spec` under its name, from `source`, in place of any entry of that name; keeps counts_.
-  void put(const EllipseSpec& spec, EllipseSource source);
+  /// Returns the entry.
+  Entries::iterator put(const EllipseSpec& spec, EllipseSource source);
   /// Erases the entry at `it` and returns the next; keeps counts_.
   Entries::iterator erase(Entries::iterator it);
 
@@ -99,6 +100,12 @@ class EllipseRegistry {
   RegistryLimits limits_;
   double topic_stamp_s_{0.0};
   std::uint64_t revision_{0};
+  /// The topic obstacles' entries in the order of the last accepted message, valid while
+  /// revision_ is topic_order_revision_ (every other change of the entries moves revision_ on). A
+  /// stream mostly repeats its names in the same order: a name found at its place costs one
+  /// comparison, where a search of the map was half of a message's time at 100,000.
+  std::vector<Entries::iterator> topic_order_;
+  std::uint64_t topic_order_revision_{0};
 };
 
 }  // namespace ellipse_collision::app
