@@ -117,9 +117,10 @@ grep -E '^(Benchmark|BM_)' "${out}/bench_check_path.txt" | grep -vE '_(stddev|cv
 
 # ---- one check of the application layer, the node's own work per ~check_collisions call -------
 echo
-echo "Running bench_run_check (us per app::runCheck with the node's cache, beside the core check alone)"
+echo "Running bench_run_check (us per app::runCheck with the node's cache, beside the core check alone;"
+echo "ms per ~obstacles message of N obstacles, validated and stored)"
 run bench_run_check "${run_check_args[@]}"
-grep -E '^(Benchmark|run_check)' "${out}/bench_run_check.txt" | grep -vE '_(stddev|cv)( |$)' || true
+grep -E '^(Benchmark|run_check|topic_message)' "${out}/bench_run_check.txt" | grep -vE '_(stddev|cv)( |$)' || true
 
 # ---- service round trip (issue 7) ---------------------------------------------------------------
 # Started here, stopped by the EXIT trap whatever ends the script: the node first, then roscore
