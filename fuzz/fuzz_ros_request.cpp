@@ -255,6 +255,21 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       } else {
         FUZZ_REQUIRE(registry.count(app::EllipseSource::TopicObstacle) == specs.size(),
                      "topic obstacles are not exactly the last message's");
+        // Each obstacle of the message as given (in place or new), every other entry as it was.
+        for (const app::EllipseSpec& spec : specs) {
+          const auto found = registry.entries().find(spec.name);
+          FUZZ_REQUIRE(found != registry.entries().end() &&
+                           found->second.source == app::EllipseSource::TopicObstacle &&
+                           sameSpec(found->second.spec, spec),
+                       "topic obstacle '" + spec.name + "' is not stored as given");
+        }
+        for (const auto& [name, entry] : before) {
+          if (entry.first == app::EllipseSource::TopicObstacle) continue;
+          const auto found = registry.entries().find(name);
+          FUZZ_REQUIRE(found != registry.entries().end() && found->second.source == entry.first &&
+                           sameSpec(found->second.spec, entry.second),
+                       "a topic message changed '" + name + "', not a topic obstacle");
+        }
       }
     } else {  // ~check_collisions: names, query and min_distance_of, validated then checked
       CheckCollisions::Request request;
