@@ -159,11 +159,12 @@ std::string EllipseRegistry::replaceTopicObstacles(const std::vector<EllipseSpec
   // cost 30 ms per message of 100,000 (a node per name, the name copied, the tree rebalanced).
   std::vector<Entries::iterator> found(obstacles.size());
   std::size_t staying = 0;
-  const bool same_order_known = revision_ == topic_order_revision_;
+  const std::vector<Entries::iterator>& last_order = topic_order_.entries;
+  const bool same_order_known = revision_ == topic_order_.revision;
   for (std::size_t i = 0; i < obstacles.size(); ++i) {
     const std::string& name = obstacles[i].name;
-    found[i] = same_order_known && i < topic_order_.size() && topic_order_[i]->first == name
-                   ? topic_order_[i]
+    found[i] = same_order_known && i < last_order.size() && last_order[i]->first == name
+                   ? last_order[i]
                    : entries_.find(name);
     if (found[i] == entries_.end()) continue;
     if (found[i]->second.source != EllipseSource::TopicObstacle) {
@@ -194,8 +195,8 @@ std::string EllipseRegistry::replaceTopicObstacles(const std::vector<EllipseSpec
   }
   topic_stamp_s_ = stamp_s;
   ++revision_;
-  topic_order_ = std::move(found);
-  topic_order_revision_ = revision_;
+  topic_order_.entries = std::move(found);
+  topic_order_.revision = revision_;
   return {};
 }
 

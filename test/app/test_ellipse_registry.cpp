@@ -240,6 +240,23 @@ TEST(EllipseRegistry, AMessageInTheLastOnesOrderAfterOtherChangesFindsTheEntries
   }
 }
 
+TEST(EllipseRegistry, ACopyAndTheOriginalTakeTheSameMessageEachIntoItsOwnEntries) {
+  EllipseRegistry original = makeRegistry();
+  const std::vector<EllipseSpec> first = {spec("r1", 1.0), spec("r2", 2.0)};
+  const std::vector<EllipseSpec> next = {spec("r1", 5.0), spec("r2", 6.0)};
+  ASSERT_EQ(original.replaceTopicObstacles(first, "ellipses"), "");
+  EllipseRegistry copy = original;
+  ASSERT_EQ(copy.replaceTopicObstacles(next, "ellipses"), "");
+  EXPECT_EQ(copy.entries().at("r1").spec.x, 5.0);
+  EXPECT_EQ(original.entries().at("r1").spec.x, 1.0) << "the copy wrote into the original";
+  ASSERT_EQ(original.replaceTopicObstacles(next, "ellipses"), "");
+  EXPECT_EQ(original.entries().at("r2").spec.x, 6.0);
+  EllipseRegistry moved = std::move(original);
+  ASSERT_EQ(moved.replaceTopicObstacles(first, "ellipses"), "");
+  EXPECT_EQ(moved.entries().at("r2").spec.x, 2.0);
+  EXPECT_EQ(moved.count(EllipseSource::TopicObstacle), 2u);
+}
+
 // Topic messages that mostly repeat the last one's names (a perception stream), against a model
 // of the documented rule: an accepted message leaves exactly its obstacles, with its values, as
 // topic obstacles; every other entry stays as it was; a refused one changes nothing.

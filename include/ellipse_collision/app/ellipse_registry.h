@@ -101,11 +101,24 @@ class EllipseRegistry {
   double topic_stamp_s_{0.0};
   std::uint64_t revision_{0};
   /// The topic obstacles' entries in the order of the last accepted message, valid while
-  /// revision_ is topic_order_revision_ (every other change of the entries moves revision_ on). A
-  /// stream mostly repeats its names in the same order: a name found at its place costs one
-  /// comparison, where a search of the map was half of a message's time at 100,000.
-  std::vector<Entries::iterator> topic_order_;
-  std::uint64_t topic_order_revision_{0};
+  /// revision_ is `revision` (every other change of the entries moves revision_ on). A stream
+  /// mostly repeats its names in the same order: a name found at its place costs one comparison,
+  /// where a search of the map was half of a message's time at 100,000. A copy of the registry
+  /// starts without it: its iterators point into the original's map (a move takes the map's
+  /// nodes along, and they stay valid).
+  struct TopicOrder {
+    std::vector<Entries::iterator> entries;
+    std::uint64_t revision{0};
+    TopicOrder() = default;
+    TopicOrder(const TopicOrder& /*other*/) {}
+    TopicOrder& operator=(const TopicOrder& /*other*/) {
+      entries.clear();
+      return *this;
+    }
+    TopicOrder(TopicOrder&&) = default;
+    TopicOrder& operator=(TopicOrder&&) = default;
+  };
+  TopicOrder topic_order_;
 };
 
 }  // namespace ellipse_collision::app
