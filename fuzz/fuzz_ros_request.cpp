@@ -53,6 +53,14 @@ bool sameSpec(const app::EllipseSpec& a, const app::EllipseSpec& b) {
          sameBits(a.radius_y, b.radius_y) && sameBits(a.padding, b.padding);
 }
 
+/// Whether `spec` is stored under its name, from `source`, exactly as given.
+bool storedAsGiven(const app::EllipseRegistry& registry, const app::EllipseSpec& spec,
+                   app::EllipseSource source) {
+  const auto found = registry.entries().find(spec.name);
+  return found != registry.entries().end() && found->second.source == source &&
+         sameSpec(found->second.spec, spec);
+}
+
 bool sameMsg(const Ellipse& a, const Ellipse& b) {
   return a.name == b.name && a.frame_id == b.frame_id && sameBits(a.x, b.x) && sameBits(a.y, b.y) &&
          sameBits(a.angle, b.angle) && sameBits(a.radius_x, b.radius_x) &&
@@ -202,10 +210,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         FUZZ_REQUIRE(error.rfind("obstacles[", 0) == 0, "add error names no entry: " + error);
       } else {
         for (const app::EllipseSpec& spec : specs) {
-          const auto found = registry.entries().find(spec.name);
-          FUZZ_REQUIRE(found != registry.entries().end() &&
-                           found->second.source == app::EllipseSource::ServiceObstacle &&
-                           sameSpec(found->second.spec, spec),
+          FUZZ_REQUIRE(storedAsGiven(registry, spec, app::EllipseSource::ServiceObstacle),
                        "added obstacle '" + spec.name + "' is not stored as given");
           FUZZ_REQUIRE(!before.count(spec.name) ||
                            before.at(spec.name).first == app::EllipseSource::ConfiguredObstacle ||
@@ -257,10 +262,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                      "topic obstacles are not exactly the last message's");
         // Each obstacle of the message as given (in place or new), every other entry as it was.
         for (const app::EllipseSpec& spec : specs) {
-          const auto found = registry.entries().find(spec.name);
-          FUZZ_REQUIRE(found != registry.entries().end() &&
-                           found->second.source == app::EllipseSource::TopicObstacle &&
-                           sameSpec(found->second.spec, spec),
+          FUZZ_REQUIRE(storedAsGiven(registry, spec, app::EllipseSource::TopicObstacle),
                        "topic obstacle '" + spec.name + "' is not stored as given");
         }
         for (const auto& [name, entry] : before) {
