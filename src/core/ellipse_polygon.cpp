@@ -85,11 +85,4 @@ std::size_t ellipseTrianglePoints(const Ellipse& ellipse) {
   return 3 * static_cast<std::size_t>(drawSegments(ellipse) - 2);
 }
 
-std::size_t appendEllipseTriangles(const Ellipse& ellipse,
-                                   std::vector<Eigen::Vector2d>& triangles) {
-  const std::size_t before = triangles.size();
-  forEachTrianglePoint(ellipse, [&](const Eigen::Vector2d& p) { triangles.push_back(p); });
-  return triangles.size() - before;
-}
-
 }  // namespace ellipse_collision::core

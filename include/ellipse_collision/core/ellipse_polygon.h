@@ -52,7 +52,4 @@ void forEachTrianglePoint(const Ellipse& ellipse, Visit&& visit) {
   }
 }
 
-/// The points of forEachTrianglePoint() appended to `triangles`. Returns how many.
-std::size_t appendEllipseTriangles(const Ellipse& ellipse, std::vector<Eigen::Vector2d>& triangles);
-
 }  // namespace ellipse_collision::core

@@ -41,7 +41,7 @@ inline constexpr std::array<MarkerStateStyle, 4> kMarkerStates{{
 /// Builds the rviz view of a check, sending only what changed since the last array.
 ///
 /// Ellipses: namespaces `links` and `obstacles`; in each, the ellipses of one state are drawn as
-/// filled polygons (core::appendEllipseTriangles: inscribed, within 2 mm of the rim, 16 to 64
+/// filled polygons (core::forEachTrianglePoint: inscribed, within 2 mm of the rim, 16 to 64
 /// segments) in TRIANGLE_LIST markers of that state's colour (kMarkerStates, alpha
 /// kEllipseAlpha), flat at z = 0. So that a change does not re-send a namespace's every ellipse,
 /// a namespace's ellipses are split by place into B buckets: the cells of a core::MedianPartition
