@@ -6,9 +6,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstdio>
-#include <fstream>
 #include <random>
-#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -16,6 +14,7 @@
 #include "ellipse_collision/app/ellipse_registry.h"
 #include "ellipse_collision/app/obstacle_persistence.h"
 #include "ellipse_collision/app/obstacle_store.h"
+#include "temporary_store.h"
 
 namespace ellipse_collision::app {
 namespace {
@@ -169,23 +168,13 @@ TEST(ObstacleStore, ANewerServiceRecordOfTheSameLaunchReplacesTheServiceObstacle
   }
 }
 
-/// A directory of its own, removed with what is in it.
-class StoreDirectory : public ::testing::Test {
+/// A store in a directory of its own, removed with what is in it.
+class StoreDirectory : public test::TemporaryStore {
  protected:
-  void SetUp() override {
-    ASSERT_NE(mkdtemp(directory_), nullptr);
-    path_ = std::string(directory_) + "/store";
-  }
-  void TearDown() override {
-    std::remove(path_.c_str());
-    std::remove(serviceRecordPath(path_).c_str());
-    rmdir(directory_);
-  }
+  StoreDirectory() : TemporaryStore("store") {}
   void write(const std::string& path, const StoredObstacles& stored) {
     ASSERT_EQ(writeFileAtomically(path, serializeObstacles(stored)), "");
   }
-  char directory_[32] = "/tmp/obstacle_store_XXXXXX";
-  std::string path_;
 };
 
 TEST_F(StoreDirectory, LoadUsesEachFileOfThisLaunchAndSaysWhyAnotherIsLeftOut) {
@@ -250,15 +239,6 @@ TEST_F(StoreDirectory, LoadUsesEachFileOfThisLaunchAndSaysWhyAnotherIsLeftOut) {
   EXPECT_NE(corrupt.notes[0].text.find("is corrupt"), std::string::npos);
 }
 
-/// What is in the file at `path` (false if there is none).
-bool readStored(const std::string& path, StoredObstacles& out) {
-  std::ifstream file(path);
-  if (!file) return false;
-  std::stringstream text;
-  text << file.rdbuf();
-  return parseObstacles(text.str(), out).empty();
-}
-
 TEST_F(StoreDirectory, PersistenceWritesTheRecordOrTheWholeStoreCountingFromTheLoadedRevision) {
   EllipseRegistry live({spec("arm", "map", 0.0)}, {});
   ObstaclePersistence persistence(path_, "launch", 7);
@@ -266,8 +246,8 @@ TEST_F(StoreDirectory, PersistenceWritesTheRecordOrTheWholeStoreCountingFromTheL
   ASSERT_EQ(live.addObstacles({spec("crate", "map", 1.0)}, "o"), "");
   ASSERT_EQ(persistence.afterServiceCall(live, false), "");
   StoredObstacles record, store;
-  ASSERT_TRUE(readStored(serviceRecordPath(path_), record));
-  EXPECT_FALSE(readStored(path_, store)) << "a service-only call leaves the store alone";
+  ASSERT_TRUE(test::readStoredFile(serviceRecordPath(path_), record));
+  EXPECT_FALSE(test::readStoredFile(path_, store)) << "a service-only call leaves the store alone";
   EXPECT_EQ(record.session, "launch");
   EXPECT_EQ(record.service_revision, 8u);
   ASSERT_EQ(record.service.size(), 1u);
@@ -275,17 +255,17 @@ TEST_F(StoreDirectory, PersistenceWritesTheRecordOrTheWholeStoreCountingFromTheL
 
   ASSERT_EQ(live.replaceTopicObstacles({spec("rock", "map", 2.0)}, "e", 5.0), "");
   persistence.topicChanged();
-  EXPECT_FALSE(readStored(path_, store)) << "a topic message waits for the periodic write";
+  EXPECT_FALSE(test::readStoredFile(path_, store)) << "a topic message waits for the periodic write";
   persistence.writeIfBehind(live);
   persistence.flush();
-  ASSERT_TRUE(readStored(path_, store));
+  ASSERT_TRUE(test::readStoredFile(path_, store));
   EXPECT_EQ(store.service_revision, 8u);
   ASSERT_EQ(store.topic.size(), 1u);
   EXPECT_EQ(store.topic[0].name, "rock");
 
   ASSERT_EQ(live.removeObstacles({"rock"}, "n"), "");
   ASSERT_EQ(persistence.afterServiceCall(live, true), "");
-  ASSERT_TRUE(readStored(path_, store)) << "removing a topic obstacle writes the whole store";
+  ASSERT_TRUE(test::readStoredFile(path_, store)) << "removing a topic obstacle writes the whole store";
   EXPECT_EQ(store.service_revision, 9u);
   EXPECT_TRUE(store.topic.empty());
   EXPECT_EQ(store.service.size(), 1u);
@@ -377,10 +357,8 @@ TEST_F(StoreDirectory, WhatIsRestoredAfterAnyCrashIsEveryAcknowledgedServiceChan
   }
 }
 
-TEST(ObstacleStore, AtomicWriteReplacesTheFile) {
-  char directory[] = "/tmp/obstacle_store_XXXXXX";
-  ASSERT_NE(mkdtemp(directory), nullptr);
-  const std::string path = std::string(directory) + "/store";
+TEST_F(StoreDirectory, AtomicWriteReplacesTheFile) {
+  const std::string& path = path_;
   std::string text, error;
   bool missing = false;
   EXPECT_FALSE(readWholeFile(path, text, missing, error));
@@ -389,10 +367,8 @@ TEST(ObstacleStore, AtomicWriteReplacesTheFile) {
   ASSERT_EQ(writeFileAtomically(path, "two"), "");
   ASSERT_TRUE(readWholeFile(path, text, missing, error));
   EXPECT_EQ(text, "two");
-  EXPECT_NE(writeFileAtomically(std::string(directory) + "/no/such/dir/store", "x").find("cannot create"),
+  EXPECT_NE(writeFileAtomically(std::string(directory_) + "/no/such/dir/store", "x").find("cannot create"),
             std::string::npos);
-  std::remove(path.c_str());
-  rmdir(directory);
 }
 
 TEST(ObstacleStore, RegistryRestoresItsRuntimeObstacles) {

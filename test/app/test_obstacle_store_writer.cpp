@@ -9,6 +9,7 @@
 
 #include "ellipse_collision/app/obstacle_store.h"
 #include "ellipse_collision/app/obstacle_store_writer.h"
+#include "temporary_store.h"
 
 namespace ellipse_collision::app {
 namespace {
@@ -33,29 +34,16 @@ StoredObstacles snapshot(double stamp, int count = 1) {
 
 /// The store at `path` as parsed back; topic_stamp_s -1 when it cannot be read.
 StoredObstacles onDisk(const std::string& path) {
-  std::string text, error;
-  bool missing = false;
   StoredObstacles stored;
   stored.topic_stamp_s = -1.0;
-  if (readWholeFile(path, text, missing, error)) parseObstacles(text, stored);
+  test::readStoredFile(path, stored);
   return stored;
 }
 
-class StoreWriter : public ::testing::Test {
+/// The store two directories down, which the writer must create.
+class StoreWriter : public test::TemporaryStore {
  protected:
-  void SetUp() override {
-    ASSERT_NE(mkdtemp(directory_), nullptr);
-    path_ = std::string(directory_) + "/sub/dir/store";
-  }
-  void TearDown() override {
-    std::remove(path_.c_str());
-    std::remove(serviceRecordPath(path_).c_str());
-    rmdir((std::string(directory_) + "/sub/dir").c_str());
-    rmdir((std::string(directory_) + "/sub").c_str());
-    rmdir(directory_);
-  }
-  char directory_[32] = "/tmp/store_writer_XXXXXX";
-  std::string path_;
+  StoreWriter() : TemporaryStore("sub/dir/store") {}
 };
 
 TEST_F(StoreWriter, WriteNowIsOnDiskWhenItReturnsWithItsDirectories) {
