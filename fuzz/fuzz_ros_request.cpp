@@ -267,9 +267,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         }
         for (const auto& [name, entry] : before) {
           if (entry.first == app::EllipseSource::TopicObstacle) continue;
-          const auto found = registry.entries().find(name);
-          FUZZ_REQUIRE(found != registry.entries().end() && found->second.source == entry.first &&
-                           sameSpec(found->second.spec, entry.second),
+          FUZZ_REQUIRE(storedAsGiven(registry, entry.second, entry.first),
                        "a topic message changed '" + name + "', not a topic obstacle");
         }
       }
