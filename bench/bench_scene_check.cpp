@@ -35,6 +35,7 @@
 #include <vector>
 
 #include "bench_scenes.h"
+#include "scene_test_helpers.h"
 #include "ellipse_collision/core/broadphase.h"
 #include "ellipse_collision/core/eigenvalue_test.h"
 #include "ellipse_collision/core/indexed_obstacles.h"
@@ -281,12 +282,7 @@ int main(int argc, char** argv) {
     // The node's scene when its obstacles move: stored by column, links first, vouched for, each
     // role in the name order of the node's registry (a std::map), as its placing order has them.
     static std::map<int, Scene> column_scenes;
-    std::vector<NamedEllipse> registry_order = named;
-    std::stable_sort(registry_order.begin(), registry_order.end(),
-                     [](const NamedEllipse& a, const NamedEllipse& b) {
-                       return a.role != b.role ? a.role < b.role : a.name < b.name;
-                     });
-    const Scene& columns = column_scenes[obstacles] = Scene(registry_order);
+    const Scene& columns = column_scenes[obstacles] = Scene(scene_test::inRegistryOrder(named));
     const SceneCheckResult vouched = checkVouchedScene(columns, kLinks, SceneRules{});
     if (!vouched.ok() || static_cast<long>(vouched.collisions.size()) != collisions) {
       std::fprintf(stderr, "checkVouchedScene finds %zu collisions with %d obstacles, brute force %ld %s\n",

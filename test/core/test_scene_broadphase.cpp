@@ -18,6 +18,7 @@
 #include "ellipse_collision/core/overlap.h"
 #include "ellipse_collision/core/scene_check.h"
 #include "brute_force_scene.h"
+#include "scene_test_helpers.h"
 
 namespace ellipse_collision::core {
 namespace {
@@ -49,17 +50,6 @@ SceneCheckResult checkVouched(const std::vector<NamedEllipse>& scene, const Scen
   return checkVouchedScene(Scene(ordered),
                            static_cast<std::size_t>(first_obstacle - ordered.begin()), rules,
                            only_names);
-}
-
-/// checkVouched() of the scene in the node's placing order: each role in name order, as its
-/// registry (a std::map) walks them, so the movers come already ranked.
-SceneCheckResult checkVouchedInRegistryOrder(std::vector<NamedEllipse> scene,
-                                             const SceneRules& rules,
-                                             const std::set<std::string>& only_names) {
-  std::sort(scene.begin(), scene.end(), [](const NamedEllipse& a, const NamedEllipse& b) {
-    return a.role != b.role ? a.role < b.role : a.name < b.name;
-  });
-  return checkVouched(scene, rules, only_names);
 }
 
 bool sameBits(double x, double y) { return std::memcmp(&x, &y, sizeof(double)) == 0; }
@@ -183,7 +173,7 @@ TEST(SceneBroadphase, MatchesBruteForceOnRandomScenesWithRulesAndWarnings) {
     const SceneCheckResult vouched = checkVouched(scene, rules, only_names);
     expectSame(vouched, expected, "checkVouchedScene, trial " + std::to_string(trial));
     if (HasFatalFailure()) return;
-    expectSame(checkVouchedInRegistryOrder(scene, rules, only_names), expected,
+    expectSame(checkVouched(scene_test::inRegistryOrder(scene), rules, only_names), expected,
                "checkVouchedScene in registry order, trial " + std::to_string(trial));
     if (HasFatalFailure()) return;
     // The obstacles gridded instead of streamed: the same bits and the same pairs tested.

@@ -2,6 +2,7 @@
 
 // Helpers shared by the scene-check tests: building named ellipses and the pair rules restated as
 // a table, written independently of scene_check.cpp so that the tests compare against it.
+#include <algorithm>
 #include <map>
 #include <string>
 #include <utility>
@@ -43,6 +44,15 @@ inline bool rolesChecked(EllipseRole a, EllipseRole b, bool self_collision) {
       {{EllipseRole::Obstacle, EllipseRole::Query}, true},
       {{EllipseRole::Query, EllipseRole::Query}, false}};
   return table.at({a, b});
+}
+
+/// `scene` as the node places it: role by role, each role in name order (its registry is a
+/// std::map, names unique), so that the movers come already ranked.
+inline std::vector<NamedEllipse> inRegistryOrder(std::vector<NamedEllipse> scene) {
+  std::sort(scene.begin(), scene.end(), [](const NamedEllipse& a, const NamedEllipse& b) {
+    return a.role != b.role ? a.role < b.role : a.name < b.name;
+  });
+  return scene;
 }
 
 /// The order in which a pair's members are reported: query, then link, then obstacle.
