@@ -65,6 +65,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
     return 0;
   }
+  // The field rules are the store's gate too: nothing accepted breaks them.
+  for (const auto* specs : {&read.service, &read.topic}) {
+    for (const EllipseSpec& spec : *specs) {
+      if (findInvalidField(spec)) std::abort();
+    }
+  }
   const std::string written = serializeObstacles(read);
   StoredObstacles again;
   if (!parseObstacles(written, again).empty()) std::abort();

@@ -5,9 +5,11 @@
 namespace ellipse_collision::app {
 
 ObstaclePersistence::ObstaclePersistence(const std::string& path, std::string session,
-                                         std::uint64_t service_revision)
-    : session_(std::move(session)), service_revision_(service_revision) {
-  if (!path.empty()) writer_ = std::make_unique<ObstacleStoreWriter>(path);
+                                         std::uint64_t service_revision, std::string refusal)
+    : session_(std::move(session)),
+      service_revision_(service_revision),
+      refusal_(path.empty() ? std::string() : std::move(refusal)) {
+  if (!path.empty() && refusal_.empty()) writer_ = std::make_unique<ObstacleStoreWriter>(path);
 }
 
 StoredObstacles ObstaclePersistence::stamped(StoredObstacles stored) const {
@@ -19,7 +21,7 @@ StoredObstacles ObstaclePersistence::stamped(StoredObstacles stored) const {
 std::string ObstaclePersistence::afterServiceCall(const EllipseRegistry& registry,
                                                   bool removed_topic_obstacle) {
   ++service_revision_;
-  if (!writer_) return {};
+  if (!writer_) return refusal_;
   if (removed_topic_obstacle) {
     behind_ = false;
     return writer_->writeNow(stamped(registry.runtimeObstacles()));
@@ -38,7 +40,7 @@ void ObstaclePersistence::writeIfBehind(const EllipseRegistry& registry) {
 }
 
 std::string ObstaclePersistence::lastError() const {
-  return writer_ ? writer_->lastError() : std::string();
+  return writer_ ? writer_->lastError() : refusal_;
 }
 
 void ObstaclePersistence::flush() {

@@ -18,6 +18,8 @@ namespace ellipse_collision::app {
 namespace {
 
 constexpr const char* kHeader = "ellipse_collision obstacle store 1";
+/// What every version of the store begins with: a file without it is not the store's to write.
+constexpr const char* kHeaderStem = "ellipse_collision obstacle store ";
 
 void appendText(std::string& out, const std::string& s) {
   out += std::to_string(s.size());
@@ -141,6 +143,7 @@ std::string parseObstacles(const std::string& input, StoredObstacles& out) {
   }
   while (true) {
     ++record;
+    const std::size_t record_start = pos;
     if (pos >= input.size()) return "truncated: no 'end' record";
     const std::size_t space = input.find_first_of(" \n", pos);
     if (space == std::string::npos) return "truncated: no 'end' record";
@@ -173,6 +176,14 @@ std::string parseObstacles(const std::string& input, StoredObstacles& out) {
         return at("expected " + kind +
                   " <name> <frame> x y angle radius_x radius_y padding [vx vy angular_velocity]");
       }
+      // The same field rules as every other way into the registry: a hand edit or a disk fault
+      // that leaves NaN or a negative radius refuses the file instead of an obstacle that every
+      // check would skip.
+      if (const auto invalid = findInvalidField(spec)) {
+        const auto line = 1 + std::count(input.begin(), input.begin() + record_start, '\n');
+        return "record " + std::to_string(record) + " (line " + std::to_string(line) + "): " +
+               describeFieldError(kind + " obstacle '" + spec.name + "'", *invalid);
+      }
       (kind == "service" ? parsed.service : parsed.topic).push_back(spec);
     } else {
       return at("unknown entry '" + kind + "'");
@@ -181,6 +192,8 @@ std::string parseObstacles(const std::string& input, StoredObstacles& out) {
   out = std::move(parsed);
   return {};
 }
+
+bool isObstacleStoreText(const std::string& text) { return text.rfind(kHeaderStem, 0) == 0; }
 
 std::string serviceRecordPath(const std::string& store_path) { return store_path + ".service"; }
 
@@ -208,7 +221,18 @@ LoadedStore loadObstacleStore(const std::string& path, const std::string& sessio
     std::string text, error;
     bool missing = false;
     if (!readWholeFile(file, text, missing, error)) {
-      if (!missing) loaded.notes.push_back({true, "'" + file + "' is unreadable: " + error});
+      if (!missing) {
+        loaded.notes.push_back({true, "'" + file + "' is unreadable: " + error});
+        loaded.not_ours.push_back("'" + file + "' exists but cannot be read (" + error +
+                                  "), so it is not known to be an obstacle store");
+      }
+      return false;
+    }
+    if (!isObstacleStoreText(text)) {
+      // A typo or a shared folder: never write over a user's file.
+      loaded.notes.push_back({true, "'" + file + "' is not an obstacle store"});
+      loaded.not_ours.push_back("'" + file + "' is not an obstacle store (its first line is not '" +
+                                kHeaderStem + "...')");
       return false;
     }
     error = parseObstacles(text, out);

@@ -45,7 +45,7 @@ bool same(const EllipseSpec& a, const EllipseSpec& b) {
 TEST(ObstacleStore, RoundTripIsExactEvenForNamesWithSpacesColonsAndNewlines) {
   StoredObstacles stored;
   stored.session = "run 1:2";
-  stored.service = {spec("a b:c", "map", 0.1), spec("line\nbreak\n", "odom", 1e300)};
+  stored.service = {spec("a b:c", "map", 0.1), spec("line\nbreak\n", "odom", -999999999.87654321)};
   stored.topic = {spec("rock", "base_link", -2.5)};
   stored.topic_stamp_s = 1795404665.586293518;
   StoredObstacles back;

@@ -22,7 +22,10 @@ class ObstaclePersistence {
   /// `path` "" = the store is off: only the service calls are counted. `service_revision` is the
   /// count found at start-up in this launch's files (loadObstacleStore()), restored or not, so that
   /// a later record never loses to a stale one of the same launch.
-  ObstaclePersistence(const std::string& path, std::string session, std::uint64_t service_revision);
+  /// `refusal` not empty: a file at the store's paths is not the store's (LoadedStore::not_ours),
+  /// so nothing is ever written and every write reports `refusal` as its error.
+  ObstaclePersistence(const std::string& path, std::string session, std::uint64_t service_revision,
+                      std::string refusal = {});
 
   /// After a service call changed `registry`. `removed_topic_obstacle`: it removed a topic
   /// obstacle (registry.anyTopicObstacle(names), asked before the call). Waits until the file is on
@@ -36,7 +39,8 @@ class ObstaclePersistence {
 
   bool enabled() const { return writer_ != nullptr; }
   bool behind() const { return behind_; }
-  /// The newest finished write's error, "" after a success or with the store off.
+  /// The newest finished write's error, "" after a success or with the store off; the refusal
+  /// when writes are refused.
   std::string lastError() const;
   std::uint64_t serviceRevision() const { return service_revision_; }
   /// Waits until every queued write is on disk (for tests; the destructor does it too).
@@ -47,6 +51,7 @@ class ObstaclePersistence {
 
   std::string session_;
   std::uint64_t service_revision_;
+  std::string refusal_;
   bool behind_{false};
   std::unique_ptr<ObstacleStoreWriter> writer_;  ///< null when the store is off
 };

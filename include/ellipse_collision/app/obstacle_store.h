@@ -35,11 +35,15 @@ std::string serviceRecordPath(const std::string& store_path);
 /// was written). Returns whether it applied.
 bool applyNewerServiceRecord(StoredObstacles& store, const StoredObstacles& record);
 
+/// Whether `text` begins like a store of any version (the file is this package's to write).
+bool isObstacleStoreText(const std::string& text);
+
 /// A line-based text form; names and frames are length-prefixed, numbers round-trip exactly.
 std::string serializeObstacles(const StoredObstacles& obstacles);
 
 /// Parses serializeObstacles() text into `out`; returns "" or why the text is not a store
-/// ("line 3: ..."). `out` is left untouched on failure.
+/// ("record 3: ..."; an obstacle breaking the field rules findInvalidField() as "record 5 (line 5):
+/// service obstacle 'box'.radius_x = nan: expected ..."). `out` is left untouched on failure.
 std::string parseObstacles(const std::string& text, StoredObstacles& out);
 
 /// What loadObstacleStore() found.
@@ -55,6 +59,9 @@ struct LoadedStore {
     std::string text;
   };
   std::vector<Note> notes;
+  /// Files at the store's paths that are not obstacle stores (or cannot be read to tell), each
+  /// with why: the store must not be written over them (ObstaclePersistence refuses).
+  std::vector<std::string> not_ours;
 };
 
 /// Reads the store at `path` and its service record (serviceRecordPath()) for launch `session`.
