@@ -74,18 +74,21 @@ CheckOutcome runCheck(const CheckRequest& request, const EllipseRegistry& regist
     const EllipseSpec& spec = request.query[i];
     const ScenePlacement::Placement placed = placement.place(spec, core::EllipseRole::Query);
     if (placed.status == ScenePlacement::Status::FrameUnavailable) {
+      outcome.error_kind = ErrorKind::FrameUnavailable;
       outcome.error = entryName("query", i) + ".frame_id = '" + spec.frame_id +
                       "': expected a frame with a transform to '" + settings.fixed_frame +
                       "', got none (" + placed.error + ")";
       return outcome;
     }
     if (placed.status == ScenePlacement::Status::Stale) {
+      outcome.error_kind = ErrorKind::FrameUnavailable;
       outcome.error = entryName("query", i) + ".frame_id = '" + spec.frame_id +
                       "': expected a transform to '" + settings.fixed_frame +
                       "' within max_transform_age, got a stale one (" + placed.error + ")";
       return outcome;
     }
     if (placed.status == ScenePlacement::Status::Degenerate) {
+      outcome.error_kind = ErrorKind::InvalidRequest;
       outcome.error = entryName("query", i) + ": " + placed.error;
       return outcome;
     }
@@ -197,6 +200,7 @@ CheckOutcome runCheck(const CheckRequest& request, const EllipseRegistry& regist
   scene.insertFront(queries);
   const auto answer = [&]() -> CheckOutcome& {
     outcome.placed.eraseFront(queries.size());
+    outcome.frames = placement.takeFrames();
     return outcome;
   };
   const std::set<std::string> only_names(request.names.begin(), request.names.end());
@@ -226,6 +230,7 @@ CheckOutcome runCheck(const CheckRequest& request, const EllipseRegistry& regist
                : core::checkVouchedScene(scene, first_obstacle, settings.rules, only_names);
   if (!result.ok()) {
     // Requests are validated before they get here, so this is a bug: say so.
+    outcome.error_kind = ErrorKind::Internal;
     outcome.error = "internal error: " + result.error;
     return std::move(answer());
   }
@@ -243,6 +248,7 @@ CheckOutcome runCheck(const CheckRequest& request, const EllipseRegistry& regist
   }
   const core::NearestResult nearest = core::nearestTo(scene, settings.rules, of);
   if (!nearest.ok()) {
+    outcome.error_kind = ErrorKind::Internal;
     outcome.error = "internal error: " + nearest.error;
   } else if (!nearest.found) {
     outcome.nearest_problem = "min_distance_of = '" + of +

@@ -1,8 +1,8 @@
+#include "ellipse_collision/app/contact_prediction.h"
+
 #include <algorithm>
 #include <cmath>
-#include <map>
-
-#include "ellipse_collision/app/collision_check.h"
+#include <set>
 #include "ellipse_collision/core/frame_projection.h"
 #include "ellipse_collision/core/number_format.h"
 #include "ellipse_collision/core/path_motion.h"
@@ -13,8 +13,9 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 
 /// The motion in the fixed frame of a stored ellipse's frame, by the finite difference of its
-/// projected pose over kVelocityWindowS; a zero motion and a note when it cannot be estimated.
-core::Motion frameMotion(const EllipseSpec& spec, double global_padding,
+/// projected pose over kVelocityWindowS (`now`: as the check placed it at `latest`); a zero
+/// motion and a note when it cannot be estimated.
+core::Motion frameMotion(const EllipseSpec& spec, double global_padding, const core::Ellipse& now,
                          const FrameTransform& latest, const TransformAtLookup& at,
                          std::vector<std::string>& notes) {
   if (latest.stamp_s == 0.0) return {};  // timeless: a static chain or the fixed frame itself
@@ -24,54 +25,44 @@ core::Motion frameMotion(const EllipseSpec& spec, double global_padding,
                     earlier.error + ")");
     return {};
   }
-  const core::Ellipse padded = paddedEllipse(spec, global_padding);
-  const core::ProjectionResult now =
-      core::projectToPlane(padded, latest.fixed_from_frame, spec.name);
-  const core::ProjectionResult then =
-      core::projectToPlane(padded, earlier.fixed_from_frame, spec.name);
-  if (!now.ok() || !then.ok()) return {};
+  const core::ProjectionResult then = core::projectToPlane(
+      paddedEllipse(spec, global_padding), earlier.fixed_from_frame, spec.name);
+  if (!then.ok()) return {};
   core::Motion motion;
-  motion.velocity = (now.ellipse.center - then.ellipse.center) / kVelocityWindowS;
+  motion.velocity = (now.center - then.ellipse.center) / kVelocityWindowS;
   // Projected angles are taken modulo pi (an ellipse is symmetric): the shortest difference.
   motion.angular_velocity =
-      std::remainder(now.ellipse.angle - then.ellipse.angle, kPi) / kVelocityWindowS;
+      std::remainder(now.angle - then.ellipse.angle, kPi) / kVelocityWindowS;
   return motion;
 }
 
 }  // namespace
 
-void predictContacts(CheckOutcome& outcome, const CheckRequest& request,
-                     const EllipseRegistry& registry, const CheckSettings& settings,
-                     const TransformLookup& latest, const TransformAtLookup& at, double horizon_s,
-                     double reference_s) {
+void predictAfterCheck(CheckOutcome& outcome, const CheckRequest& request,
+                       const EllipseRegistry& registry, const CheckSettings& settings,
+                       const TransformAtLookup& at, double horizon_s, double reference_s) {
   if (!(horizon_s > 0.0)) return;
-  std::map<std::string, FrameTransform> frames;
   std::vector<core::Motion> motions;
   motions.reserve(outcome.placed.size());
   std::vector<core::NamedEllipse> now = outcome.placed.entries();  // moved on to reference_s
-  for (const core::NamedEllipse& placed : now) {
+  const FrameTransform missing;  // never the case for a placed ellipse: its frame was looked up
+  for (core::NamedEllipse& placed : now) {
     const EllipseSpec& spec = registry.entries().at(placed.name).spec;
-    auto found = frames.find(spec.frame_id);
-    if (found == frames.end()) found = frames.emplace(spec.frame_id, latest(spec.frame_id)).first;
-    const FrameTransform& frame = found->second;
-    core::Motion motion =
-        frame.ok ? frameMotion(spec, settings.global_padding_m, frame, at, outcome.prediction_notes)
-                 : core::Motion{};
+    const auto found = outcome.frames.find(spec.frame_id);
+    const FrameTransform& frame = found != outcome.frames.end() ? found->second : missing;
+    // The placed ellipse is the projection at this very transform (tf may have received a newer
+    // one since): the finite difference and the lag start from it.
+    core::Motion motion = frame.ok ? frameMotion(spec, settings.global_padding_m, placed.ellipse,
+                                                 frame, at, outcome.prediction_notes)
+                                   : core::Motion{};
     const core::Motion own = ownMotion(spec, frame.fixed_from_frame);
     motion.velocity += own.velocity;
     motion.angular_velocity += own.angular_velocity;
     motions.push_back(motion);
     if (frame.ok && frame.stamp_s > 0.0) {
-      // From the pose of this very transform (tf may have received a newer one since the check
-      // placed the ellipse), on to reference_s.
-      core::NamedEllipse& moved = now[motions.size() - 1];
-      const core::ProjectionResult at_stamp = core::projectToPlane(
-          paddedEllipse(spec, settings.global_padding_m), frame.fixed_from_frame, spec.name);
       const double lag = std::clamp(reference_s - frame.stamp_s, 0.0, kMaxPredictionLagS);
-      if (at_stamp.ok()) {
-        const core::Ellipse on = core::movedBy(at_stamp.ellipse, motion, lag);
-        if (core::invalidReason(on).empty()) moved.ellipse = on;
-      }
+      const core::Ellipse on = core::movedBy(placed.ellipse, motion, lag);
+      if (core::invalidReason(on).empty()) placed.ellipse = on;
     }
   }
   std::set<std::pair<std::string, std::string>> colliding;

@@ -88,6 +88,7 @@ PathCheckOutcome runPathCheck(const PathCheckRequest& request, const EllipseRegi
   PathCheckOutcome outcome;
   const FrameTransform moving = to_path(request.moving_frame);
   if (!moving.ok) {
+    outcome.error_kind = ErrorKind::FrameUnavailable;
     outcome.error = "moving_frame = '" + request.moving_frame + "', path.header.frame_id = '" +
                     request.path_frame +
                     "': expected two frames with a transform between them, got none (" +
@@ -129,6 +130,7 @@ PathCheckOutcome runPathCheck(const PathCheckRequest& request, const EllipseRegi
       const std::string invalid =
           core::invalidSegmentReason(obstacle.ellipse, motion, std::fabs(lead_s));
       if (!invalid.empty()) {
+        outcome.error_kind = ErrorKind::InvalidRequest;
         outcome.error = "obstacle '" + name + "' moved to the first pose's time: " + invalid;
         return outcome;
       }
@@ -139,7 +141,12 @@ PathCheckOutcome runPathCheck(const PathCheckRequest& request, const EllipseRegi
   }
   outcome.unavailable_frames.assign(unavailable.begin(), unavailable.end());
   outcome.result = core::checkPath(scene, poses, timed);
-  if (!outcome.result.ok()) outcome.error = outcome.result.error;
+  if (!outcome.result.ok()) {
+    // The core refuses a path whose obstacles' motion breaks its limits over a segment: the
+    // request's times, not a bug.
+    outcome.error_kind = ErrorKind::InvalidRequest;
+    outcome.error = outcome.result.error;
+  }
   return outcome;
 }
 

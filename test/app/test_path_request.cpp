@@ -1,5 +1,5 @@
 // ~check_path's rules and orchestration without ROS (app/path_request.h), and the time-to-contact
-// step of a check (app::predictContacts()) with transforms from a table. Expected values by hand.
+// step of a check (app::predictAfterCheck()) with transforms from a table. Expected values by hand.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -7,6 +7,7 @@
 #include <map>
 
 #include "ellipse_collision/app/collision_check.h"
+#include "ellipse_collision/app/contact_prediction.h"
 #include "spec_builders.h"
 #include "ellipse_collision/app/path_request.h"
 
@@ -146,7 +147,7 @@ TEST(RunPathCheck, LinksMoveWithTheMovingFrameAndUnavailableFramesAreListed) {
             std::string::npos);
 }
 
-TEST(PredictContacts, ALinkOnAMovingFrameIsPredictedToMeetAStandingObstacle) {
+TEST(PredictAfterCheck, ALinkOnAMovingFrameIsPredictedToMeetAStandingObstacle) {
   // The arm frame moves at 2 m/s along x (its pose 0.1 s ago was 0.2 m behind); its hand
   // (0.1 m) and the post (0.1 m) are 1.2 m apart: 1.0 m of gap at 2 m/s, contact after 0.5 s.
   const EllipseRegistry registry(
@@ -166,7 +167,7 @@ TEST(PredictContacts, ALinkOnAMovingFrameIsPredictedToMeetAStandingObstacle) {
   };
   CheckOutcome outcome = runCheck({}, registry, settings, latest, 10.0);
   ASSERT_EQ(outcome.error, "");
-  predictContacts(outcome, {}, registry, settings, latest, at, 2.0, 10.0);
+  predictAfterCheck(outcome, {}, registry, settings, at, 2.0, 10.0);
   ASSERT_EQ(outcome.predicted.size(), 1u);
   EXPECT_EQ(outcome.predicted[0].name_a, "hand");
   EXPECT_EQ(outcome.predicted[0].name_b, "post");
@@ -174,22 +175,22 @@ TEST(PredictContacts, ALinkOnAMovingFrameIsPredictedToMeetAStandingObstacle) {
   EXPECT_TRUE(outcome.prediction_notes.empty());
   // Beyond the horizon: nothing. Off: nothing.
   CheckOutcome short_horizon = runCheck({}, registry, settings, latest, 10.0);
-  predictContacts(short_horizon, {}, registry, settings, latest, at, 0.4, 10.0);
+  predictAfterCheck(short_horizon, {}, registry, settings, at, 0.4, 10.0);
   EXPECT_TRUE(short_horizon.predicted.empty());
   // Checked 0.1 s after the arm's latest transform: the hand has moved on 0.2 m since, so the
   // contact is 0.1 s sooner from the check's stamp.
   CheckOutcome later = runCheck({}, registry, settings, latest, 10.1);
-  predictContacts(later, {}, registry, settings, latest, at, 2.0, 10.1);
+  predictAfterCheck(later, {}, registry, settings, at, 2.0, 10.1);
   ASSERT_EQ(later.predicted.size(), 1u);
   EXPECT_NEAR(later.predicted[0].time, 0.4, 1e-9);
   // 0.6 s after it: the hand has reached the post since (apart at the check's poses): time 0.
   CheckOutcome touched = runCheck({}, registry, settings, latest, 10.6);
-  predictContacts(touched, {}, registry, settings, latest, at, 2.0, 10.6);
+  predictAfterCheck(touched, {}, registry, settings, at, 2.0, 10.6);
   ASSERT_EQ(touched.predicted.size(), 1u);
   EXPECT_EQ(touched.predicted[0].time, 0.0);
 }
 
-TEST(PredictContacts, AnObstacleOwnVelocityIsTurnedIntoTheFixedFrame) {
+TEST(PredictAfterCheck, AnObstacleOwnVelocityIsTurnedIntoTheFixedFrame) {
   // The obstacle's frame is map turned by +90 deg: its vx = 1 m/s moves it along map's +y,
   // towards the link 1 m above it (gap 0.8 m): 0.8 s. Static frames: no tf motion.
   EllipseSpec mover = circle("mover", "turned", 0.0, 0.0, 0.1);
@@ -206,7 +207,7 @@ TEST(PredictContacts, AnObstacleOwnVelocityIsTurnedIntoTheFixedFrame) {
   };
   const TransformAtLookup at = [&](const std::string& f, double) { return latest(f); };
   CheckOutcome outcome = runCheck({}, registry, settings, latest, 0.0);
-  predictContacts(outcome, {}, registry, settings, latest, at, 5.0, 0.0);
+  predictAfterCheck(outcome, {}, registry, settings, at, 5.0, 0.0);
   ASSERT_EQ(outcome.predicted.size(), 1u);
   EXPECT_NEAR(outcome.predicted[0].time, 0.8, 1e-9);
 }

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <map>
 #include <optional>
 #include <set>
 #include <string>
@@ -7,6 +8,7 @@
 
 #include "ellipse_collision/app/ellipse_registry.h"
 #include "ellipse_collision/app/ellipse_spec.h"
+#include "ellipse_collision/app/error_kind.h"
 #include "ellipse_collision/app/placement_cache.h"
 #include "ellipse_collision/app/transform_lookup.h"
 #include "ellipse_collision/core/contact_prediction.h"
@@ -43,10 +45,13 @@ struct CheckOutcome {
   std::optional<core::NearPair> nearest;  ///< of min_distance_of, when asked and measured
   std::string nearest_problem;            ///< why it was asked but not measured
   std::string error;                      ///< a bad request or a refused scene: nothing checked
+  ErrorKind error_kind{ErrorKind::None};  ///< what kind of failure `error` is
   /// Every stored ellipse was placed from fresh data: none unavailable, stale or skipped. The
   /// one bit a safety consumer needs; false whenever the answer does not cover everything.
   bool complete{false};
-  /// Pairs apart now that touch within the prediction horizon (predictContacts()), soonest first.
+  /// The transform each frame of this check had, looked up once (the prediction reuses them).
+  std::map<std::string, FrameTransform> frames;
+  /// Pairs apart now that touch within the prediction horizon (predictAfterCheck()), soonest first.
   std::vector<core::PredictedContact> predicted;
   /// Why a velocity could not be estimated or a pair not predicted (logged, in /diagnostics).
   std::vector<std::string> prediction_notes;
@@ -73,34 +78,6 @@ std::string validateCheckRequest(const CheckRequest& request, const EllipseRegis
 CheckOutcome runCheck(const CheckRequest& request, const EllipseRegistry& registry,
                       const CheckSettings& settings, const TransformLookup& lookup,
                       double reference_time_s = 0.0, PlacementCache* cache = nullptr);
-
-/// The window of the finite difference that estimates a frame's velocity from tf [s]: the pose at
-/// the frame's latest transform against the pose kVelocityWindowS earlier. Short enough to follow
-/// a robot that brakes, long enough to span several tf messages at the usual 10-100 Hz.
-constexpr double kVelocityWindowS = 0.1;
-
-/// A frame's pose in the fixed frame at a given time [s, same clock as FrameTransform::stamp_s].
-using TransformAtLookup = std::function<FrameTransform(const std::string& frame, double time_s)>;
-
-/// The time-to-contact step of a check, after runCheck() succeeded: the motion in the fixed frame
-/// of every placed stored ellipse (its frame's motion by a finite difference over
-/// kVelocityWindowS ending at the frame's latest stamp, through `at`, plus its own vx, vy,
-/// angular_velocity turned into the fixed frame; timeless frames do not move), each ellipse moved
-/// on by its motion from its frame's stamp to `reference_s` (the check's stamp; at most
-/// kMaxPredictionLagS), then core::predictContacts() over `horizon_s` with the request's name
-/// filter, so that times count from `reference_s`. Pairs in outcome.collisions are not repeated; a
-/// pair apart at the check's poses that touches by `reference_s` is reported at time 0. A frame
-/// whose earlier pose is unknown moves by the ellipse's own velocity only, noted in
-/// prediction_notes. Query ellipses are not predicted. Fills outcome.predicted and
-/// outcome.prediction_notes.
-void predictContacts(CheckOutcome& outcome, const CheckRequest& request,
-                     const EllipseRegistry& registry, const CheckSettings& settings,
-                     const TransformLookup& latest, const TransformAtLookup& at, double horizon_s,
-                     double reference_s);
-
-/// The longest a pose is moved on to the check's stamp [s]: a frame whose latest transform is
-/// older than this (without max_transform_age) is moved by this much only.
-constexpr double kMaxPredictionLagS = 1.0;
 
 /// For ellipses that are to be stored (~add_obstacles, the ~obstacles topic): field rules
 /// (findInvalidPaddedField()) for all, then a transform to the fixed frame for each distinct

@@ -52,6 +52,7 @@ struct PathCheckOutcome {
   std::vector<std::string> unavailable_frames;  ///< sorted; their ellipses were left out
   std::vector<std::string> skipped;             ///< why each left-out ellipse was left out
   std::string error;                            ///< a refused request: nothing checked
+  ErrorKind error_kind{ErrorKind::None};        ///< what kind of failure `error` is
 };
 
 /// Places the links in the moving frame's plane through `to_moving` (each link rigidly by its

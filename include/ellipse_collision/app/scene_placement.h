@@ -31,6 +31,12 @@ class ScenePlacement {
   /// The transform of `frame`, looked up at most once per placement.
   const FrameTransform& lookup(const std::string& frame);
 
+  /// Every transform looked up so far, by frame, handed over (the placement then starts empty).
+  std::map<std::string, FrameTransform> takeFrames() {
+    std::map<std::string, FrameTransform> taken = std::move(frames_);
+    frames_.clear();
+    return taken;
+  }
   /// Whether ellipses may be placed through `frame`: it was found and is not stale.
   bool usable(const FrameTransform& frame) const { return frame.ok && !isStale(frame, freshness_); }
 

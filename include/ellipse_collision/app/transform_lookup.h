@@ -35,4 +35,7 @@ double ageOf(const FrameTransform& transform, const Freshness& freshness);
 /// own identity transform, so ellipses given in the fixed frame need no lookup at all.
 using TransformLookup = std::function<FrameTransform(const std::string& frame)>;
 
+/// A frame's pose in the fixed frame at a given time [s, same clock as FrameTransform::stamp_s].
+using TransformAtLookup = std::function<FrameTransform(const std::string& frame, double time_s)>;
+
 }  // namespace ellipse_collision::app

@@ -1,0 +1,303 @@
+#include "ellipse_collision/app/collision_monitor.h"
+
+#include <chrono>
+#include <iterator>
+#include <set>
+#include <utility>
+
+#include "ellipse_collision/app/contact_prediction.h"
+#include "ellipse_collision/app/obstacle_store.h"
+#include "ellipse_collision/core/number_format.h"
+
+namespace ellipse_collision::app {
+namespace {
+
+/// The field rules with this launch's global padding for every obstacle of a store file: the
+/// same gate a service call or a topic message passes. "" or the first violation.
+std::string findInvalidStored(const StoredObstacles& stored, double global_padding_m) {
+  for (const auto& [kind, specs] : {std::pair{"service", &stored.service},
+                                    std::pair{"topic", &stored.topic}}) {
+    for (const EllipseSpec& spec : *specs) {
+      if (const auto invalid = findInvalidPaddedField(spec, global_padding_m)) {
+        return describeFieldError(std::string(kind) + " obstacle '" + spec.name + "'", *invalid);
+      }
+    }
+  }
+  return {};
+}
+
+}  // namespace
+
+CollisionMonitor::CollisionMonitor(MonitorSettings settings, const std::vector<EllipseSpec>& links,
+                                   const std::vector<EllipseSpec>& obstacles,
+                                   RegistryLimits limits, const StoreOptions& store,
+                                   MonitorHooks hooks)
+    : settings_(std::move(settings)),
+      hooks_(std::move(hooks)),
+      registry_(links, obstacles, limits) {
+  std::string refusal;
+  const std::uint64_t service_revision = restore(store, refusal);
+  persistence_ = std::make_unique<ObstaclePersistence>(store.path, store.session,
+                                                       service_revision, refusal);
+}
+
+CollisionMonitor::~CollisionMonitor() {
+  // The writer writes what is queued before it goes.
+  persistence_->writeIfBehind(registry_);
+}
+
+std::uint64_t CollisionMonitor::restore(const StoreOptions& store, std::string& refusal) {
+  if (store.path.empty()) return 0;
+  const LoadedStore loaded = loadObstacleStore(store.path, store.session);
+  for (const LoadedStore::Note& note : loaded.notes) {
+    startup_notes_.push_back({note.failed ? StartupNote::Level::Error : StartupNote::Level::Info,
+                              "obstacle store " + note.text + ", not restored"});
+  }
+  if (!loaded.not_ours.empty()) {
+    refusal = joinText(loaded.not_ours, "; ") + ": refusing to write the obstacle store over it";
+    startup_notes_.push_back({StartupNote::Level::Error, refusal});
+  }
+  // Counted on from what this launch wrote, restored or not: a later record must never lose to
+  // a stale one of the same launch.
+  const std::uint64_t service_revision = loaded.obstacles.service_revision;
+  if (!loaded.found) return service_revision;
+  const StoredObstacles& stored = loaded.obstacles;
+  std::string error = findInvalidStored(stored, settings_.check.global_padding_m);
+  if (error.empty()) error = registry_.restore(stored);
+  if (!error.empty()) {
+    startup_notes_.push_back(
+        {StartupNote::Level::Error, "obstacle store '" + store.path +
+                                        "' does not fit the configuration, starting without it: " +
+                                        error});
+    return service_revision;
+  }
+  startup_notes_.push_back(
+      {StartupNote::Level::Warn, "restarted: restored " + std::to_string(stored.service.size()) +
+                                     " service obstacle(s) and " +
+                                     std::to_string(stored.topic.size()) +
+                                     " topic obstacle(s) from '" + store.path + "'"});
+  return service_revision;
+}
+
+void CollisionMonitor::advanceClock(double now_s) {
+  if (now_s < last_now_s_) {
+    // A bag played in a loop, a simulator reset: tf would keep answering from the future.
+    if (hooks_.time_jumped_back) hooks_.time_jumped_back(last_now_s_ - now_s);
+    missing_since_.clear();
+    ++time_jumps_;
+  }
+  last_now_s_ = now_s;
+  const std::size_t dropped =
+      registry_.dropExpiredTopicObstacles(now_s, settings_.obstacle_timeout_s);
+  if (dropped == 0) return;
+  dropped_obstacles_ += dropped;
+  topicObstaclesChanged();
+  if (hooks_.obstacles_expired) hooks_.obstacles_expired(dropped, now_s - registry_.topicStamp());
+}
+
+void CollisionMonitor::topicObstaclesChanged() {
+  if (!persistence_->enabled()) return;
+  persistence_->topicChanged();
+  if (settings_.obstacle_store_period_s == 0.0) writeStoreIfBehind();
+}
+
+void CollisionMonitor::writeStoreIfBehind() {
+  reportStoreError(persistence_->lastError());
+  persistence_->writeIfBehind(registry_);
+}
+
+void CollisionMonitor::reportStoreError(const std::string& error) const {
+  if (!error.empty() && hooks_.store_failed) hooks_.store_failed(error);
+}
+
+std::string CollisionMonitor::persistServiceCall(bool removed_topic_obstacle) {
+  const std::string error = persistence_->afterServiceCall(registry_, removed_topic_obstacle);
+  reportStoreError(error);
+  return error;
+}
+
+const CheckOutcome& CollisionMonitor::periodicCheck(double now_s, const TransformLookup& latest,
+                                                    const TransformAtLookup& at) {
+  state_updated_ = false;
+  return fullCheck(now_s, latest, at, StatePublishing::Always, "");
+}
+
+const CheckOutcome& CollisionMonitor::fullCheck(double now_s, const TransformLookup& latest,
+                                                const TransformAtLookup& at,
+                                                StatePublishing publishing,
+                                                const std::string& min_distance_of) {
+  advanceClock(now_s);
+  const auto start = std::chrono::steady_clock::now();
+  CheckRequest request;
+  request.min_distance_of = min_distance_of;
+  CheckOutcome outcome =
+      runCheck(request, registry_, settings_.check, latest, now_s, &placement_cache_);
+  if (!outcome.error.empty()) {
+    // Never publish a failed check as "clear": the state keeps the last good one.
+    state_.failure = outcome.error;
+    failed_check_ = std::move(outcome);
+    return failed_check_;
+  }
+  predict(outcome, request, at, now_s);  // times from the state's stamp
+  state_.failure.clear();
+  state_.duration_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  state_.valid = true;
+  state_.stamp_s = now_s;
+  // The replaced state's placement goes back to the cache: the next check refills it instead of
+  // copying every name again.
+  core::Scene replaced = std::move(state_.outcome.placed);
+  state_.outcome = std::move(outcome);
+  placement_cache_.recycle(std::move(replaced));
+  const CheckOutcome& checked = state_.outcome;
+  // Since when each frame has been missing (unavailable or stale), for the health level.
+  std::set<std::string> missing(checked.unavailable_frames.begin(),
+                                checked.unavailable_frames.end());
+  missing.insert(checked.stale_frames.begin(), checked.stale_frames.end());
+  for (auto it = missing_since_.begin(); it != missing_since_.end();) {
+    it = missing.count(it->first) ? std::next(it) : missing_since_.erase(it);
+  }
+  for (const std::string& frame : missing) missing_since_.emplace(frame, now_s);
+  ++full_checks_;
+  state_updated_ = true;
+  publishing_ = settings_.periodic ? publishing : StatePublishing::Always;
+  return checked;
+}
+
+const CheckOutcome& CollisionMonitor::serviceCheck(const CheckRequest& request, double stamp_s,
+                                                   double now_s, const TransformLookup& lookup,
+                                                   const TransformAtLookup& at) {
+  state_updated_ = false;
+  partial_check_ = CheckOutcome();
+  partial_check_.error = validateCheckRequest(request, registry_, settings_.check.global_padding_m);
+  if (!partial_check_.error.empty()) {
+    partial_check_.error_kind = ErrorKind::InvalidRequest;
+    return partial_check_;
+  }
+  // A full check at the latest time is what the topics show: recorded as the state, published
+  // when it changed (or always without a periodic check: then this is how the topics update).
+  const bool full_check = request.names.empty() && request.query.empty() && stamp_s == 0.0;
+  if (full_check) {
+    return fullCheck(now_s, lookup, at, StatePublishing::OnChange, request.min_distance_of);
+  }
+  advanceClock(now_s);
+  // Freshness is measured against now for latest-transform checks, else the requested stamp.
+  const double reference_s = stamp_s == 0.0 ? now_s : stamp_s;
+  partial_check_ = runCheck(request, registry_, settings_.check, lookup, reference_s);
+  if (partial_check_.error.empty()) {
+    predict(partial_check_, request, at, stamp_s == 0.0 ? now_s : stamp_s);
+  }
+  return partial_check_;
+}
+
+void CollisionMonitor::predict(CheckOutcome& outcome, const CheckRequest& request,
+                               const TransformAtLookup& at, double reference_s) const {
+  predictAfterCheck(outcome, request, registry_, settings_.check, at,
+                    settings_.prediction_horizon_s, reference_s);
+}
+
+PathCheckOutcome CollisionMonitor::checkPath(
+    PathCheckRequest request, double now_s,
+    const std::function<TransformLookup(const std::string&)>& lookup_to) {
+  if (request.path_frame.empty()) request.path_frame = settings_.check.fixed_frame;
+  if (request.moving_frame.empty()) request.moving_frame = settings_.robot_frame;
+  PathCheckOutcome outcome;
+  outcome.error = validatePathRequest(request);
+  if (!outcome.error.empty()) {
+    outcome.error_kind = ErrorKind::InvalidRequest;
+    return outcome;
+  }
+  advanceClock(now_s);
+  return runPathCheck(request, registry_, settings_.check, lookup_to(request.moving_frame),
+                      lookup_to(request.path_frame), now_s);
+}
+
+ChangeAnswer CollisionMonitor::addObstacles(const std::vector<EllipseSpec>& specs,
+                                            const TransformLookup& lookup) {
+  ChangeAnswer answer;
+  answer.message = validateAttached(specs, "obstacles", settings_.check, lookup);
+  if (answer.message.empty()) answer.message = registry_.addObstacles(specs, "obstacles");
+  if (!answer.message.empty()) {
+    answer.error_kind = ErrorKind::InvalidRequest;
+    return answer;
+  }
+  // Durable before success: a node killed right after the answer restores them.
+  const std::string store_error = persistServiceCall(/*removed_topic_obstacle=*/false);
+  if (!store_error.empty()) {
+    answer.error_kind = ErrorKind::NotPersisted;
+    answer.message = "added in memory but not persisted: " + store_error;
+    return answer;
+  }
+  answer.message = "added " + std::to_string(specs.size()) + " obstacle(s)";
+  return answer;
+}
+
+ChangeAnswer CollisionMonitor::removeObstacles(const std::vector<std::string>& names) {
+  ChangeAnswer answer;
+  const bool removes_topic_obstacle = registry_.anyTopicObstacle(names);
+  answer.message = registry_.removeObstacles(names, "names");
+  if (!answer.message.empty()) {
+    answer.error_kind = ErrorKind::InvalidRequest;
+    return answer;
+  }
+  const std::string store_error = persistServiceCall(removes_topic_obstacle);
+  if (!store_error.empty()) {
+    answer.error_kind = ErrorKind::NotPersisted;
+    answer.message = "removed in memory but not persisted: " + store_error;
+    return answer;
+  }
+  answer.message = "removed " + std::to_string(names.size()) + " obstacle(s)";
+  return answer;
+}
+
+std::string CollisionMonitor::replaceTopicObstacles(const std::vector<EllipseSpec>& specs,
+                                                    double stamp_s,
+                                                    const TransformLookup& lookup) {
+  std::string error = validateAttached(specs, "ellipses", settings_.check, lookup);
+  if (error.empty()) {
+    error = registry_.replaceTopicObstacles(specs, "ellipses", stamp_s);
+    if (error.empty()) topicObstaclesChanged();
+  }
+  last_obstacles_error_ = error;
+  return error;
+}
+
+CollisionMonitor::Health CollisionMonitor::health(double now_s) const {
+  Health report;
+  CheckHealthInputs inputs;
+  inputs.outcome = state_.valid ? &state_.outcome : nullptr;
+  inputs.check_failure = state_.failure;
+  for (const auto& [frame, since] : missing_since_) {
+    inputs.missing_for_s.emplace_back(frame, now_s - since);
+  }
+  inputs.obstacles_error = last_obstacles_error_;
+  inputs.store_error = persistence_->lastError();
+  report.health = assessCheckHealth(inputs);
+
+  const CheckOutcome& outcome = state_.outcome;
+  auto& values = report.values;
+  const auto count = [&](EllipseSource source) { return std::to_string(registry_.count(source)); };
+  values.emplace_back("links", count(EllipseSource::ConfiguredLink));
+  values.emplace_back("obstacles (configured)", count(EllipseSource::ConfiguredObstacle));
+  values.emplace_back("obstacles (service)", count(EllipseSource::ServiceObstacle));
+  values.emplace_back("obstacles (topic)", count(EllipseSource::TopicObstacle));
+  values.emplace_back("unavailable frames", joinText(outcome.unavailable_frames, ", "));
+  values.emplace_back("collisions", std::to_string(outcome.collisions.size()));
+  values.emplace_back("warnings", std::to_string(outcome.warnings.size()));
+  values.emplace_back("full checks", std::to_string(full_checks_));
+  values.emplace_back("last check duration [ms]", core::formatNumber(1e3 * state_.duration_s));
+  values.emplace_back("complete", state_.valid && outcome.complete ? "true" : "false");
+  values.emplace_back("stale frames", joinText(outcome.stale_frames, ", "));
+  values.emplace_back("missing for [s]", joinText(report.health.missing_for, ", "));
+  values.emplace_back("dropped obstacles (obstacle_timeout)", std::to_string(dropped_obstacles_));
+  values.emplace_back("time jumps back", std::to_string(time_jumps_));
+  values.emplace_back("prediction horizon [s]", core::formatNumber(settings_.prediction_horizon_s));
+  values.emplace_back("smallest time to contact [s]",
+                      outcome.predicted.empty() ? std::string("none")
+                                                : core::formatNumber(outcome.predicted.front().time));
+  values.emplace_back("predicted contacts", std::to_string(outcome.predicted.size()));
+  values.emplace_back("prediction notes", joinText(outcome.prediction_notes, "; "));
+  return report;
+}
+
+}  // namespace ellipse_collision::app
