@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <limits>
 #include <utility>
 
@@ -26,6 +28,14 @@ constexpr double kReliableGap = 1e-6;
 constexpr double kTouchShrink = 1.0 - 1e-4;
 // A rate of the distance within this fraction of the speeds involved is rounding (a slide).
 constexpr double kRateRounding = 1e-12;
+
+/// A computed time, distance or scale for a reason, to 4 significant digits ("0.42", not
+/// "0.41999999999999"); given settings are quoted exactly with formatNumber().
+std::string readable(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.4g", value);
+  return formatNumber(std::strtod(text, nullptr));
+}
 
 double sinc(double x) { return x == 0.0 ? 1.0 : std::sin(x) / x; }
 
@@ -60,23 +70,25 @@ struct Touch {
 
 Touch touchOf(const Ellipse& a, const Ellipse& b, const Clearance& now) {
   const double size = boundingRadius(a) + boundingRadius(b);
-  Clearance c = now;
-  if (!c.separated || c.distance <= kReliableGap * size) {
-    // Perram-Wertheim: scaled about their centres by contactScale() the two touch; just below it
-    // they are apart, and their witness points give the contact point and normal.
-    const double scale = contactScale(a, b) * kTouchShrink;
-    if (!(scale * inscribedRadius(a) >= kMinRadius && scale * inscribedRadius(b) >= kMinRadius)) {
-      return {};  // concentric, or nearly: no direction
-    }
-    Ellipse sa = a, sb = b;
-    sa.radius_x *= scale, sa.radius_y *= scale, sb.radius_x *= scale, sb.radius_y *= scale;
-    c = distance(sa, sb);
-    if (!c.separated) return {};
+  if (now.separated && now.distance > kReliableGap * size) {
+    const Eigen::Vector2d gap = now.point_b - now.point_a;
+    return {true, now.point_a, now.point_b, gap / gap.norm()};
   }
+  // Perram-Wertheim: scaled about their centres by contactScale() the two touch; just below it
+  // they are apart, and their witness points give the normal, and scaled back by kTouchShrink
+  // about each centre, the contact point on each rim.
+  const double scale = contactScale(a, b) * kTouchShrink;
+  if (!(scale * inscribedRadius(a) >= kMinRadius && scale * inscribedRadius(b) >= kMinRadius)) {
+    return {};  // concentric, or nearly: no direction
+  }
+  Ellipse sa = a, sb = b;
+  sa.radius_x *= scale, sa.radius_y *= scale, sb.radius_x *= scale, sb.radius_y *= scale;
+  const Clearance c = distance(sa, sb);
   const Eigen::Vector2d gap = c.point_b - c.point_a;
   const double length = gap.norm();
-  if (!(length > 0.0)) return {};
-  return {true, c.point_a, c.point_b, gap / length};
+  if (!c.separated || !(length > 0.0)) return {};
+  return {true, a.center + (c.point_a - a.center) / kTouchShrink,
+          b.center + (c.point_b - b.center) / kTouchShrink, gap / length};
 }
 
 Eigen::Vector2d contactPoint(const Ellipse& a, const Ellipse& b) {
@@ -341,8 +353,8 @@ bool Gate::pushesIn(const std::vector<ClosePair>& close) {
     result_.reason = "pushes into '" + result_.limiting.obstacle + "': link '" +
                      result_.limiting.link + "' " +
                      (c.overlapping ? std::string("overlaps it")
-                                    : "is " + formatNumber(result_.clearance) + " m from it") +
-                     (touch.found ? " and the command closes in at " + formatNumber(closing) +
+                                    : "is " + readable(now.distance) + " m from it") +
+                     (touch.found ? " and the command closes in at " + readable(closing) +
                                         " m/s"
                                   : " with no direction to judge the command by");
     return true;
@@ -383,13 +395,15 @@ void Gate::contactRule(bool escaping) {
       k = gridValue(n, top);
       limiting = still;
     }
-    if (moving_count > 0 && k == 1.0) {
-      // k = 1 was judged over the horizon already; the search starts below it if it failed.
-      n = moving.found && moving.time < before ? top : 0;
-      if (n > 0) limiting = moving, limiting_scale = 1.0;
-      k = n > 0 ? gridValue(n, top) : 1.0;
+    if (moving_count > 0 && k == 1.0 && moving.found && moving.time < before) {
+      // k = 1 was judged over the horizon already: the search starts below it. A standing
+      // command is the same at every scale: nothing to search.
+      limiting = moving;
+      const bool still_command = twist_.vx == 0.0 && twist_.vy == 0.0 && twist_.wz == 0.0;
+      n = still_command ? 0 : top;
+      k = gridValue(n, top);
     }
-    if (moving_count > 0 && k < 1.0 && n > 0) {
+    if (moving_count > 0 && k > 0.0 && k < 1.0) {
       // Searched down the grid: under k twist a moving obstacle may arrive sooner or later.
       const Candidate* failed = nullptr;
       for (; n > 0; --n) {
@@ -440,11 +454,11 @@ void Gate::contactRule(bool escaping) {
   std::string text;
   if (escaping) {
     text = "moves every close pair apart (nearest: link '" + result_.clearance_link + "' " +
-           formatNumber(result_.clearance) + " m from '" + result_.clearance_obstacle + "'); ";
+           readable(result_.clearance) + " m from '" + result_.clearance_obstacle + "'); ";
   }
   const std::string first =
       full.found ? "contact of " + pairText(describe(full, 1.0)) + " in " +
-                       formatNumber(full.time) + " s under the full command"
+                       readable(full.time) + " s under the full command"
                  : "no contact within horizon " + formatNumber(horizon) + " s under the full command";
   if (k == 1.0) {
     result_.action = escaping ? GateAction::Escape : GateAction::Pass;
@@ -453,11 +467,11 @@ void Gate::contactRule(bool escaping) {
                                 : std::string());
   } else if (k > 0.0) {
     result_.action = escaping ? GateAction::Escape : GateAction::Slow;
-    text += first + "; slowed to " + formatNumber(k) + " so that ";
+    text += first + "; slowed to " + readable(k) + " so that ";
     text += limiting_scale < 1.0
                 ? "no moving obstacle comes sooner than time_before_collision " +
-                      formatNumber(before) + " s (at " + formatNumber(lim.scale) + ", " +
-                      pairText(lim) + " in " + formatNumber(lim.time) + " s)"
+                      formatNumber(before) + " s (at " + readable(lim.scale) + ", " +
+                      pairText(lim) + " in " + readable(lim.time) + " s)"
                 : "it comes no sooner than time_before_collision " + formatNumber(before) + " s";
   } else {
     result_.action = GateAction::Stop;
@@ -469,7 +483,7 @@ void Gate::contactRule(bool escaping) {
   }
   if (k == 0.0 && result_.contact.found) {
     text += "; standing still, '" + result_.contact.obstacle + "' reaches link '" +
-            result_.contact.link + "' in " + formatNumber(result_.contact.time) +
+            result_.contact.link + "' in " + readable(result_.contact.time) +
             " s (stopping cannot avoid it)";
   }
   result_.reason = std::move(text);
