@@ -28,7 +28,8 @@ set(ELLIPSE_COLLISION_CORE_SOURCES
   src/core/scene.cpp
   src/core/scene_check.cpp
   src/core/shape_outline.cpp
-  src/core/unique_names.cpp)
+  src/core/unique_names.cpp
+  src/core/velocity_gate.cpp)
 
 set(ELLIPSE_COLLISION_APP_SOURCES
   src/app/check_health.cpp

@@ -56,6 +56,12 @@ ellipse_collision_add_gtest(test_path_check LIBRARIES ellipse_collision_core qua
   test/core/test_contact_prediction.cpp
   test/support/first_contact_oracle.cpp)
 
+# The velocity gate: poses and first contacts under a twist against quad-precision arcs, the
+# translation oracle and dense overlap() scans; the gate's decisions against the same scans.
+ellipse_collision_add_gtest(test_velocity_gate LIBRARIES ellipse_collision_core quadmath SOURCES
+  test/core/test_velocity_gate.cpp
+  test/support/first_contact_oracle.cpp)
+
 # Minimum-area enclosing ellipses (link fitting, sensor clusters) against their own oracle.
 ellipse_collision_add_gtest(test_enclosing_ellipse LIBRARIES ellipse_collision_core quadmath SOURCES
   test/core/test_enclosing_ellipse.cpp

@@ -173,30 +173,6 @@ auto orderKey(const Ellipse& e, const Motion& m) {
                          m.velocity.x(), m.velocity.y(), m.angular_velocity);
 }
 
-std::string motionReason(const Motion& m, double horizon) {
-  const char* const names[2] = {"velocity.x", "velocity.y"};
-  for (int i = 0; i < 2; ++i) {
-    const double v = m.velocity[i];
-    if (!std::isfinite(v)) return std::string(names[i]) + " = " + formatNumber(v) + " must be finite";
-    if (std::fabs(v) > kMaxSpeed) {
-      return std::string(names[i]) + " = " + formatNumber(v) + " is outside [" +
-             formatNumber(-kMaxSpeed) + ", " + formatNumber(kMaxSpeed) + "] m/s";
-    }
-  }
-  const double w = m.angular_velocity;
-  if (!std::isfinite(w)) return "angular_velocity = " + formatNumber(w) + " must be finite";
-  if (std::fabs(w) > kMaxAngularVelocity) {
-    return "angular_velocity = " + formatNumber(w) + " is outside [" +
-           formatNumber(-kMaxAngularVelocity) + ", " + formatNumber(kMaxAngularVelocity) +
-           "] rad/s";
-  }
-  if (std::fabs(w) * horizon > kMaxTurn) {
-    return "angular_velocity = " + formatNumber(w) + " turns more than " + formatNumber(kMaxTurn) +
-           " rad within horizon = " + formatNumber(horizon) + " s";
-  }
-  return {};
-}
-
 std::string pathReason(const Ellipse& e, const Motion& m, double horizon) {
   const char* const names[2] = {"center.x", "center.y"};
   for (int i = 0; i < 2; ++i) {
@@ -211,17 +187,50 @@ std::string pathReason(const Ellipse& e, const Motion& m, double horizon) {
 
 }  // namespace
 
+std::string invalidVelocityReason(const Motion& m, double horizon, const VelocityFieldNames& names) {
+  const char* const components[2] = {names.x, names.y};
+  for (int i = 0; i < 2; ++i) {
+    const double v = m.velocity[i];
+    if (!std::isfinite(v)) {
+      return std::string(components[i]) + " = " + formatNumber(v) + " must be finite";
+    }
+    if (std::fabs(v) > kMaxSpeed) {
+      return std::string(components[i]) + " = " + formatNumber(v) + " is outside [" +
+             formatNumber(-kMaxSpeed) + ", " + formatNumber(kMaxSpeed) + "] m/s";
+    }
+  }
+  const double w = m.angular_velocity;
+  const std::string angular = names.angular;
+  if (!std::isfinite(w)) return angular + " = " + formatNumber(w) + " must be finite";
+  if (std::fabs(w) > kMaxAngularVelocity) {
+    return angular + " = " + formatNumber(w) + " is outside [" +
+           formatNumber(-kMaxAngularVelocity) + ", " + formatNumber(kMaxAngularVelocity) +
+           "] rad/s";
+  }
+  if (std::fabs(w) * horizon > kMaxTurn) {
+    return angular + " = " + formatNumber(w) + " turns more than " + formatNumber(kMaxTurn) +
+           " rad within horizon = " + formatNumber(horizon) + " s";
+  }
+  return {};
+}
+
 std::string invalidMotionReason(const Ellipse& a, const Motion& motion_a, const Ellipse& b,
                                 const Motion& motion_b, double horizon) {
   if (std::string r = invalidReason(a); !r.empty()) return "ellipse 1: " + r;
   if (std::string r = invalidReason(b); !r.empty()) return "ellipse 2: " + r;
   if (!std::isfinite(horizon)) return "horizon = " + formatNumber(horizon) + " must be finite";
   if (horizon < 0.0) return "horizon = " + formatNumber(horizon) + " must be >= 0";
-  if (std::string r = motionReason(motion_a, horizon); !r.empty()) return "motion 1: " + r;
-  if (std::string r = motionReason(motion_b, horizon); !r.empty()) return "motion 2: " + r;
+  if (std::string r = invalidVelocityReason(motion_a, horizon); !r.empty()) return "motion 1: " + r;
+  if (std::string r = invalidVelocityReason(motion_b, horizon); !r.empty()) return "motion 2: " + r;
   if (std::string r = pathReason(a, motion_a, horizon); !r.empty()) return "motion 1: " + r;
   if (std::string r = pathReason(b, motion_b, horizon); !r.empty()) return "motion 2: " + r;
   return {};
+}
+
+std::string invalidMotionReason(const Ellipse& e, const Motion& motion, double horizon) {
+  if (std::string r = invalidReason(e); !r.empty()) return r;
+  if (std::string r = invalidVelocityReason(motion, horizon); !r.empty()) return r;
+  return pathReason(e, motion, horizon);
 }
 
 FirstContact firstContact(const Ellipse& a, const Motion& motion_a, const Ellipse& b,

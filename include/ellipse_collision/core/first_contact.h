@@ -38,6 +38,26 @@ constexpr double kMaxTurn = 100.0;
 std::string invalidMotionReason(const Ellipse& a, const Motion& motion_a, const Ellipse& b,
                                 const Motion& motion_b, double horizon);
 
+/// How a message names the three fields of a velocity.
+struct VelocityFieldNames {
+  const char* x{"velocity.x"};
+  const char* y{"velocity.y"};
+  const char* angular{"angular_velocity"};
+};
+
+/// Why a rigid velocity breaks the limits above over `horizon` (finite, >= 0), naming the field as
+/// `names` gives it ("velocity.x = nan must be finite"), or "": a component not finite or beyond
+/// kMaxSpeed, an angular velocity not finite or beyond kMaxAngularVelocity, or more than kMaxTurn
+/// turned within the horizon. The one rule for obstacle motions and robot commands
+/// (velocity_gate.h).
+std::string invalidVelocityReason(const Motion& motion, double horizon,
+                                  const VelocityFieldNames& names = {});
+
+/// The part of invalidMotionReason() that concerns one ellipse and its motion over `horizon`
+/// (finite, >= 0), with no "ellipse 1: " / "motion 1: " prefix: the ellipse's fields, its velocity
+/// (invalidVelocityReason()) and its centre staying within kMaxCoordinate over the horizon.
+std::string invalidMotionReason(const Ellipse& ellipse, const Motion& motion, double horizon);
+
 /// The first time t in [0, horizon] [s] at which `a` and `b`, each moving rigidly by its motion,
 /// overlap (per overlap(): a shared boundary point or containment counts). Overlap at t = 0 gives
 /// {true, 0}.

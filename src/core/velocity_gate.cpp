@@ -1,0 +1,630 @@
+#include "ellipse_collision/core/velocity_gate.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+#include <utility>
+
+#include "ellipse_collision/core/distance.h"
+#include "ellipse_collision/core/eigenvalue_test.h"
+#include "ellipse_collision/core/number_format.h"
+#include "ellipse_collision/core/overlap.h"
+#include "ellipse_collision/core/unique_names.h"
+#include "conservative_advancement.h"
+
+namespace ellipse_collision::core {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+// Relative widening of the broadphase's bounds: far above their rounding, far below any size.
+constexpr double kReachWidening = 1e-9;
+// Witness points closer than this (relative to the radii) give no reliable direction: the pair is
+// then treated as touching (contact-scale rule).
+constexpr double kReliableGap = 1e-6;
+// Touching or overlapping pairs are shrunk to this fraction of their contact scale: a gap of
+// ~1e-4 of their size, where distance()'s witness direction is accurate to ~1e-10.
+constexpr double kTouchShrink = 1.0 - 1e-4;
+// A rate of the distance within this fraction of the speeds involved is rounding (a slide).
+constexpr double kRateRounding = 1e-12;
+
+/// A computed time, distance or scale for a reason, to 4 significant digits ("0.42", not
+/// "0.41999999999999"); given settings are quoted exactly with formatNumber().
+std::string readable(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.4g", value);
+  return formatNumber(std::strtod(text, nullptr));
+}
+
+double sinc(double x) { return x == 0.0 ? 1.0 : std::sin(x) / x; }
+
+Eigen::Vector2d linear(const Twist& twist) { return {twist.vx, twist.vy}; }
+
+/// Velocity of the robot-fixed point `p` (in the robot frame at t = 0) at t = 0: v + wz z x p.
+Eigen::Vector2d pointVelocity(const Twist& twist, const Eigen::Vector2d& p) {
+  return {twist.vx - twist.wz * p.y(), twist.vy + twist.wz * p.x()};
+}
+
+/// Largest |v_o - R(s) v_c| over the rotation angles s between 0 and `turn`:
+/// |v_o - R(s) v_c|^2 = |v_o|^2 + |v_c|^2 - 2 |v_o| |v_c| cos(alpha + s), largest where alpha + s
+/// is nearest an odd multiple of pi.
+double largestRelativeSpeed(const Eigen::Vector2d& v_o, const Eigen::Vector2d& v_c, double turn) {
+  const double a = v_o.norm(), c = v_c.norm();
+  if (a == 0.0 || c == 0.0) return a + c;
+  const double alpha = std::atan2(v_o.x() * v_c.y() - v_o.y() * v_c.x(), v_o.dot(v_c));
+  const double lo = alpha + std::min(0.0, turn) - 1e-9, hi = alpha + std::max(0.0, turn) + 1e-9;
+  if (std::ceil((lo - kPi) / (2.0 * kPi)) <= (hi - kPi) / (2.0 * kPi)) return a + c;
+  const double c_end = std::cos(turn), s_end = std::sin(turn);
+  const Eigen::Vector2d v_end(c_end * v_c.x() - s_end * v_c.y(), s_end * v_c.x() + c_end * v_c.y());
+  return std::max((v_o - v_c).norm(), (v_o - v_end).norm()) * (1.0 + 1e-12);
+}
+
+/// Where `a` and `b` (apart, touching or overlapping) meet, and the unit normal from a to b.
+struct Touch {
+  bool found{false};
+  Eigen::Vector2d point_a{0.0, 0.0};
+  Eigen::Vector2d point_b{0.0, 0.0};
+  Eigen::Vector2d normal{0.0, 0.0};
+};
+
+Touch touchOf(const Ellipse& a, const Ellipse& b, const Clearance& now) {
+  const double size = boundingRadius(a) + boundingRadius(b);
+  if (now.separated && now.distance > kReliableGap * size) {
+    const Eigen::Vector2d gap = now.point_b - now.point_a;
+    return {true, now.point_a, now.point_b, gap / gap.norm()};
+  }
+  // Perram-Wertheim: scaled about their centres by contactScale() the two touch; just below it
+  // they are apart, and their witness points give the normal, and scaled back by kTouchShrink
+  // about each centre, the contact point on each rim.
+  const double scale = contactScale(a, b) * kTouchShrink;
+  if (!(scale * inscribedRadius(a) >= kMinRadius && scale * inscribedRadius(b) >= kMinRadius)) {
+    return {};  // concentric, or nearly: no direction
+  }
+  Ellipse sa = a, sb = b;
+  sa.radius_x *= scale, sa.radius_y *= scale, sb.radius_x *= scale, sb.radius_y *= scale;
+  const Clearance c = distance(sa, sb);
+  const Eigen::Vector2d gap = c.point_b - c.point_a;
+  const double length = gap.norm();
+  if (!c.separated || !(length > 0.0)) return {};
+  return {true, a.center + (c.point_a - a.center) / kTouchShrink,
+          b.center + (c.point_b - b.center) / kTouchShrink, gap / length};
+}
+
+Eigen::Vector2d contactPoint(const Ellipse& a, const Ellipse& b) {
+  const Touch touch = touchOf(a, b, distance(a, b));
+  if (touch.found) return 0.5 * (touch.point_a + touch.point_b);
+  return 0.5 * (a.center + b.center);
+}
+
+bool standing(const Ellipse& e, const Motion& m) {
+  return m.velocity.x() == 0.0 && m.velocity.y() == 0.0 &&
+         (m.angular_velocity == 0.0 || e.radius_x == e.radius_y);
+}
+
+/// Squared distance from `p` to the segment from `a` to `a + d`. NaN in, NaN out.
+double segmentDistanceSquared(const Eigen::Vector2d& p, const Eigen::Vector2d& a,
+                              const Eigen::Vector2d& d) {
+  const Eigen::Vector2d w = p - a;
+  const double dd = d.squaredNorm();
+  double s = dd > 0.0 ? w.dot(d) / dd : 0.0;
+  s = s < 0.0 ? 0.0 : (s > 1.0 ? 1.0 : s);  // NaN stays NaN
+  return (w - s * d).squaredNorm();
+}
+
+/// `bound` widened against rounding of coordinates up to `coordinate` [m].
+double widened(double bound, double coordinate) {
+  return bound * (1.0 + kReachWidening) + 1e-12 * coordinate;
+}
+
+std::string settingsReason(const GateSettings& s) {
+  const std::pair<const char*, double> fields[] = {{"horizon", s.horizon},
+                                                   {"time_before_collision", s.time_before_collision},
+                                                   {"stop_time", s.stop_time},
+                                                   {"margin", s.margin},
+                                                   {"resolution", s.resolution}};
+  for (const auto& [name, value] : fields) {
+    if (!std::isfinite(value)) return std::string(name) + " = " + formatNumber(value) + " must be finite";
+  }
+  const auto order = [](const char* a, double va, const char* b, double vb) {
+    return std::string(a) + " = " + formatNumber(va) + " must be <= " + b + " = " + formatNumber(vb);
+  };
+  if (!(s.horizon > 0.0)) return "horizon = " + formatNumber(s.horizon) + " must be > 0";
+  if (s.stop_time < 0.0) return "stop_time = " + formatNumber(s.stop_time) + " must be >= 0";
+  if (s.stop_time > s.time_before_collision) {
+    return order("stop_time", s.stop_time, "time_before_collision", s.time_before_collision);
+  }
+  if (s.time_before_collision > s.horizon) {
+    return order("time_before_collision", s.time_before_collision, "horizon", s.horizon);
+  }
+  if (!(s.margin >= 0.0 && s.margin <= kMaxCoordinate)) {
+    return "margin = " + formatNumber(s.margin) + " is outside [0, " + formatNumber(kMaxCoordinate) +
+           "] m";
+  }
+  if (!(s.resolution > 0.0 && s.resolution <= 1.0)) {
+    return "resolution = " + formatNumber(s.resolution) + " is outside (0, 1]";
+  }
+  return {};
+}
+
+std::string linkReachReason(const Ellipse& link, const Twist& twist, double horizon) {
+  const double reach = link.center.norm() + boundingRadius(link) + linear(twist).norm() * horizon;
+  if (!(reach <= kMaxCoordinate)) {
+    return "reaches " + formatNumber(reach) + " m from the origin within horizon = " +
+           formatNumber(horizon) + " s, beyond " + formatNumber(kMaxCoordinate) + " m";
+  }
+  return {};
+}
+
+/// Everything gateCommand() checks on every call (no work per obstacle).
+std::string cheapGateReason(const PathScene& scene, const Twist& twist, const GateSettings& s) {
+  if (std::string r = settingsReason(s); !r.empty()) return "settings: " + r;
+  if (std::string r = invalidTwistReason(twist, s.horizon); !r.empty()) return r;
+  if (scene.obstacle_motions.size() != scene.obstacles.size()) {
+    return "obstacle_motions has " + std::to_string(scene.obstacle_motions.size()) +
+           " entries for " + std::to_string(scene.obstacles.size()) + " obstacles";
+  }
+  for (const NamedEllipse& link : scene.links) {
+    if (std::string r = invalidReason(link.ellipse); !r.empty()) {
+      return "link '" + link.name + "': " + r;
+    }
+    if (std::string r = linkReachReason(link.ellipse, twist, s.horizon); !r.empty()) {
+      return "link '" + link.name + "': " + r;
+    }
+  }
+  return {};
+}
+
+std::string obstacleReason(const NamedEllipse& obstacle, const Motion& motion, double horizon) {
+  if (std::string r = invalidMotionReason(obstacle.ellipse, motion, horizon); !r.empty()) {
+    return "obstacle '" + obstacle.name + "': " + r;
+  }
+  return {};
+}
+
+// ---- the gate ---------------------------------------------------------------------------------
+
+struct Candidate {
+  std::size_t link{0};
+  std::size_t obstacle{0};
+  bool standing{true};
+  bool overlapping{false};  // now: excluded from the contact rule (escape rule instead)
+};
+
+struct ClosePair {
+  Candidate pair;
+  Clearance now;
+};
+
+struct PairTime {
+  bool found{false};
+  double time{0.0};
+  std::size_t link{0};
+  std::size_t obstacle{0};
+};
+
+class Gate {
+ public:
+  Gate(const PathScene& scene, const Twist& twist, const GateSettings& settings, GateResult& result)
+      : scene_(scene), twist_(twist), settings_(settings), result_(result) {}
+
+  void run();
+
+ private:
+  bool findCandidates();
+  void measureClearance(std::vector<ClosePair>& close);
+  bool pushesIn(const std::vector<ClosePair>& close);
+  void contactRule(bool escaping);
+
+  FirstContact contactOf(const Candidate& c, const Twist& twist, double horizon) {
+    ++result_.pair_tests;
+    return twistContact(scene_.links[c.link].ellipse, twist, scene_.obstacles[c.obstacle].ellipse,
+                        scene_.obstacle_motions[c.obstacle], horizon);
+  }
+  /// Keeps the earlier of `best` and (c, contact); ties to the smaller link, then obstacle name.
+  void keepEarlier(PairTime& best, const Candidate& c, const FirstContact& contact) const {
+    if (!contact.contact) return;
+    if (best.found) {
+      if (contact.time > best.time) return;
+      if (contact.time == best.time) {
+        const std::string& link = scene_.links[c.link].name;
+        const std::string& best_link = scene_.links[best.link].name;
+        if (link > best_link) return;
+        if (link == best_link && scene_.obstacles[c.obstacle].name >=
+                                     scene_.obstacles[best.obstacle].name) {
+          return;
+        }
+      }
+    }
+    best = {true, contact.time, c.link, c.obstacle};
+  }
+  GateContact describe(const PairTime& p, double k) const;
+  std::string pairText(const GateContact& c) const {
+    return "link '" + c.link + "' with '" + c.obstacle + "'";
+  }
+
+  const PathScene& scene_;
+  const Twist& twist_;
+  const GateSettings& settings_;
+  GateResult& result_;
+  std::vector<Candidate> candidates_;
+};
+
+GateContact Gate::describe(const PairTime& p, double k) const {
+  GateContact c;
+  if (!p.found) return c;
+  c.found = true;
+  c.link = scene_.links[p.link].name;
+  c.obstacle = scene_.obstacles[p.obstacle].name;
+  c.time = p.time;
+  c.scale = k;
+  c.point = contactPoint(
+      linkAfter(scene_.links[p.link].ellipse, scaled(twist_, k), p.time),
+      movedBy(scene_.obstacles[p.obstacle].ellipse, scene_.obstacle_motions[p.obstacle], p.time));
+  return c;
+}
+
+bool Gate::findCandidates() {
+  const double horizon = settings_.horizon;
+  // Link l stays within |v_c| H + R_l of its centre at t = 0 under k twist for every k in [0, 1]:
+  // its centre moves at the constant speed k |v_c| (the frame turns with it).
+  double robot_reach = 0.0;
+  std::vector<double> reach(scene_.links.size());
+  for (std::size_t l = 0; l < scene_.links.size(); ++l) {
+    const Ellipse& e = scene_.links[l].ellipse;
+    reach[l] = pointVelocity(twist_, e.center).norm() * horizon + boundingRadius(e);
+    robot_reach = std::max(robot_reach, e.center.norm() + reach[l]);
+  }
+  candidates_.clear();
+  for (std::size_t o = 0; o < scene_.obstacles.size(); ++o) {
+    const Ellipse& e = scene_.obstacles[o].ellipse;
+    const Motion& m = scene_.obstacle_motions[o];
+    const Eigen::Vector2d sweep = m.velocity * horizon;
+    const double grown = boundingRadius(e) + settings_.margin;
+    const double coordinate = e.center.cwiseAbs().maxCoeff() + sweep.cwiseAbs().maxCoeff();
+    const double bound = widened(robot_reach + grown, coordinate);
+    // Not `<=`: a NaN obstacle is never skipped, and is refused below.
+    if (segmentDistanceSquared(Eigen::Vector2d::Zero(), e.center, sweep) > bound * bound) continue;
+    if (std::string r = obstacleReason(scene_.obstacles[o], m, horizon); !r.empty()) {
+      result_.error = r;
+      return false;
+    }
+    const bool still = standing(e, m);
+    for (std::size_t l = 0; l < scene_.links.size(); ++l) {
+      const double pair_bound = widened(reach[l] + grown, coordinate);
+      if (segmentDistanceSquared(scene_.links[l].ellipse.center, e.center, sweep) >
+          pair_bound * pair_bound) {
+        continue;
+      }
+      if (scene_.allowed.contains(scene_.links[l].name, scene_.obstacles[o].name)) continue;
+      candidates_.push_back({l, o, still, false});
+    }
+  }
+  return true;
+}
+
+void Gate::measureClearance(std::vector<ClosePair>& close) {
+  double best = std::numeric_limits<double>::infinity();
+  for (Candidate& c : candidates_) {
+    const Ellipse& link = scene_.links[c.link].ellipse;
+    const Ellipse& obstacle = scene_.obstacles[c.obstacle].ellipse;
+    // The bounding circles' gap is a lower bound of the distance: a pair neither close nor nearer
+    // than the best so far needs no distance() call (with a margin for rounding).
+    const double gap = (obstacle.center - link.center).norm() - boundingRadius(link) -
+                       boundingRadius(obstacle);
+    const double slack = 1e-9 * (boundingRadius(link) + boundingRadius(obstacle));
+    if (gap - slack >= settings_.margin && gap - slack > best) continue;
+    ++result_.pair_tests;
+    const Clearance now = distance(link, obstacle);
+    c.overlapping = !now.separated;
+    if (now.distance < best || !result_.has_clearance) {
+      best = now.distance;
+      result_.has_clearance = true;
+      result_.clearance = now.distance;
+      result_.clearance_link = scene_.links[c.link].name;
+      result_.clearance_obstacle = scene_.obstacles[c.obstacle].name;
+    }
+    if (c.overlapping || now.distance < settings_.margin) close.push_back({c, now});
+  }
+}
+
+bool Gate::pushesIn(const std::vector<ClosePair>& close) {
+  for (const auto& [c, now] : close) {
+    const Ellipse& link = scene_.links[c.link].ellipse;
+    const Ellipse& obstacle = scene_.obstacles[c.obstacle].ellipse;
+    const Touch touch = touchOf(link, obstacle, now);
+    const Eigen::Vector2d velocity = pointVelocity(twist_, touch.point_a);
+    // The distance's rate at t = 0 from the robot's motion alone is -n . velocity (the envelope
+    // theorem on the support-function dual, distance.h); a slide along the rim is rate 0.
+    const double closing = touch.normal.dot(velocity);
+    const double rounding =
+        kRateRounding * (linear(twist_).norm() + std::fabs(twist_.wz) * touch.point_a.norm());
+    const bool still = twist_.vx == 0.0 && twist_.vy == 0.0 && twist_.wz == 0.0;
+    if ((touch.found && closing <= rounding) || still) continue;
+    result_.limiting.found = true;
+    result_.limiting.link = scene_.links[c.link].name;
+    result_.limiting.obstacle = scene_.obstacles[c.obstacle].name;
+    result_.limiting.time = 0.0;
+    result_.limiting.scale = 1.0;
+    result_.limiting.point =
+        touch.found ? Eigen::Vector2d(0.5 * (touch.point_a + touch.point_b)) : link.center;
+    result_.action = GateAction::Stop;
+    result_.scale = 0.0;
+    result_.reason = "pushes into '" + result_.limiting.obstacle + "': link '" +
+                     result_.limiting.link + "' " +
+                     (c.overlapping ? std::string("overlaps it")
+                                    : "is " + readable(now.distance) + " m from it") +
+                     (touch.found ? " and the command closes in at " + readable(closing) +
+                                        " m/s"
+                                  : " with no direction to judge the command by");
+    return true;
+  }
+  return false;
+}
+
+void Gate::contactRule(bool escaping) {
+  const double horizon = settings_.horizon;
+  const double before = settings_.time_before_collision;
+  const double res = settings_.resolution;
+  // Every pair at k = 1 over the horizon; standing and moving apart.
+  PairTime full, still, moving;
+  std::size_t moving_count = 0;
+  for (const Candidate& c : candidates_) {
+    if (c.overlapping) continue;
+    const FirstContact contact = contactOf(c, twist_, horizon);
+    keepEarlier(full, c, contact);
+    keepEarlier(c.standing ? still : moving, c, contact);
+    moving_count += c.standing ? 0 : 1;
+  }
+  // The grid: k_n = n res for n = 0 .. top, and 1 (top_n: the largest n with n res < 1).
+  const auto gridValue = [res](long n, long top) { return n > top ? 1.0 : n * res; };
+  const long top = static_cast<long>(std::ceil(1.0 / res)) - 1;  // n res < 1 for n <= top
+  double k = 1.0;
+  long n = top + 1;
+  PairTime limiting = full;
+  double limiting_scale = 1.0;
+  std::string why;
+  if (full.found && full.time <= settings_.stop_time) {
+    k = 0.0;
+    why = " within stop_time " + formatNumber(settings_.stop_time) + " s";
+  } else {
+    if (still.found && still.time < before) {
+      // The largest grid k with t_s / k >= T_b, from below t_s / T_b (rounded down).
+      n = std::min(top, static_cast<long>(std::floor(still.time / before / res)));
+      while (n > 0 && still.time / (n * res) < before) --n;
+      k = gridValue(n, top);
+      limiting = still;
+    }
+    if (moving_count > 0 && k == 1.0 && moving.found && moving.time < before) {
+      // k = 1 was judged over the horizon already: the search starts below it. A standing
+      // command is the same at every scale: nothing to search.
+      limiting = moving;
+      const bool still_command = twist_.vx == 0.0 && twist_.vy == 0.0 && twist_.wz == 0.0;
+      n = still_command ? 0 : top;
+      k = gridValue(n, top);
+    }
+    if (moving_count > 0 && k > 0.0 && k < 1.0) {
+      // Searched down the grid: under k twist a moving obstacle may arrive sooner or later.
+      const Candidate* failed = nullptr;
+      for (; n > 0; --n) {
+        k = gridValue(n, top);
+        const Twist command = scaled(twist_, k);
+        const auto fails = [&](const Candidate& c) {
+          const FirstContact contact = contactOf(c, command, before);
+          if (!contact.contact || contact.time >= before) return false;
+          limiting = {true, contact.time, c.link, c.obstacle};
+          limiting_scale = k;
+          return true;
+        };
+        // The pair that failed the last k first: it most likely fails this one too.
+        if (failed != nullptr && fails(*failed)) continue;
+        bool clear = true;
+        for (const Candidate& c : candidates_) {
+          if (c.overlapping || c.standing || &c == failed) continue;
+          if (fails(c)) {
+            failed = &c;
+            clear = false;
+            break;
+          }
+        }
+        if (clear) break;
+      }
+      if (n == 0) k = 0.0;
+    }
+  }
+  result_.scale = k;
+  result_.limiting = describe(limiting, limiting_scale);
+  // The first contact under the output command over the horizon.
+  PairTime output;
+  if (k == 1.0) {
+    output = full;
+  } else {
+    if (k > 0.0 && still.found && still.time <= k * horizon) {
+      output = {true, still.time / k, still.link, still.obstacle};
+    }
+    const Twist command = scaled(twist_, k);
+    for (const Candidate& c : candidates_) {
+      if (!c.overlapping && !c.standing) keepEarlier(output, c, contactOf(c, command, horizon));
+    }
+  }
+  result_.contact = describe(output, k);
+
+  // The action and its reason.
+  const GateContact& lim = result_.limiting;
+  std::string text;
+  if (escaping) {
+    text = "moves every close pair apart (nearest: link '" + result_.clearance_link + "' " +
+           readable(result_.clearance) + " m from '" + result_.clearance_obstacle + "'); ";
+  }
+  const std::string first =
+      full.found ? "contact of " + pairText(describe(full, 1.0)) + " in " +
+                       readable(full.time) + " s under the full command"
+                 : "no contact within horizon " + formatNumber(horizon) + " s under the full command";
+  if (k == 1.0) {
+    result_.action = escaping ? GateAction::Escape : GateAction::Pass;
+    text += first + (full.found ? ", no sooner than time_before_collision " +
+                                      formatNumber(before) + " s"
+                                : std::string());
+  } else if (k > 0.0) {
+    result_.action = escaping ? GateAction::Escape : GateAction::Slow;
+    text += first + "; slowed to " + readable(k) + " so that ";
+    text += limiting_scale < 1.0
+                ? "no moving obstacle comes sooner than time_before_collision " +
+                      formatNumber(before) + " s (at " + readable(lim.scale) + ", " +
+                      pairText(lim) + " in " + readable(lim.time) + " s)"
+                : "it comes no sooner than time_before_collision " + formatNumber(before) + " s";
+  } else {
+    result_.action = GateAction::Stop;
+    text += first;
+    text += !why.empty() ? why
+                         : "; no scale above 0 on the " + formatNumber(res) +
+                               " grid keeps every contact beyond time_before_collision " +
+                               formatNumber(before) + " s";
+  }
+  if (k == 0.0 && result_.contact.found) {
+    text += "; standing still, '" + result_.contact.obstacle + "' reaches link '" +
+            result_.contact.link + "' in " + readable(result_.contact.time) +
+            " s (stopping cannot avoid it)";
+  }
+  result_.reason = std::move(text);
+}
+
+void Gate::run() {
+  if (!findCandidates()) return;
+  std::vector<ClosePair> close;
+  measureClearance(close);
+  if (!close.empty() && pushesIn(close)) return;
+  contactRule(!close.empty());
+}
+
+}  // namespace
+
+Twist scaled(const Twist& twist, double k) { return {k * twist.vx, k * twist.vy, k * twist.wz}; }
+
+PathPose poseAfter(const Twist& twist, double t) {
+  const double turn = twist.wz * t;
+  const double along = t * sinc(turn);                                  // sin(wz t) / wz
+  const double across = t * std::sin(0.5 * turn) * sinc(0.5 * turn);  // (1 - cos(wz t)) / wz
+  return {along * twist.vx - across * twist.vy, across * twist.vx + along * twist.vy, turn, t};
+}
+
+Ellipse linkAfter(const Ellipse& link, const Twist& twist, double t) {
+  const PathPose pose = poseAfter(twist, t);
+  return placeAt(link, {pose.x, pose.y}, pose.yaw);
+}
+
+std::vector<NamedEllipse> linksAtTime(const std::vector<NamedEllipse>& links, const Twist& twist,
+                                      double t) {
+  const PathPose pose = poseAfter(twist, t);
+  std::vector<NamedEllipse> placed = links;
+  for (NamedEllipse& link : placed) link.ellipse = placeAt(link.ellipse, {pose.x, pose.y}, pose.yaw);
+  return placed;
+}
+
+std::string invalidTwistReason(const Twist& twist, double horizon) {
+  return invalidVelocityReason(Motion{linear(twist), twist.wz}, horizon,
+                               {"twist.vx", "twist.vy", "twist.wz"});
+}
+
+std::string invalidTwistContactReason(const Ellipse& link, const Twist& twist,
+                                      const Ellipse& obstacle, const Motion& obstacle_motion,
+                                      double horizon) {
+  if (std::string r = invalidReason(link); !r.empty()) return "link: " + r;
+  if (std::string r = invalidReason(obstacle); !r.empty()) return "obstacle: " + r;
+  if (!std::isfinite(horizon)) return "horizon = " + formatNumber(horizon) + " must be finite";
+  if (horizon < 0.0) return "horizon = " + formatNumber(horizon) + " must be >= 0";
+  if (std::string r = invalidTwistReason(twist, horizon); !r.empty()) return r;
+  if (std::string r = linkReachReason(link, twist, horizon); !r.empty()) return "link: " + r;
+  if (std::string r = invalidMotionReason(obstacle, obstacle_motion, horizon); !r.empty()) {
+    return "obstacle: " + r;
+  }
+  return {};
+}
+
+FirstContact twistContact(const Ellipse& link, const Twist& twist, const Ellipse& obstacle,
+                          const Motion& obstacle_motion, double horizon) {
+  if (twist.wz == 0.0) {
+    // The frame does not turn: the link translates by (vx, vy), a Motion of the core.
+    return firstContact(link, Motion{linear(twist), 0.0}, obstacle, obstacle_motion, horizon);
+  }
+  if (overlap(link, obstacle)) return {true, 0.0};
+  if (!(horizon > 0.0)) return {};
+  const double approach =
+      largestRelativeSpeed(obstacle_motion.velocity, pointVelocity(twist, link.center),
+                           twist.wz * horizon) +
+      std::fabs(twist.wz) * (boundingRadius(link) - inscribedRadius(link)) +
+      std::fabs(obstacle_motion.angular_velocity) *
+          (boundingRadius(obstacle) - inscribedRadius(obstacle));
+  FirstContact contact = detail::advanceConservatively(
+      [&](double t) {
+        return std::make_pair(linkAfter(link, twist, t), movedBy(obstacle, obstacle_motion, t));
+      },
+      approach, inscribedRadius(link) + inscribedRadius(obstacle), horizon);
+  // Apart at t = 0 (overlap() above); a grazing contact found there is reported just after 0, as
+  // firstContact() does, so that time 0 always means overlapping now.
+  if (contact.contact && contact.time == 0.0) {
+    contact.time = std::min(horizon, std::numeric_limits<double>::denorm_min());
+  }
+  return contact;
+}
+
+const char* toString(GateAction action) {
+  switch (action) {
+    case GateAction::Pass:
+      return "pass";
+    case GateAction::Slow:
+      return "slow";
+    case GateAction::Stop:
+      return "stop";
+    case GateAction::Escape:
+      return "escape";
+  }
+  return "stop";
+}
+
+std::string invalidGateReason(const PathScene& scene, const Twist& twist,
+                              const GateSettings& settings) {
+  if (std::string r = cheapGateReason(scene, twist, settings); !r.empty()) return r;
+  const auto names = [](const std::vector<NamedEllipse>& entries, const char* role)
+      -> std::string {
+    const auto problem =
+        findNameProblem(entries.size(), [&](std::size_t i) -> const std::string& {
+          return entries[i].name;
+        });
+    if (!problem) return {};
+    if (problem->kind == NameProblem::Kind::Empty) {
+      return std::string(role) + " " + std::to_string(problem->index) + ": empty name";
+    }
+    return std::string(role) + " " + std::to_string(problem->index) + ": name '" +
+           entries[problem->index].name + "' repeats " + role + " " +
+           std::to_string(problem->first_index);
+  };
+  if (std::string r = names(scene.links, "link"); !r.empty()) return r;
+  if (std::string r = names(scene.obstacles, "obstacle"); !r.empty()) return r;
+  for (std::size_t o = 0; o < scene.obstacles.size(); ++o) {
+    if (std::string r = obstacleReason(scene.obstacles[o], scene.obstacle_motions[o],
+                                       settings.horizon);
+        !r.empty()) {
+      return r;
+    }
+  }
+  return {};
+}
+
+GateResult gateCommand(const PathScene& scene, const Twist& twist, const GateSettings& settings) {
+  GateResult result;
+  if (std::string r = cheapGateReason(scene, twist, settings); !r.empty()) {
+    result.error = std::move(r);
+    result.reason = "cannot judge the command: " + result.error;
+    return result;
+  }
+  Gate(scene, twist, settings, result).run();
+  if (!result.ok()) {
+    result.action = GateAction::Stop;
+    result.scale = 0.0;
+    result.reason = "cannot judge the command: " + result.error;
+  }
+  return result;
+}
+
+}  // namespace ellipse_collision::core
