@@ -5,6 +5,7 @@ add_library(ellipse_collision_ros
   src/ros/collision_markers.cpp
   src/ros/collision_node.cpp
   src/ros/conversions.cpp
+  src/ros/gate_markers.cpp
   src/ros/node_config.cpp
   src/ros/scan_obstacles.cpp
   src/ros/tf_lookup.cpp

@@ -35,6 +35,7 @@ set(ELLIPSE_COLLISION_APP_SOURCES
   src/app/check_health.cpp
   src/app/collision_check.cpp
   src/app/collision_monitor.cpp
+  src/app/command_gate.cpp
   src/app/contact_prediction.cpp
   src/app/ellipse_registry.cpp
   src/app/ellipse_spec.cpp

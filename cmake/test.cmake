@@ -128,6 +128,9 @@ ellipse_collision_add_rostest(test_node_services test/ros/node_services.test
 ellipse_collision_add_rostest(test_node_topics test/ros/node_topics.test
   test/ros/test_node_topics.cpp)
 # When ~collisions is published: at `rate`, and on a full call only when the state changed.
+# The velocity gate on simulated time: a robot the client integrates from ~cmd_vel_out.
+ellipse_collision_add_rostest(test_gate test/ros/gate.test test/ros/test_gate.cpp)
+target_include_directories(test_gate PRIVATE ${std_srvs_INCLUDE_DIRS})
 ellipse_collision_add_rostest(test_state_publishing test/ros/state_publishing.test
   test/ros/test_state_publishing.cpp)
 ellipse_collision_add_rostest(test_stale_data test/ros/stale_data.test

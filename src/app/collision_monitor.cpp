@@ -1,6 +1,7 @@
 #include "ellipse_collision/app/collision_monitor.h"
 
 #include <chrono>
+#include <cmath>
 #include <iterator>
 #include <set>
 #include <utility>
@@ -34,7 +35,8 @@ CollisionMonitor::CollisionMonitor(MonitorSettings settings, const std::vector<E
                                    MonitorHooks hooks)
     : settings_(std::move(settings)),
       hooks_(std::move(hooks)),
-      registry_(links, obstacles, limits) {
+      registry_(links, obstacles, limits),
+      gate_enabled_(settings_.gate.enabled) {
   std::string refusal;
   const std::uint64_t service_revision = restore(store, refusal);
   persistence_ = std::make_unique<ObstaclePersistence>(store.path, store.session,
@@ -91,6 +93,7 @@ void CollisionMonitor::advanceClock(double now_s) {
       registry_.dropExpiredTopicObstacles(now_s, settings_.obstacle_timeout_s);
   if (dropped == 0) return;
   dropped_obstacles_ += dropped;
+  topic_obstacles_expired_ = true;
   topicObstaclesChanged();
   if (hooks_.obstacles_expired) hooks_.obstacles_expired(dropped, now_s - registry_.topicStamp());
 }
@@ -256,10 +259,130 @@ std::string CollisionMonitor::replaceTopicObstacles(const std::vector<EllipseSpe
   std::string error = validateAttached(specs, "ellipses", settings_.check, lookup);
   if (error.empty()) {
     error = registry_.replaceTopicObstacles(specs, "ellipses", stamp_s);
-    if (error.empty()) topicObstaclesChanged();
+    if (error.empty()) {
+      topic_obstacles_expired_ = false;
+      topicObstaclesChanged();
+    }
   }
   last_obstacles_error_ = error;
   return error;
+}
+
+GateDecision CollisionMonitor::gateCommand(const VelocityCommand& command, double now_s,
+                                           const TransformLookup& latest,
+                                           const TransformAtLookup& at) {
+  gate_heard_ = true;
+  last_command_s_ = now_s;
+  timeout_sent_ = false;
+  GateDecision decision = decideGate(command, now_s, latest, at);
+  last_gate_action_ = toString(decision.action);
+  last_gate_reason_ = decision.reason;
+  if (decision.action == GateAction::Stop || decision.action == GateAction::Incomplete) {
+    ++gate_stops_;
+  }
+  if (decision.action == GateAction::Slow) ++gate_slowdowns_;
+  return decision;
+}
+
+std::optional<GateDecision> CollisionMonitor::gateWatchdog(double now_s) {
+  const double timeout = settings_.gate.cmd_vel_timeout_s;
+  if (!gate_enabled_ || !(timeout > 0.0)) return std::nullopt;
+  if (!gate_heard_ || now_s < last_command_s_) {  // the first call, or time jumped back
+    gate_heard_ = true;
+    last_command_s_ = now_s;
+    return std::nullopt;
+  }
+  if (timeout_sent_ || now_s - last_command_s_ < timeout) return std::nullopt;
+  timeout_sent_ = true;
+  GateDecision decision = stoppedDecision(
+      GateAction::Timeout, VelocityCommand(),
+      "stopped: no command on ~cmd_vel_in for " + core::formatNumber(now_s - last_command_s_) +
+          " s, longer than cmd_vel_timeout " + core::formatNumber(timeout) + " s");
+  last_gate_action_ = toString(decision.action);
+  last_gate_reason_ = decision.reason;
+  ++gate_stops_;
+  return decision;
+}
+
+GateDecision CollisionMonitor::decideGate(const VelocityCommand& command, double now_s,
+                                          const TransformLookup& latest,
+                                          const TransformAtLookup& at) {
+  const GateConfig& gate = settings_.gate;
+  if (!gate_enabled_) {
+    GateDecision decision;
+    decision.action = GateAction::Disabled;
+    decision.scale = 1.0;
+    decision.input = command;
+    decision.output = command;
+    decision.reason = "the gate is disabled: commands pass unchanged";
+    return decision;
+  }
+  if (const auto invalid = findInvalidCommand(command, gate)) {
+    return stoppedDecision(GateAction::Stop, command,
+                           "stopped: refused command: " + describeFieldError("cmd_vel", *invalid));
+  }
+  const CheckOutcome& outcome = fullCheck(now_s, latest, at, StatePublishing::OnChange, "");
+  if (!outcome.error.empty()) {
+    return stoppedDecision(GateAction::Stop, command, "stopped: the check failed: " + outcome.error);
+  }
+  const auto known = outcome.frames.find(gate.robot_frame);
+  const FrameTransform robot =
+      known != outcome.frames.end() ? known->second : latest(gate.robot_frame);
+  const Freshness freshness{settings_.check.max_transform_age_s, now_s};
+  if (!robot.ok || isStale(robot, freshness)) {
+    // Without the robot's own pose there is nothing to gate on, whatever on_incomplete says.
+    return stoppedDecision(
+        GateAction::Incomplete, command,
+        "stopped: robot_frame '" + gate.robot_frame + "': " +
+            (robot.ok ? "its transform to '" + settings_.check.fixed_frame + "' is " +
+                            core::formatNumber(ageOf(robot, freshness)) +
+                            " s old, older than max_transform_age " +
+                            core::formatNumber(freshness.max_age_s) + " s"
+                      : "no transform to '" + settings_.check.fixed_frame + "' (" + robot.error +
+                            ")"));
+  }
+  std::vector<std::string> missing;
+  if (!outcome.unavailable_frames.empty()) {
+    missing.push_back("frames unavailable: " + joinText(outcome.unavailable_frames, ", "));
+  }
+  if (!outcome.stale_frames.empty()) {
+    missing.push_back("frames stale: " + joinText(outcome.stale_frames, ", "));
+  }
+  if (!outcome.complete && missing.empty()) {
+    missing.push_back("skipped: " + joinText(outcome.skipped, "; "));
+  }
+  if (topic_obstacles_expired_) {
+    missing.push_back("obstacles from ~obstacles dropped, older than obstacle_timeout " +
+                      core::formatNumber(settings_.obstacle_timeout_s) + " s");
+  }
+  if (!missing.empty() && gate.on_incomplete == OnIncomplete::Stop) {
+    return stoppedDecision(GateAction::Incomplete, command,
+                           "stopped: incomplete data (on_incomplete: stop): " +
+                               joinText(missing, "; "));
+  }
+  // The robot frame's pose in the fixed frame's plane (its heading from its x axis).
+  const Eigen::Isometry3d& pose = robot.fixed_from_frame;
+  PlanarPose planar;
+  planar.position = pose.translation().head<2>();
+  planar.yaw = std::atan2(pose.linear()(1, 0), pose.linear()(0, 0));
+  // Obstacles move by their own velocity only: one attached to a moving frame (a scan in the
+  // sensor's frame) is where that frame puts it now and does not travel with the robot.
+  const core::Scene& placed = outcome.placed;
+  std::vector<core::Motion> motions(placed.size());
+  const std::set<std::string>& moving = registry_.movingNames();
+  for (std::size_t i = 0; i < placed.size() && !moving.empty(); ++i) {
+    if (placed.role(i) != core::EllipseRole::Obstacle || !moving.count(placed.name(i))) continue;
+    const EllipseSpec& spec = registry_.entries().at(placed.name(i)).spec;
+    const auto frame = outcome.frames.find(spec.frame_id);
+    if (frame != outcome.frames.end()) motions[i] = ownMotion(spec, frame->second.fixed_from_frame);
+  }
+  GateDecision decision =
+      decideOnScene(command, placed, motions, planar, settings_.check.rules.allowed, gate);
+  if (!missing.empty()) {
+    decision.reason += " (incomplete data, passed by on_incomplete: pass: " +
+                       joinText(missing, "; ") + ")";
+  }
+  return decision;
 }
 
 CollisionMonitor::Health CollisionMonitor::health(double now_s) const {
@@ -297,6 +420,10 @@ CollisionMonitor::Health CollisionMonitor::health(double now_s) const {
                                                 : core::formatNumber(outcome.predicted.front().time));
   values.emplace_back("predicted contacts", std::to_string(outcome.predicted.size()));
   values.emplace_back("prediction notes", joinText(outcome.prediction_notes, "; "));
+  values.emplace_back("gate", !gate_enabled_ ? "disabled" : last_gate_action_);
+  values.emplace_back("gate reason", last_gate_reason_);
+  values.emplace_back("gate stops", std::to_string(gate_stops_));
+  values.emplace_back("gate slow-downs", std::to_string(gate_slowdowns_));
   return report;
 }
 

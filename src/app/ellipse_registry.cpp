@@ -71,12 +71,23 @@ EllipseRegistry::Entries::iterator EllipseRegistry::put(const EllipseSpec& spec,
   }
   ++counts_[static_cast<std::size_t>(source)];
   if (source == EllipseSource::ServiceObstacle) service_names_.insert(spec.name);
+  trackOwnMotion(*it);
   return it;
+}
+
+void EllipseRegistry::trackOwnMotion(const Entries::value_type& entry) {
+  const EllipseSpec& spec = entry.second.spec;
+  if (spec.vx != 0.0 || spec.vy != 0.0 || spec.angular_velocity != 0.0) {
+    moving_names_.insert(entry.first);
+  } else if (!moving_names_.empty()) {
+    moving_names_.erase(entry.first);
+  }
 }
 
 EllipseRegistry::Entries::iterator EllipseRegistry::erase(Entries::iterator it) {
   --counts_[static_cast<std::size_t>(it->second.source)];
   if (it->second.source == EllipseSource::ServiceObstacle) service_names_.erase(it->first);
+  if (!moving_names_.empty()) moving_names_.erase(it->first);
   return entries_.erase(it);
 }
 
@@ -191,6 +202,7 @@ std::string EllipseRegistry::replaceTopicObstacles(const std::vector<EllipseSpec
       found[i] = put(obstacles[i], EllipseSource::TopicObstacle);
     } else {
       found[i]->second.spec = obstacles[i];  // a topic obstacle already: the counts stay
+      trackOwnMotion(*found[i]);
     }
   }
   topic_stamp_s_ = stamp_s;

@@ -27,6 +27,7 @@ app::MonitorSettings makeMonitorSettings(const NodeConfig& config) {
   settings.obstacle_timeout_s = config.obstacle_timeout_s;
   settings.prediction_horizon_s = config.prediction_horizon_s;
   settings.obstacle_store_period_s = config.obstacle_store_period_s;
+  settings.gate = config.gate;
   return settings;
 }
 
@@ -122,6 +123,21 @@ CollisionNode::CollisionNode(const ros::NodeHandle& nh, const ros::NodeHandle& p
       private_nh_.advertiseService("remove_obstacles", &CollisionNode::onRemoveObstacles, this);
   path_service_ = private_nh_.advertiseService("check_path", &CollisionNode::onCheckPath, this);
   obstacles_sub_ = private_nh_.subscribe("obstacles", 10, &CollisionNode::onObstacles, this);
+
+  // The velocity gate: always advertised (it can be enabled at run time), off by default.
+  cmd_vel_pub_ = private_nh_.advertise<geometry_msgs::Twist>("cmd_vel_out", 1);
+  gate_state_pub_ = private_nh_.advertise<GateState>("gate_state", 1, /*latch=*/true);
+  gate_markers_pub_ =
+      private_nh_.advertise<visualization_msgs::MarkerArray>("gate_markers", 1, /*latch=*/true);
+  gate_enable_service_ =
+      private_nh_.advertiseService("gate/set_enabled", &CollisionNode::onSetGateEnabled, this);
+  cmd_vel_sub_ = private_nh_.subscribe("cmd_vel_in", 1, &CollisionNode::onCommand, this,
+                                       ros::TransportHints().tcpNoDelay());
+  if (config_.gate.cmd_vel_timeout_s > 0.0) {
+    // Checked four times per timeout: the zero goes out at most a quarter timeout late.
+    gate_watchdog_timer_ = private_nh_.createTimer(
+        ros::Duration(config_.gate.cmd_vel_timeout_s / 4.0), &CollisionNode::onGateWatchdog, this);
+  }
 
   if (config_.rate_hz > 0.0) {
     check_timer_ = private_nh_.createTimer(ros::Duration(1.0 / config_.rate_hz),
@@ -319,6 +335,46 @@ bool CollisionNode::onCheckPath(CheckPath::Request& request, CheckPath::Response
   }
   toMsg(outcome, response);
   return true;
+}
+
+void CollisionNode::onCommand(const geometry_msgs::Twist::ConstPtr& msg) {
+  const ros::Time now = ros::Time::now();
+  // No waiting for transforms: a command is gated on what tf has now.
+  const app::GateDecision decision = monitor_->gateCommand(
+      fromMsg(*msg), now.toSec(), lookup(ros::Time(0), ros::Duration(0)), lookupAt());
+  publishGate(decision, now);
+  publishIfUpdated();
+}
+
+void CollisionNode::onGateWatchdog(const ros::TimerEvent& /*event*/) {
+  const ros::Time now = ros::Time::now();
+  if (const auto decision = monitor_->gateWatchdog(now.toSec())) publishGate(*decision, now);
+}
+
+bool CollisionNode::onSetGateEnabled(std_srvs::SetBool::Request& request,
+                                     std_srvs::SetBool::Response& response) {
+  monitor_->setGateEnabled(request.data);
+  response.success = true;
+  response.message = request.data ? "gate enabled" : "gate disabled: commands pass unchanged";
+  ROS_INFO_STREAM("ellipse_collision: " << response.message);
+  return true;
+}
+
+void CollisionNode::publishGate(const app::GateDecision& decision, const ros::Time& stamp) {
+  // The command first: what the robot waits for.
+  cmd_vel_pub_.publish(toMsg(decision.output));
+  GateState state = toMsg(decision);
+  state.header.stamp = stamp;
+  state.header.frame_id = config_.fixed_frame;
+  gate_state_pub_.publish(state);
+  if (gate_markers_pub_.getNumSubscribers() > 0) {
+    gate_markers_pub_.publish(gate_markers_.update(decision, config_.fixed_frame, stamp));
+  }
+  if (decision.action == app::GateAction::Stop || decision.action == app::GateAction::Incomplete ||
+      decision.action == app::GateAction::Timeout) {
+    ROS_WARN_STREAM_THROTTLE(2.0, "ellipse_collision: gate " << state.action << ": "
+                                                              << decision.reason);
+  }
 }
 
 void CollisionNode::onDiagnosticsTimer(const ros::TimerEvent& /*event*/) {

@@ -169,4 +169,38 @@ std::vector<PredictedContact> toMsg(const std::vector<core::PredictedContact>& p
   return msgs;
 }
 
+app::VelocityCommand fromMsg(const geometry_msgs::Twist& msg) {
+  app::VelocityCommand command;
+  command.linear << msg.linear.x, msg.linear.y, msg.linear.z;
+  command.angular << msg.angular.x, msg.angular.y, msg.angular.z;
+  return command;
+}
+
+geometry_msgs::Twist toMsg(const app::VelocityCommand& command) {
+  geometry_msgs::Twist msg;
+  msg.linear.x = command.linear.x();
+  msg.linear.y = command.linear.y();
+  msg.linear.z = command.linear.z();
+  msg.angular.x = command.angular.x();
+  msg.angular.y = command.angular.y();
+  msg.angular.z = command.angular.z();
+  return msg;
+}
+
+GateState toMsg(const app::GateDecision& decision) {
+  GateState msg;
+  msg.action = app::toString(decision.action);
+  msg.scale = decision.scale;
+  msg.contact_predicted = decision.contact_predicted;
+  msg.time_to_contact = decision.contact_predicted ? decision.time_to_contact_s : 0.0;
+  msg.link = decision.link;
+  msg.obstacle = decision.obstacle;
+  msg.contact_point.x = decision.contact_point.x();
+  msg.contact_point.y = decision.contact_point.y();
+  msg.input = toMsg(decision.input);
+  msg.output = toMsg(decision.output);
+  msg.reason = decision.reason;
+  return msg;
+}
+
 }  // namespace ellipse_collision

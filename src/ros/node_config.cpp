@@ -240,6 +240,51 @@ app::LinkFitResult readLinksFromUrdf(const XmlRpcValue& value, const UrdfLinkFit
   }
 }
 
+/// `gate: {enabled, robot_frame, horizon, ...}`: types here, ranges by app::findInvalidGateSetting().
+app::GateConfig readGate(const XmlRpcValue& value) {
+  const std::string where = "parameter ~gate";
+  if (value.getType() != XmlRpcValue::TypeStruct) {
+    fail(where, "gate", "a dict of gate parameters", describeValue(value));
+  }
+  static const std::vector<std::string> kGateKeys = {
+      "enabled", "robot_frame", "horizon",          "time_before_collision", "stop_time",
+      "margin",  "resolution",  "cmd_vel_timeout",  "on_incomplete",         "max_linear_speed",
+      "max_angular_speed"};
+  for (auto it = value.begin(); it != value.end(); ++it) {
+    if (std::find(kGateKeys.begin(), kGateKeys.end(), it->first) == kGateKeys.end()) {
+      throw ConfigError("parameter ~gate/" + it->first + ": unknown key (expected one of " +
+                        app::joinText(kGateKeys, ", ") + ")");
+    }
+  }
+  app::GateConfig gate;
+  if (value.hasMember("enabled")) gate.enabled = readBool(value["enabled"], where, "gate/enabled");
+  if (value.hasMember("robot_frame")) {
+    gate.robot_frame = readString(value["robot_frame"], where, "gate/robot_frame");
+  }
+  for (const auto& [key, field] :
+       {std::pair<const char*, double*>{"horizon", &gate.timing.horizon},
+        {"time_before_collision", &gate.timing.time_before_collision},
+        {"stop_time", &gate.timing.stop_time},
+        {"margin", &gate.timing.margin},
+        {"resolution", &gate.timing.resolution},
+        {"cmd_vel_timeout", &gate.cmd_vel_timeout_s},
+        {"max_linear_speed", &gate.max_linear_speed},
+        {"max_angular_speed", &gate.max_angular_speed}}) {
+    if (value.hasMember(key)) *field = readNumber(value[key], where, std::string("gate/") + key);
+  }
+  if (value.hasMember("on_incomplete")) {
+    const std::string policy = readString(value["on_incomplete"], where, "gate/on_incomplete");
+    if (policy != "stop" && policy != "pass") {
+      fail(where, "gate/on_incomplete", "'stop' or 'pass'", "'" + policy + "'");
+    }
+    gate.on_incomplete = policy == "stop" ? app::OnIncomplete::Stop : app::OnIncomplete::Pass;
+  }
+  if (const auto invalid = app::findInvalidGateSetting(gate)) {
+    fail(where, invalid->key, invalid->expected, invalid->actual);
+  }
+  return gate;
+}
+
 }  // namespace
 
 NodeConfig parseNodeConfig(const XmlRpcValue& params, const UrdfLinkFitter& fit_urdf_links) {
@@ -256,7 +301,7 @@ NodeConfig parseNodeConfig(const XmlRpcValue& params, const UrdfLinkFitter& fit_
       "links",            "links_from_urdf",   "obstacles",         "allowed_pairs",
       "self_collision",   "warning_distance",  "max_transform_age", "obstacle_timeout",
       "max_obstacles",    "max_name_length",   "obstacle_store",    "obstacle_store_period",
-      "robot_frame",      "prediction_horizon", "marker_refresh_period"};
+      "robot_frame",      "prediction_horizon", "marker_refresh_period", "gate"};
   if (root.getType() == XmlRpcValue::TypeStruct) {
     for (auto it = root.begin(); it != root.end(); ++it) {
       if (std::find(kKnownKeys.begin(), kKnownKeys.end(), it->first) == kKnownKeys.end()) {
@@ -330,6 +375,7 @@ NodeConfig parseNodeConfig(const XmlRpcValue& params, const UrdfLinkFitter& fit_
         readInRange(root["marker_refresh_period"], "parameter ~marker_refresh_period",
                     "marker_refresh_period", 0.0, kMaxTfTimeoutS);
   }
+  if (has("gate")) config.gate = readGate(root["gate"]);
   if (!has("links") && !has("links_from_urdf")) {
     throw ConfigError(
         "parameter ~links, key 'links': expected a list of ellipses (required unless "

@@ -73,6 +73,9 @@ class EllipseRegistry {
   const std::map<std::string, StoredEllipse>& entries() const { return entries_; }
   bool contains(const std::string& name) const { return entries_.count(name) != 0; }
   std::size_t count(EllipseSource source) const { return counts_[static_cast<std::size_t>(source)]; }
+  /// The entries with an own velocity (vx, vy or angular_velocity not 0): the velocity gate looks
+  /// these up by name, and every other obstacle stands (an empty set for most scenes).
+  const std::set<std::string>& movingNames() const { return moving_names_; }
   /// Changes with every change of entries(): while it is the same, the entries are the same
   /// objects with the same specs (what PlacementCache relies on).
   std::uint64_t revision() const { return revision_; }
@@ -87,6 +90,8 @@ class EllipseRegistry {
   /// `spec` under its name, from `source`, in place of any entry of that name; keeps counts_.
   /// Returns the entry.
   Entries::iterator put(const EllipseSpec& spec, EllipseSource source);
+  /// Keeps moving_names_ for an entry just written.
+  void trackOwnMotion(const Entries::value_type& entry);
   /// Erases the entry at `it` and returns the next; keeps counts_.
   Entries::iterator erase(Entries::iterator it);
 
@@ -97,6 +102,7 @@ class EllipseRegistry {
   /// The service obstacles' names, for serviceObstacles(): a service call's record is written
   /// from them without walking a perception stream's 100,000 topic obstacles (1.4-4 ms).
   std::set<std::string> service_names_;
+  std::set<std::string> moving_names_;  ///< movingNames()
   RegistryLimits limits_;
   double topic_stamp_s_{0.0};
   std::uint64_t revision_{0};

@@ -1,6 +1,8 @@
 #pragma once
 
+#include <geometry_msgs/Twist.h>
 #include <ros/ros.h>
+#include <std_srvs/SetBool.h>
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_listener.h>
 
@@ -9,6 +11,7 @@
 #include <vector>
 
 #include "ellipse_collision/ros/collision_markers.h"
+#include "ellipse_collision/ros/gate_markers.h"
 #include "ellipse_collision/app/collision_monitor.h"
 #include "ellipse_collision/ros/messages.h"
 #include "ellipse_collision/ros/node_config.h"
@@ -47,6 +50,12 @@ class CollisionNode {
   bool onAddObstacles(AddObstacles::Request& request, AddObstacles::Response& response);
   bool onRemoveObstacles(RemoveObstacles::Request& request, RemoveObstacles::Response& response);
   bool onCheckPath(CheckPath::Request& request, CheckPath::Response& response);
+  /// ~cmd_vel_in: gated in this callback, one ~cmd_vel_out per command.
+  void onCommand(const geometry_msgs::Twist::ConstPtr& msg);
+  void onGateWatchdog(const ros::TimerEvent& event);
+  bool onSetGateEnabled(std_srvs::SetBool::Request& request, std_srvs::SetBool::Response& response);
+  /// ~cmd_vel_out, ~gate_state and ~gate_markers for one decision.
+  void publishGate(const app::GateDecision& decision, const ros::Time& stamp);
 
   ros::NodeHandle nh_;
   ros::NodeHandle private_nh_;
@@ -66,6 +75,13 @@ class CollisionNode {
   ros::ServiceServer path_service_;
   ros::Timer check_timer_;
   ros::Timer diagnostics_timer_;
+  ros::Subscriber cmd_vel_sub_;
+  ros::Publisher cmd_vel_pub_;
+  ros::Publisher gate_state_pub_;
+  ros::Publisher gate_markers_pub_;
+  ros::ServiceServer gate_enable_service_;
+  ros::Timer gate_watchdog_timer_;
+  GateMarkers gate_markers_;
   ros::WallTimer store_timer_;  ///< writes the store when ~obstacles changed it (wall time: a
                                 ///< paused simulation clock does not hold back durability)
 

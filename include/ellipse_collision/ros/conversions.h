@@ -3,7 +3,10 @@
 #include <string>
 #include <vector>
 
+#include <geometry_msgs/Twist.h>
+
 #include "ellipse_collision/app/collision_check.h"
+#include "ellipse_collision/app/command_gate.h"
 #include "ellipse_collision/app/ellipse_spec.h"
 #include "ellipse_collision/app/path_request.h"
 #include "ellipse_collision/core/contact_prediction.h"
@@ -45,5 +48,12 @@ app::PathCheckRequest fromMsg(const CheckPath::Request& request);
 void toMsg(const app::PathCheckOutcome& outcome, CheckPath::Response& response);
 
 std::vector<PredictedContact> toMsg(const std::vector<core::PredictedContact>& predicted);
+
+/// Component by component; no validation (see app::findInvalidCommand()).
+app::VelocityCommand fromMsg(const geometry_msgs::Twist& msg);
+geometry_msgs::Twist toMsg(const app::VelocityCommand& command);
+
+/// The gate's decision as ~gate_state shows it (header left to the caller).
+GateState toMsg(const app::GateDecision& decision);
 
 }  // namespace ellipse_collision

@@ -12,5 +12,6 @@
 #include <ellipse_collision/CollisionState.h>
 #include <ellipse_collision/Ellipse.h>
 #include <ellipse_collision/EllipseArray.h>
+#include <ellipse_collision/GateState.h>
 #include <ellipse_collision/PredictedContact.h>
 #include <ellipse_collision/RemoveObstacles.h>

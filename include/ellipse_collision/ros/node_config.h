@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "ellipse_collision/app/command_gate.h"
 #include "ellipse_collision/app/ellipse_registry.h"
 #include "ellipse_collision/app/ellipse_spec.h"
 #include "ellipse_collision/app/link_fitting.h"
@@ -68,6 +69,7 @@ struct NodeConfig {
   std::vector<std::string> urdf_links_skipped;
   std::vector<app::EllipseSpec> obstacles;
   std::vector<std::pair<std::string, std::string>> allowed_pairs;
+  app::GateConfig gate;  ///< `gate/`: the velocity gate on ~cmd_vel_in (off by default)
 };
 
 /// Fits the link ellipses of `links_from_urdf`: the URDF in parameter `param`, the links and
