@@ -1,4 +1,4 @@
-// The velocity gate (core::gateCommand()) for one command: a 20-link base driving at 0.5 m/s and
+// The velocity gate (core::gateCommand()) for one command: a 20-link base (ringBase()) driving at 0.5 m/s and
 // turning at 0.3 rad/s, horizon 3 s, among 1,000 / 10,000 / 100,000 obstacles scattered at one
 // per 4 m^2 (so a few are within reach whatever their number), all standing or 10 % moving.
 // Target: p99 well under 1 ms at 10,000 obstacles. Counters: p50 and p99 of the call [us], pair
@@ -11,6 +11,7 @@
 #include <random>
 #include <vector>
 
+#include "bench_scenes.h"
 #include "ellipse_collision/core/velocity_gate.h"
 
 namespace ellipse_collision::core::bench {
@@ -22,15 +23,7 @@ PathScene makeScene(int obstacles, bool moving) {
   std::mt19937 rng(27);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   PathScene scene;
-  for (int i = 0; i < kLinks; ++i) {
-    Ellipse e;
-    const double a = 2.0 * M_PI * i / kLinks;
-    e.center = {0.35 * std::cos(a), 0.2 * std::sin(a)};
-    e.radius_x = 0.08 + 0.05 * u(rng);
-    e.radius_y = 0.03 + 0.02 * u(rng);
-    e.angle = a;
-    scene.links.push_back({"link" + std::to_string(i), EllipseRole::Link, e});
-  }
+  scene.links = ringBase(kLinks, rng);
   const double side = 2.0 * std::sqrt(static_cast<double>(obstacles));
   while (static_cast<int>(scene.obstacles.size()) < obstacles) {
     Ellipse e;

@@ -15,18 +15,12 @@
 #include "ellipse_collision/core/velocity_gate.h"
 #include "first_contact_oracle.h"
 #include "random_source.h"
+#include "scene_test_helpers.h"
 
 namespace ellipse_collision::core {
 namespace {
 
-Ellipse ellipse(double x, double y, double rx, double ry, double angle = 0.0) {
-  Ellipse e;
-  e.center = {x, y};
-  e.radius_x = rx;
-  e.radius_y = ry;
-  e.angle = angle;
-  return e;
-}
+using scene_test::ellipse;
 
 // ---- the oracle: the arc about the instantaneous centre, in quad precision ------------------
 // Independent of poseAfter()'s sinc form: the frame's origin turns about the centre
@@ -95,6 +89,17 @@ double scannedSceneContact(const PathScene& scene, const Twist& twist, double ho
     }
   }
   return first;
+}
+
+// The scan's verdict on a gate's scale: no contact before T_b under scale * twist, and one
+// contact before T_b one resolution step faster (the largest safe scale on the grid).
+void expectLargestSafeScale(const PathScene& scene, const Twist& twist, const GateSettings& s,
+                            double scale) {
+  const double under_output = scannedSceneContact(scene, scaled(twist, scale), s.horizon);
+  EXPECT_TRUE(under_output < 0.0 || under_output >= s.time_before_collision) << under_output;
+  const double faster = scannedSceneContact(scene, scaled(twist, scale + s.resolution), s.horizon);
+  EXPECT_GE(faster, 0.0);
+  EXPECT_LT(faster, s.time_before_collision);
 }
 
 PathScene sceneOf(std::vector<NamedEllipse> links, std::vector<NamedEllipse> obstacles,
@@ -433,12 +438,7 @@ TEST(Gate, RectangularRobotTurningTowardACornerIsSlowedInTime) {
   ASSERT_GT(full, 0.0);
   EXPECT_LE(r.limiting.time, full + 1e-9);
   EXPECT_NEAR(r.limiting.time, full, 1e-6);
-  const double under_output = scannedSceneContact(scene, scaled(twist, r.scale), s.horizon);
-  EXPECT_TRUE(under_output < 0.0 || under_output >= s.time_before_collision) << under_output;
-  const double one_step_faster =
-      scannedSceneContact(scene, scaled(twist, r.scale + s.resolution), s.horizon);
-  EXPECT_GE(one_step_faster, 0.0);
-  EXPECT_LT(one_step_faster, s.time_before_collision);
+  expectLargestSafeScale(scene, twist, s, r.scale);
   // The robot drawn at the predicted contact touches there.
   ASSERT_TRUE(r.contact.found);
   const std::vector<NamedEllipse> at = linksAtTime(scene.links, scaled(twist, r.scale), r.contact.time);
@@ -519,13 +519,7 @@ TEST(Gate, ObstacleMovingTowardTheRobotStopsItEarlierThanAStandingOne) {
   ASSERT_TRUE(coming.ok()) << coming.error;
   EXPECT_EQ(coming.action, GateAction::Slow) << coming.reason;
   EXPECT_LT(coming.scale, still.scale);
-  const double under_output = scannedSceneContact(scene, scaled(twist, coming.scale), s.horizon);
-  EXPECT_TRUE(under_output < 0.0 || under_output >= s.time_before_collision) << under_output;
-  // Largest on the grid: one step faster meets the wall before T_b.
-  const double faster =
-      scannedSceneContact(scene, scaled(twist, coming.scale + s.resolution), s.horizon);
-  EXPECT_GE(faster, 0.0);
-  EXPECT_LT(faster, s.time_before_collision);
+  expectLargestSafeScale(scene, twist, s, coming.scale);
 }
 
 TEST(Gate, RandomScenesNeverLetAContactComeBeforeTimeBeforeCollision) {
