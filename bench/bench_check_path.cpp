@@ -28,8 +28,8 @@ struct Problem {
   std::vector<PathPose> poses;
 };
 
-// Links: ringBase(), 20 of them. Path: along x with a gentle weave (yaw follows the heading), 1 s per 1 m.
-// Obstacles: along both sides of the corridor, 1.2 to 4 m from its centre line.
+// Links: ringBase(), 20 of them. Path: along x with a gentle weave (yaw follows the heading), 1 s
+// per 1 m. Obstacles: along both sides of the corridor, 1.2 to 4 m from its centre line.
 Problem makeProblem(bool blocked, bool moving) {
   std::mt19937 rng(14);
   std::uniform_real_distribution<double> u(0.0, 1.0);

@@ -1,6 +1,6 @@
-// The velocity gate (core::gateCommand()) for one command: a 20-link base (ringBase()) driving at 0.5 m/s and
-// turning at 0.3 rad/s, horizon 3 s, among 1,000 / 10,000 / 100,000 obstacles scattered at one
-// per 4 m^2 (so a few are within reach whatever their number), all standing or 10 % moving.
+// The velocity gate (core::gateCommand()) for one command: a 20-link base (ringBase()) driving at
+// 0.5 m/s and turning at 0.3 rad/s, horizon 3 s, among 1,000 / 10,000 / 100,000 obstacles scattered
+// at one per 4 m^2 (so a few are within reach whatever their number), all standing or 10 % moving.
 // Target: p99 well under 1 ms at 10,000 obstacles. Counters: p50 and p99 of the call [us], pair
 // tests, and the scale the gate chose (the scenes are built so that it slows).
 #include <benchmark/benchmark.h>
@@ -34,8 +34,8 @@ PathScene makeScene(int obstacles, bool moving) {
     e.angle = M_PI * u(rng);
     Motion m;
     if (moving && u(rng) < 0.1) m.velocity = {u(rng) - 0.5, u(rng) - 0.5};
-    scene.obstacles.push_back({"obstacle" + std::to_string(scene.obstacles.size()),
-                               EllipseRole::Obstacle, e});
+    scene.obstacles.push_back(
+        {"obstacle" + std::to_string(scene.obstacles.size()), EllipseRole::Obstacle, e});
     scene.obstacle_motions.push_back(m);
   }
   // One wall ahead, so that the command is slowed.

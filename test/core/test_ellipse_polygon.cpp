@@ -98,8 +98,7 @@ TEST(EllipsePolygon, SegmentCountIsTheSmallestWithinTheGapBetweenItsBounds) {
   EXPECT_EQ(drawSegments(ellipse(0, 0, 1.0, 1.0, 0)), 50);
   EXPECT_EQ(drawSegments(ellipse(0, 0, 100.0, 100.0, 0)), 64);
   // The larger radius decides, whichever axis it is on.
-  EXPECT_EQ(drawSegments(ellipse(0, 0, 1.0, 0.01, 0)),
-            drawSegments(ellipse(0, 0, 0.01, 1.0, 2)));
+  EXPECT_EQ(drawSegments(ellipse(0, 0, 1.0, 0.01, 0)), drawSegments(ellipse(0, 0, 0.01, 1.0, 2)));
 }
 
 TEST(EllipsePolygon, DrawnRimStaysWithinTheDocumentedGapOfTheTrueRim) {
@@ -146,7 +145,7 @@ TEST(EllipsePolygon, TheMarkersAllocationFreePathGivesTheSameBitsAsThePolygon) {
     // Radii from 1e-4 to 1e3 m: every segment count from 16 to 64 is met.
     const double a = std::pow(10.0, -4.0 + 7.0 * unit(rng));
     const Ellipse e = ellipse(1e3 * (unit(rng) - 0.5), 1e3 * (unit(rng) - 0.5), a,
-                                  a * (0.01 + unit(rng)), 2 * M_PI * unit(rng));
+                              a * (0.01 + unit(rng)), 2 * M_PI * unit(rng));
     const int n = drawSegments(e);
     std::array<Eigen::Vector2d, kMaxDrawSegments> into;
     ASSERT_EQ(drawnPolygonInto(e, into.data()), n);

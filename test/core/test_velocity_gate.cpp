@@ -111,7 +111,9 @@ PathScene sceneOf(std::vector<NamedEllipse> links, std::vector<NamedEllipse> obs
   return scene;
 }
 
-NamedEllipse link(const std::string& name, const Ellipse& e) { return {name, EllipseRole::Link, e}; }
+NamedEllipse link(const std::string& name, const Ellipse& e) {
+  return {name, EllipseRole::Link, e};
+}
 NamedEllipse obstacle(const std::string& name, const Ellipse& e) {
   return {name, EllipseRole::Obstacle, e};
 }
@@ -181,7 +183,8 @@ struct RandomPair {
   double horizon;
 };
 
-RandomPair randomPair(ellipse_collision::test::RandomSource& rng, bool turning, bool obstacle_moves) {
+RandomPair randomPair(ellipse_collision::test::RandomSource& rng, bool turning,
+                      bool obstacle_moves) {
   RandomPair p;
   p.link = ellipse(rng.uniform(-0.6, 0.6), rng.uniform(-0.4, 0.4), rng.logUniform(0.05, 0.5),
                    rng.logUniform(0.02, 0.5), rng.uniform(-3.0, 3.0));
@@ -189,9 +192,9 @@ RandomPair randomPair(ellipse_collision::test::RandomSource& rng, bool turning, 
   p.twist = {speed * std::cos(heading), speed * std::sin(heading), 0.0};
   if (turning) {
     const int kind = rng.index(3);  // large, ordinary, tiny turn rates
-    const double magnitude = kind == 0 ? rng.logUniform(2.0, 20.0)
-                                       : kind == 1 ? rng.logUniform(0.05, 2.0)
-                                                   : rng.logUniform(1e-12, 1e-4);
+    const double magnitude = kind == 0   ? rng.logUniform(2.0, 20.0)
+                             : kind == 1 ? rng.logUniform(0.05, 2.0)
+                                         : rng.logUniform(1e-12, 1e-4);
     p.twist.wz = rng.coin() ? magnitude : -magnitude;
   }
   const double angle = rng.uniform(-3.2, 3.2), range = rng.uniform(0.5, 4.0);
@@ -217,7 +220,8 @@ TEST(TwistContact, TranslationIsExactAgainstTheQuadOracle) {
     const test::OracleFirstContact want = test::oracleFirstContact(
         p.link, Motion{{p.twist.vx, p.twist.vy}, 0.0}, p.obstacle, p.motion, p.horizon);
     // A pair whose path grazes within the 1e-9 band of the contact scale may go either way.
-    if (got.contact != want.contact && std::fabs(static_cast<double>(want.min_scale) - 1.0) < 1e-8) {
+    if (got.contact != want.contact &&
+        std::fabs(static_cast<double>(want.min_scale) - 1.0) < 1e-8) {
       continue;
     }
     ASSERT_EQ(got.contact, want.contact) << i;
@@ -264,7 +268,8 @@ TEST(TwistContact, TurningIsNeverLateAndCloseToTheScannedArc) {
   // come within 1e-6 s of the true time.
   EXPECT_GE(within_1e6, contacts * 98 / 100) << "worst " << worst_early;
   EXPECT_LE(claimed_without_scan, 25);
-  RecordProperty("turning_within_1e-6_s", std::to_string(within_1e6) + "/" + std::to_string(contacts));
+  RecordProperty("turning_within_1e-6_s",
+                 std::to_string(within_1e6) + "/" + std::to_string(contacts));
   RecordProperty("turning_worst_early_s", formatNumber(worst_early));
 }
 
@@ -401,9 +406,9 @@ TEST(Gate, ThinObstacleAtTwoMetresPerSecondIsNeverPassedThrough) {
   EXPECT_NEAR(r.limiting.time, 0.494 / 1.0, 1e-6);
   EXPECT_GE(r.contact.time, 1.0);
   // The board moving at 2 m/s against a standing caster: stopping cannot avoid it, it is said.
-  const PathScene moving = sceneOf({link("caster", ellipse(0.0, 0.0, 0.01, 0.01))},
-                                   {obstacle("board", ellipse(1.003, 0.0, 0.005, 0.5))},
-                                   {Motion{{-2.0, 0.0}, 0.0}});
+  const PathScene moving =
+      sceneOf({link("caster", ellipse(0.0, 0.0, 0.01, 0.01))},
+              {obstacle("board", ellipse(1.003, 0.0, 0.005, 0.5))}, {Motion{{-2.0, 0.0}, 0.0}});
   const GateResult hit = gateCommand(moving, {0.0, 0.0, 0.0}, settings(2.0, 1.0, 0.1));
   EXPECT_EQ(hit.action, GateAction::Stop);
   ASSERT_TRUE(hit.contact.found);
@@ -441,8 +446,10 @@ TEST(Gate, RectangularRobotTurningTowardACornerIsSlowedInTime) {
   expectLargestSafeScale(scene, twist, s, r.scale);
   // The robot drawn at the predicted contact touches there.
   ASSERT_TRUE(r.contact.found);
-  const std::vector<NamedEllipse> at = linksAtTime(scene.links, scaled(twist, r.scale), r.contact.time);
-  const auto hit = std::find_if(at.begin(), at.end(), [&](const NamedEllipse& l) { return l.name == r.contact.link; });
+  const std::vector<NamedEllipse> at =
+      linksAtTime(scene.links, scaled(twist, r.scale), r.contact.time);
+  const auto hit = std::find_if(at.begin(), at.end(),
+                                [&](const NamedEllipse& l) { return l.name == r.contact.link; });
   ASSERT_NE(hit, at.end());
   const auto wall = r.contact.obstacle == "wall_x" ? scene.obstacles[0] : scene.obstacles[1];
   EXPECT_LT(distance(hit->ellipse, wall.ellipse).distance, 1e-6);
@@ -452,9 +459,9 @@ TEST(Gate, RobotInContactBacksOutAndTurnsAwayButCannotPushIn) {
   // The base overlaps the wall by 2 cm. Mutations tried: the sign of the witness normal flipped
   // -> pushing in passes and backing out stops; ignoring wz in the rim point's velocity -> the
   // bar's tip turning into the post passes. Both fail.
-  const PathScene scene = sceneOf({link("base", ellipse(0.0, 0.0, 0.3, 0.3)),
-                                   link("arm", ellipse(0.3, 0.6, 0.1, 0.05))},
-                                  {obstacle("wall", ellipse(0.33, -0.02, 0.05, 0.05))});
+  const PathScene scene = sceneOf(
+      {link("base", ellipse(0.0, 0.0, 0.3, 0.3)), link("arm", ellipse(0.3, 0.6, 0.1, 0.05))},
+      {obstacle("wall", ellipse(0.33, -0.02, 0.05, 0.05))});
   const GateSettings s = settings(3.0, 1.5, 0.2, 0.05);
   const GateResult back = gateCommand(scene, {-0.3, 0.0, 0.0}, s);
   EXPECT_EQ(back.action, GateAction::Escape) << back.reason;
@@ -494,10 +501,9 @@ TEST(Gate, CloseButSeparatedPairMayLeaveButMeetsNothingNew) {
   // 3 cm from the wall with a 5 cm margin: backing away passes as an escape; backing into a
   // second obstacle behind is slowed by the contact rule like any other command. Mutations
   // tried: the witness normal's sign flipped; wz ignored at the rim point -> both fail.
-  const PathScene scene = sceneOf(
-      {link("base", ellipse(0.0, 0.0, 0.3, 0.3))},
-      {obstacle("wall", ellipse(0.38, 0.0, 0.05, 1.0)),
-       obstacle("crate", ellipse(-1.055, 0.0, 0.2, 0.2))});
+  const PathScene scene = sceneOf({link("base", ellipse(0.0, 0.0, 0.3, 0.3))},
+                                  {obstacle("wall", ellipse(0.38, 0.0, 0.05, 1.0)),
+                                   obstacle("crate", ellipse(-1.055, 0.0, 0.2, 0.2))});
   const GateSettings s = settings(3.0, 2.0, 0.2, 0.05);
   const GateResult r = gateCommand(scene, {-0.5, 0.0, 0.0}, s);
   EXPECT_EQ(r.action, GateAction::Escape) << r.reason;
@@ -531,19 +537,20 @@ TEST(Gate, RandomScenesNeverLetAContactComeBeforeTimeBeforeCollision) {
     std::vector<NamedEllipse> links, obstacles;
     std::vector<Motion> motions;
     for (int l = 0; l < 3; ++l) {
-      links.push_back(link("l" + std::to_string(l),
-                           ellipse(rng.uniform(-0.4, 0.4), rng.uniform(-0.3, 0.3),
-                                   rng.uniform(0.05, 0.25), rng.uniform(0.05, 0.25),
-                                   rng.uniform(-3.0, 3.0))));
+      links.push_back(
+          link("l" + std::to_string(l),
+               ellipse(rng.uniform(-0.4, 0.4), rng.uniform(-0.3, 0.3), rng.uniform(0.05, 0.25),
+                       rng.uniform(0.05, 0.25), rng.uniform(-3.0, 3.0))));
     }
     for (int o = 0; o < 4; ++o) {
       const double angle = rng.uniform(-3.2, 3.2), range = rng.uniform(1.0, 3.0);
-      obstacles.push_back(obstacle("o" + std::to_string(o),
-                                   ellipse(range * std::cos(angle), range * std::sin(angle),
-                                           rng.uniform(0.02, 0.5), rng.uniform(0.02, 0.5),
-                                           rng.uniform(-3.0, 3.0))));
+      obstacles.push_back(
+          obstacle("o" + std::to_string(o),
+                   ellipse(range * std::cos(angle), range * std::sin(angle), rng.uniform(0.02, 0.5),
+                           rng.uniform(0.02, 0.5), rng.uniform(-3.0, 3.0))));
       Motion m;
-      if (rng.coin(0.3)) m.velocity = Eigen::Vector2d(rng.uniform(-0.5, 0.5), rng.uniform(-0.5, 0.5));
+      if (rng.coin(0.3))
+        m.velocity = Eigen::Vector2d(rng.uniform(-0.5, 0.5), rng.uniform(-0.5, 0.5));
       motions.push_back(m);
     }
     const PathScene scene = sceneOf(links, obstacles, motions);
@@ -553,7 +560,8 @@ TEST(Gate, RandomScenesNeverLetAContactComeBeforeTimeBeforeCollision) {
     ASSERT_TRUE(r.ok()) << r.error;
     if (r.action == GateAction::Escape) continue;  // overlapping at the start
     if (r.scale > 0.0) {
-      const double t = scannedSceneContact(scene, scaled(twist, r.scale), s.time_before_collision, 600);
+      const double t =
+          scannedSceneContact(scene, scaled(twist, r.scale), s.time_before_collision, 600);
       EXPECT_LT(t, 0.0) << i << ": contact at " << t << " under " << r.scale << ", " << r.reason;
     }
     if (r.action == GateAction::Slow) ++slowed;
@@ -573,7 +581,8 @@ TEST(Gate, AllowedPairsAndFarObstaclesAreNotLookedAt) {
   far.obstacles.clear();
   far.obstacle_motions.clear();
   for (int i = 0; i < 10000; ++i) {
-    far.obstacles.push_back(obstacle("far" + std::to_string(i), ellipse(50.0 + i % 100, 50.0 + i / 100, 0.3, 0.2)));
+    far.obstacles.push_back(
+        obstacle("far" + std::to_string(i), ellipse(50.0 + i % 100, 50.0 + i / 100, 0.3, 0.2)));
     far.obstacle_motions.push_back({});
   }
   far.obstacles.push_back(obstacle("near", ellipse(2.05, 0.0, 0.05, 3.0)));
@@ -603,7 +612,8 @@ TEST(Gate, InvalidInputsStopWithTheFieldAndValue) {
     return r.error;
   };
   EXPECT_EQ(error(scene, {1.0, 0.0, 0.0}, settings(3.0, 1.5, 0.2)), "");
-  EXPECT_EQ(error(scene, {NAN, 0.0, 0.0}, settings(3.0, 1.5, 0.2)), "twist.vx = nan must be finite");
+  EXPECT_EQ(error(scene, {NAN, 0.0, 0.0}, settings(3.0, 1.5, 0.2)),
+            "twist.vx = nan must be finite");
   EXPECT_EQ(error(scene, {1.0, 0.0, 0.0}, settings(3.0, 1.5, 2.0)),
             "settings: stop_time = 2 must be <= time_before_collision = 1.5");
   EXPECT_EQ(error(scene, {1.0, 0.0, 0.0}, settings(1.0, 1.5, 0.2)),
