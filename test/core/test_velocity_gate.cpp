@@ -197,7 +197,8 @@ RandomPair randomPair(ellipse_collision::test::RandomSource& rng, bool turning,
                                          : rng.logUniform(1e-12, 1e-4);
     p.twist.wz = rng.coin() ? magnitude : -magnitude;
   }
-  const double angle = rng.uniform(-3.2, 3.2), range = rng.uniform(0.5, 4.0);
+  // Mostly ahead of the motion, so that about half the pairs meet.
+  const double angle = heading + rng.uniform(-1.2, 1.2), range = rng.uniform(0.5, 4.0);
   p.obstacle = ellipse(range * std::cos(angle), range * std::sin(angle), rng.logUniform(0.01, 1.0),
                        rng.logUniform(0.01, 1.0), rng.uniform(-3.0, 3.0));
   if (obstacle_moves) {
