@@ -12,6 +12,7 @@
 #include <random>
 #include <vector>
 
+#include "bench_scenes.h"
 #include "ellipse_collision/core/path_check.h"
 
 namespace ellipse_collision::core::bench {
@@ -27,22 +28,13 @@ struct Problem {
   std::vector<PathPose> poses;
 };
 
-// Links: a 0.8 x 0.5 m base of 20 ellipses (wheels, bumper, arm segments) within 0.5 m of the
-// frame's origin. Path: along x with a gentle weave (yaw follows the heading), 1 s per 1 m.
-// Obstacles: along both sides of the corridor, 1.2 to 4 m from its centre line.
+// Links: ringBase(), 20 of them. Path: along x with a gentle weave (yaw follows the heading), 1 s
+// per 1 m. Obstacles: along both sides of the corridor, 1.2 to 4 m from its centre line.
 Problem makeProblem(bool blocked, bool moving) {
   std::mt19937 rng(14);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   Problem p;
-  for (int i = 0; i < kLinks; ++i) {
-    Ellipse e;
-    const double a = 2.0 * M_PI * i / kLinks;
-    e.center = {0.35 * std::cos(a), 0.2 * std::sin(a)};
-    e.radius_x = 0.08 + 0.05 * u(rng);
-    e.radius_y = 0.03 + 0.02 * u(rng);
-    e.angle = a;
-    p.scene.links.push_back({"link" + std::to_string(i), EllipseRole::Link, e});
-  }
+  p.scene.links = ringBase(kLinks, rng);
   const auto centreLine = [](double x) { return 0.3 * std::sin(x / 15.0); };
   for (int k = 0; k < kPoses; ++k) {
     const double x = k * kSpacing;

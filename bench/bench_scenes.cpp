@@ -139,4 +139,19 @@ int misclassified(const PairMix& mix, const std::vector<bool>& verdicts) {
   return wrong;
 }
 
+std::vector<NamedEllipse> ringBase(int links, std::mt19937& rng) {
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<NamedEllipse> base;
+  for (int i = 0; i < links; ++i) {
+    Ellipse e;
+    const double a = 2.0 * M_PI * i / links;
+    e.center = {0.35 * std::cos(a), 0.2 * std::sin(a)};
+    e.radius_x = 0.08 + 0.05 * u(rng);
+    e.radius_y = 0.03 + 0.02 * u(rng);
+    e.angle = a;
+    base.push_back({"link" + std::to_string(i), EllipseRole::Link, e});
+  }
+  return base;
+}
+
 }  // namespace ellipse_collision::core::bench

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "ellipse_collision/core/ellipse.h"
+#include "ellipse_collision/core/scene.h"
 
 namespace ellipse_collision::core::bench {
 
@@ -37,6 +38,11 @@ struct RobotScene {
 };
 
 RobotScene robotScene(int links, int obstacles, double world_size, std::uint64_t seed);
+
+/// A 0.8 x 0.5 m base of `links` ellipses (wheels, bumper, arm segments) on a ring within 0.5 m of
+/// the frame's origin, named link0, link1, ..., sizes drawn from `rng` (the path and gate
+/// benchmarks' robot).
+std::vector<NamedEllipse> ringBase(int links, std::mt19937& rng);
 
 /// Stored pairs, as indices into the stored ellipses (so that a method may prepare each ellipse
 /// once, as a scene check would), and the oracle's verdicts, computed once before any timing.

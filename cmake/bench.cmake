@@ -59,3 +59,6 @@ ellipse_collision_add_benchmark(bench_check_path bench/bench_check_path.cpp)
 # node's own work per ~check_collisions call without ROS, beside the core check alone.
 ellipse_collision_add_benchmark(bench_run_check bench/bench_run_check.cpp
   LIBRARIES ellipse_collision_app)
+
+# The velocity gate for one command of a 20-link base among 1,000 to 100,000 obstacles.
+ellipse_collision_add_benchmark(bench_velocity_gate bench/bench_velocity_gate.cpp)

@@ -22,3 +22,4 @@
 #include "ellipse_collision/core/scene_check.h"
 #include "ellipse_collision/core/shape_outline.h"
 #include "ellipse_collision/core/unique_names.h"
+#include "ellipse_collision/core/velocity_gate.h"

@@ -187,7 +187,8 @@ std::string pathReason(const Ellipse& e, const Motion& m, double horizon) {
 
 }  // namespace
 
-std::string invalidVelocityReason(const Motion& m, double horizon, const VelocityFieldNames& names) {
+std::string invalidVelocityReason(const Motion& m, double horizon,
+                                  const VelocityFieldNames& names) {
   const char* const components[2] = {names.x, names.y};
   for (int i = 0; i < 2; ++i) {
     const double v = m.velocity[i];
@@ -220,8 +221,12 @@ std::string invalidMotionReason(const Ellipse& a, const Motion& motion_a, const 
   if (std::string r = invalidReason(b); !r.empty()) return "ellipse 2: " + r;
   if (!std::isfinite(horizon)) return "horizon = " + formatNumber(horizon) + " must be finite";
   if (horizon < 0.0) return "horizon = " + formatNumber(horizon) + " must be >= 0";
-  if (std::string r = invalidVelocityReason(motion_a, horizon); !r.empty()) return "motion 1: " + r;
-  if (std::string r = invalidVelocityReason(motion_b, horizon); !r.empty()) return "motion 2: " + r;
+  if (std::string r = invalidVelocityReason(motion_a, horizon); !r.empty()) {
+    return "motion 1: " + r;
+  }
+  if (std::string r = invalidVelocityReason(motion_b, horizon); !r.empty()) {
+    return "motion 2: " + r;
+  }
   if (std::string r = pathReason(a, motion_a, horizon); !r.empty()) return "motion 1: " + r;
   if (std::string r = pathReason(b, motion_b, horizon); !r.empty()) return "motion 2: " + r;
   return {};

@@ -7,12 +7,12 @@
 #include <limits>
 #include <utility>
 
+#include "conservative_advancement.h"
 #include "ellipse_collision/core/distance.h"
 #include "ellipse_collision/core/eigenvalue_test.h"
 #include "ellipse_collision/core/number_format.h"
 #include "ellipse_collision/core/overlap.h"
 #include "ellipse_collision/core/unique_names.h"
-#include "conservative_advancement.h"
 
 namespace ellipse_collision::core {
 namespace {
@@ -118,16 +118,19 @@ double widened(double bound, double coordinate) {
 }
 
 std::string settingsReason(const GateSettings& s) {
-  const std::pair<const char*, double> fields[] = {{"horizon", s.horizon},
-                                                   {"time_before_collision", s.time_before_collision},
-                                                   {"stop_time", s.stop_time},
-                                                   {"margin", s.margin},
-                                                   {"resolution", s.resolution}};
+  const std::pair<const char*, double> fields[] = {
+      {"horizon", s.horizon},
+      {"time_before_collision", s.time_before_collision},
+      {"stop_time", s.stop_time},
+      {"margin", s.margin},
+      {"resolution", s.resolution}};
   for (const auto& [name, value] : fields) {
-    if (!std::isfinite(value)) return std::string(name) + " = " + formatNumber(value) + " must be finite";
+    if (!std::isfinite(value))
+      return std::string(name) + " = " + formatNumber(value) + " must be finite";
   }
   const auto order = [](const char* a, double va, const char* b, double vb) {
-    return std::string(a) + " = " + formatNumber(va) + " must be <= " + b + " = " + formatNumber(vb);
+    return std::string(a) + " = " + formatNumber(va) + " must be <= " + b + " = " +
+           formatNumber(vb);
   };
   if (!(s.horizon > 0.0)) return "horizon = " + formatNumber(s.horizon) + " must be > 0";
   if (s.stop_time < 0.0) return "stop_time = " + formatNumber(s.stop_time) + " must be >= 0";
@@ -138,8 +141,8 @@ std::string settingsReason(const GateSettings& s) {
     return order("time_before_collision", s.time_before_collision, "horizon", s.horizon);
   }
   if (!(s.margin >= 0.0 && s.margin <= kMaxCoordinate)) {
-    return "margin = " + formatNumber(s.margin) + " is outside [0, " + formatNumber(kMaxCoordinate) +
-           "] m";
+    return "margin = " + formatNumber(s.margin) + " is outside [0, " +
+           formatNumber(kMaxCoordinate) + "] m";
   }
   if (!(s.resolution > 0.0 && s.resolution <= 1.0)) {
     return "resolution = " + formatNumber(s.resolution) + " is outside (0, 1]";
@@ -150,8 +153,9 @@ std::string settingsReason(const GateSettings& s) {
 std::string linkReachReason(const Ellipse& link, const Twist& twist, double horizon) {
   const double reach = link.center.norm() + boundingRadius(link) + linear(twist).norm() * horizon;
   if (!(reach <= kMaxCoordinate)) {
-    return "reaches " + formatNumber(reach) + " m from the origin within horizon = " +
-           formatNumber(horizon) + " s, beyond " + formatNumber(kMaxCoordinate) + " m";
+    return "reaches " + formatNumber(reach) +
+           " m from the origin within horizon = " + formatNumber(horizon) + " s, beyond " +
+           formatNumber(kMaxCoordinate) + " m";
   }
   return {};
 }
@@ -230,8 +234,8 @@ class Gate {
         const std::string& link = scene_.links[c.link].name;
         const std::string& best_link = scene_.links[best.link].name;
         if (link > best_link) return;
-        if (link == best_link && scene_.obstacles[c.obstacle].name >=
-                                     scene_.obstacles[best.obstacle].name) {
+        if (link == best_link &&
+            scene_.obstacles[c.obstacle].name >= scene_.obstacles[best.obstacle].name) {
           return;
         }
       }
@@ -310,8 +314,8 @@ void Gate::measureClearance(std::vector<ClosePair>& close) {
     const Ellipse& obstacle = scene_.obstacles[c.obstacle].ellipse;
     // The bounding circles' gap is a lower bound of the distance: a pair neither close nor nearer
     // than the best so far needs no distance() call (with a margin for rounding).
-    const double gap = (obstacle.center - link.center).norm() - boundingRadius(link) -
-                       boundingRadius(obstacle);
+    const double gap =
+        (obstacle.center - link.center).norm() - boundingRadius(link) - boundingRadius(obstacle);
     const double slack = 1e-9 * (boundingRadius(link) + boundingRadius(obstacle));
     if (gap - slack >= settings_.margin && gap - slack > best) continue;
     ++result_.pair_tests;
@@ -354,8 +358,7 @@ bool Gate::pushesIn(const std::vector<ClosePair>& close) {
                      result_.limiting.link + "' " +
                      (c.overlapping ? std::string("overlaps it")
                                     : "is " + readable(now.distance) + " m from it") +
-                     (touch.found ? " and the command closes in at " + readable(closing) +
-                                        " m/s"
+                     (touch.found ? " and the command closes in at " + readable(closing) + " m/s"
                                   : " with no direction to judge the command by");
     return true;
   }
@@ -456,15 +459,15 @@ void Gate::contactRule(bool escaping) {
     text = "moves every close pair apart (nearest: link '" + result_.clearance_link + "' " +
            readable(result_.clearance) + " m from '" + result_.clearance_obstacle + "'); ";
   }
-  const std::string first =
-      full.found ? "contact of " + pairText(describe(full, 1.0)) + " in " +
-                       readable(full.time) + " s under the full command"
-                 : "no contact within horizon " + formatNumber(horizon) + " s under the full command";
+  const std::string first = full.found ? "contact of " + pairText(describe(full, 1.0)) + " in " +
+                                             readable(full.time) + " s under the full command"
+                                       : "no contact within horizon " + formatNumber(horizon) +
+                                             " s under the full command";
   if (k == 1.0) {
     result_.action = escaping ? GateAction::Escape : GateAction::Pass;
-    text += first + (full.found ? ", no sooner than time_before_collision " +
-                                      formatNumber(before) + " s"
-                                : std::string());
+    text += first + (full.found
+                         ? ", no sooner than time_before_collision " + formatNumber(before) + " s"
+                         : std::string());
   } else if (k > 0.0) {
     result_.action = escaping ? GateAction::Escape : GateAction::Slow;
     text += first + "; slowed to " + readable(k) + " so that ";
@@ -503,7 +506,7 @@ Twist scaled(const Twist& twist, double k) { return {k * twist.vx, k * twist.vy,
 
 PathPose poseAfter(const Twist& twist, double t) {
   const double turn = twist.wz * t;
-  const double along = t * sinc(turn);                                  // sin(wz t) / wz
+  const double along = t * sinc(turn);                                // sin(wz t) / wz
   const double across = t * std::sin(0.5 * turn) * sinc(0.5 * turn);  // (1 - cos(wz t)) / wz
   return {along * twist.vx - across * twist.vy, across * twist.vx + along * twist.vy, turn, t};
 }
@@ -517,7 +520,8 @@ std::vector<NamedEllipse> linksAtTime(const std::vector<NamedEllipse>& links, co
                                       double t) {
   const PathPose pose = poseAfter(twist, t);
   std::vector<NamedEllipse> placed = links;
-  for (NamedEllipse& link : placed) link.ellipse = placeAt(link.ellipse, {pose.x, pose.y}, pose.yaw);
+  for (NamedEllipse& link : placed)
+    link.ellipse = placeAt(link.ellipse, {pose.x, pose.y}, pose.yaw);
   return placed;
 }
 
@@ -585,12 +589,9 @@ const char* toString(GateAction action) {
 std::string invalidGateReason(const PathScene& scene, const Twist& twist,
                               const GateSettings& settings) {
   if (std::string r = cheapGateReason(scene, twist, settings); !r.empty()) return r;
-  const auto names = [](const std::vector<NamedEllipse>& entries, const char* role)
-      -> std::string {
-    const auto problem =
-        findNameProblem(entries.size(), [&](std::size_t i) -> const std::string& {
-          return entries[i].name;
-        });
+  const auto names = [](const std::vector<NamedEllipse>& entries, const char* role) -> std::string {
+    const auto problem = findNameProblem(
+        entries.size(), [&](std::size_t i) -> const std::string& { return entries[i].name; });
     if (!problem) return {};
     if (problem->kind == NameProblem::Kind::Empty) {
       return std::string(role) + " " + std::to_string(problem->index) + ": empty name";
@@ -602,8 +603,8 @@ std::string invalidGateReason(const PathScene& scene, const Twist& twist,
   if (std::string r = names(scene.links, "link"); !r.empty()) return r;
   if (std::string r = names(scene.obstacles, "obstacle"); !r.empty()) return r;
   for (std::size_t o = 0; o < scene.obstacles.size(); ++o) {
-    if (std::string r = obstacleReason(scene.obstacles[o], scene.obstacle_motions[o],
-                                       settings.horizon);
+    if (std::string r =
+            obstacleReason(scene.obstacles[o], scene.obstacle_motions[o], settings.horizon);
         !r.empty()) {
       return r;
     }

@@ -9,18 +9,12 @@
 #include <random>
 
 #include "ellipse_collision/core/ellipse_polygon.h"
+#include "scene_test_helpers.h"
 
 namespace ellipse_collision::core {
 namespace {
 
-Ellipse makeEllipse(double x, double y, double rx, double ry, double angle) {
-  Ellipse e;
-  e.center = Eigen::Vector2d(x, y);
-  e.radius_x = rx;
-  e.radius_y = ry;
-  e.angle = angle;
-  return e;
-}
+using scene_test::ellipse;
 
 /// The ellipse's implicit form at p: 1 on the rim (computed through the inverse rotation, not the
 /// parameterisation the code uses).
@@ -64,7 +58,7 @@ double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
 }
 
 TEST(EllipsePolygon, VerticesLieOnTheRimCounterClockwiseFromTheEllipsesOwnXAxis) {
-  const Ellipse e = makeEllipse(3.0, -2.0, 0.7, 0.2, 0.9);
+  const Ellipse e = ellipse(3.0, -2.0, 0.7, 0.2, 0.9);
   const std::vector<Eigen::Vector2d> polygon = ellipsePolygon(e, 20);
   ASSERT_EQ(polygon.size(), 20u);
   for (const Eigen::Vector2d& p : polygon) EXPECT_NEAR(implicitForm(e, p), 1.0, 1e-12);
@@ -79,7 +73,7 @@ TEST(EllipsePolygon, VerticesLieOnTheRimCounterClockwiseFromTheEllipsesOwnXAxis)
 
 TEST(EllipsePolygon, EveryCountGivesTheSameBitsAsEvaluatingTheRimDirectly) {
   // The counts the markers use come from tables computed once; any other count is evaluated.
-  const Ellipse e = makeEllipse(-1.5, 4.25, 0.31, 0.07, -2.2);
+  const Ellipse e = ellipse(-1.5, 4.25, 0.31, 0.07, -2.2);
   const double c = std::cos(e.angle), s = std::sin(e.angle);
   for (const int n : {3, 4, 16, 37, 50, 64, 65, 200}) {
     const std::vector<Eigen::Vector2d> polygon = ellipsePolygon(e, n);
@@ -98,20 +92,19 @@ TEST(EllipsePolygon, SegmentCountIsTheSmallestWithinTheGapBetweenItsBounds) {
   for (const double r : {0.01, 0.1, 0.2, 0.5, 1.0, 1.5, 3.0, 100.0}) {
     const int closed_form = static_cast<int>(std::ceil(M_PI / std::acos(1.0 - kMaxDrawGap / r)));
     const int expected = std::clamp(closed_form, kMinDrawSegments, kMaxDrawSegments);
-    EXPECT_EQ(drawSegments(makeEllipse(0, 0, r, r, 0)), expected) << "r = " << r;
+    EXPECT_EQ(drawSegments(ellipse(0, 0, r, r, 0)), expected) << "r = " << r;
   }
-  EXPECT_EQ(drawSegments(makeEllipse(0, 0, 0.1, 0.1, 0)), 16);
-  EXPECT_EQ(drawSegments(makeEllipse(0, 0, 1.0, 1.0, 0)), 50);
-  EXPECT_EQ(drawSegments(makeEllipse(0, 0, 100.0, 100.0, 0)), 64);
+  EXPECT_EQ(drawSegments(ellipse(0, 0, 0.1, 0.1, 0)), 16);
+  EXPECT_EQ(drawSegments(ellipse(0, 0, 1.0, 1.0, 0)), 50);
+  EXPECT_EQ(drawSegments(ellipse(0, 0, 100.0, 100.0, 0)), 64);
   // The larger radius decides, whichever axis it is on.
-  EXPECT_EQ(drawSegments(makeEllipse(0, 0, 1.0, 0.01, 0)),
-            drawSegments(makeEllipse(0, 0, 0.01, 1.0, 2)));
+  EXPECT_EQ(drawSegments(ellipse(0, 0, 1.0, 0.01, 0)), drawSegments(ellipse(0, 0, 0.01, 1.0, 2)));
 }
 
 TEST(EllipsePolygon, DrawnRimStaysWithinTheDocumentedGapOfTheTrueRim) {
-  for (const Ellipse& e : {makeEllipse(0, 0, 0.1, 0.1, 0), makeEllipse(1, 2, 0.3, 0.2, M_PI / 2),
-                           makeEllipse(-4, 7, 1.0, 0.05, 0.3), makeEllipse(0, 0, 2.5, 2.0, -1.0),
-                           makeEllipse(10, 10, 50.0, 1.0, 0.1)}) {
+  for (const Ellipse& e : {ellipse(0, 0, 0.1, 0.1, 0), ellipse(1, 2, 0.3, 0.2, M_PI / 2),
+                           ellipse(-4, 7, 1.0, 0.05, 0.3), ellipse(0, 0, 2.5, 2.0, -1.0),
+                           ellipse(10, 10, 50.0, 1.0, 0.1)}) {
     const int n = drawSegments(e);
     const double bound = std::max(e.radius_x, e.radius_y) * (1.0 - std::cos(M_PI / n));
     const double gap = largestGap(e, ellipsePolygon(e, n));
@@ -121,13 +114,13 @@ TEST(EllipsePolygon, DrawnRimStaysWithinTheDocumentedGapOfTheTrueRim) {
     }
   }
   // For a circle the bound is attained at the middle of each chord.
-  const Ellipse circle = makeEllipse(0, 0, 1.0, 1.0, 0);
+  const Ellipse circle = ellipse(0, 0, 1.0, 1.0, 0);
   const int n = drawSegments(circle);
   EXPECT_NEAR(largestGap(circle, ellipsePolygon(circle, n)), 1.0 - std::cos(M_PI / n), 1e-7);
 }
 
 TEST(EllipsePolygon, TriangleFanCoversTheAffineRegularPolygonCounterClockwise) {
-  const Ellipse e = makeEllipse(1.0, 2.0, 0.3, 0.2, M_PI / 2);
+  const Ellipse e = ellipse(1.0, 2.0, 0.3, 0.2, M_PI / 2);
   std::vector<Eigen::Vector2d> triangles;
   forEachTrianglePoint(e, [&triangles](const Eigen::Vector2d& p) { triangles.push_back(p); });
   const int n = drawSegments(e);
@@ -151,8 +144,8 @@ TEST(EllipsePolygon, TheMarkersAllocationFreePathGivesTheSameBitsAsThePolygon) {
   for (int trial = 0; trial < 2000; ++trial) {
     // Radii from 1e-4 to 1e3 m: every segment count from 16 to 64 is met.
     const double a = std::pow(10.0, -4.0 + 7.0 * unit(rng));
-    const Ellipse e = makeEllipse(1e3 * (unit(rng) - 0.5), 1e3 * (unit(rng) - 0.5), a,
-                                  a * (0.01 + unit(rng)), 2 * M_PI * unit(rng));
+    const Ellipse e = ellipse(1e3 * (unit(rng) - 0.5), 1e3 * (unit(rng) - 0.5), a,
+                              a * (0.01 + unit(rng)), 2 * M_PI * unit(rng));
     const int n = drawSegments(e);
     std::array<Eigen::Vector2d, kMaxDrawSegments> into;
     ASSERT_EQ(drawnPolygonInto(e, into.data()), n);

@@ -7,18 +7,12 @@
 #include <random>
 
 #include "ellipse_collision/core/frame_projection.h"
+#include "scene_test_helpers.h"
 
 namespace ellipse_collision::core {
 namespace {
 
-Ellipse makeEllipse(double x, double y, double radius_x, double radius_y, double angle) {
-  Ellipse e;
-  e.center = Eigen::Vector2d(x, y);
-  e.radius_x = radius_x;
-  e.radius_y = radius_y;
-  e.angle = angle;
-  return e;
-}
+using scene_test::ellipse;
 
 Eigen::Isometry3d pose(const Eigen::Vector3d& translation, const Eigen::Matrix3d& rotation) {
   Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
@@ -62,7 +56,7 @@ Eigen::Vector2d preimage(const Eigen::Isometry3d& fixed_from_frame, const Eigen:
 }
 
 TEST(FrameProjection, IdentityTransformKeepsTheEllipse) {
-  const Ellipse in = makeEllipse(1.5, -2.0, 0.7, 0.3, 0.4);
+  const Ellipse in = ellipse(1.5, -2.0, 0.7, 0.3, 0.4);
   const ProjectionResult out = projectToPlane(in, Eigen::Isometry3d::Identity(), "plate");
   ASSERT_TRUE(out.ok()) << out.error;
   EXPECT_NEAR(out.ellipse.center.x(), 1.5, 1e-15);
@@ -75,7 +69,7 @@ TEST(FrameProjection, IdentityTransformKeepsTheEllipse) {
 TEST(FrameProjection, CircleInFrameTiltedSixtyDegreesAboutXBecomesHalfAsTall) {
   // Frame at (3, -1, 0.7) rotated 60 deg about x: its y axis becomes (0, cos 60, sin 60).
   // Centre (1, 2, 0) -> (1, 2 cos 60, 2 sin 60) + t = (4, 0, ...). Radius along y: 0.4 cos 60.
-  const Ellipse circle = makeEllipse(1.0, 2.0, 0.4, 0.4, 0.0);
+  const Ellipse circle = ellipse(1.0, 2.0, 0.4, 0.4, 0.0);
   const ProjectionResult out =
       projectToPlane(circle, pose({3.0, -1.0, 0.7}, aboutX(M_PI / 3)), "disc");
   ASSERT_TRUE(out.ok()) << out.error;
@@ -89,7 +83,7 @@ TEST(FrameProjection, CircleInFrameTiltedSixtyDegreesAboutXBecomesHalfAsTall) {
 TEST(FrameProjection, EllipseInYawedAndTiltedFrameTurnsWithTheYaw) {
   // R = Rz(90 deg) Rx(60 deg): the tilt halves the ellipse's y radius (0.3 -> 0.15), the yaw
   // then turns its x axis (radius 0.5) onto the fixed y axis, so the angle is pi/2.
-  const Ellipse in = makeEllipse(0.0, 0.0, 0.5, 0.3, 0.0);
+  const Ellipse in = ellipse(0.0, 0.0, 0.5, 0.3, 0.0);
   const ProjectionResult out =
       projectToPlane(in, pose({0.2, 0.1, 0.0}, aboutZ(M_PI / 2) * aboutX(M_PI / 3)), "gripper");
   ASSERT_TRUE(out.ok()) << out.error;
@@ -104,7 +98,7 @@ TEST(FrameProjection, TiltThatMakesTheMinorAxisMajorSwapsTheAxes) {
   // Ellipse 0.5 x 0.3 in a frame rotated 60 deg about y: the frame's x axis projects to length
   // cos 60, so the x radius shrinks to 0.25, below the untouched y radius 0.3. The projection is
   // 0.3 along fixed y (major) and 0.25 along fixed x (minor): angle pi/2.
-  const Ellipse in = makeEllipse(0.0, 0.0, 0.5, 0.3, 0.0);
+  const Ellipse in = ellipse(0.0, 0.0, 0.5, 0.3, 0.0);
   const Eigen::Matrix3d about_y = Eigen::AngleAxisd(M_PI / 3, Eigen::Vector3d::UnitY()).matrix();
   const ProjectionResult out = projectToPlane(in, pose({0.0, 0.0, 0.0}, about_y), "forearm");
   ASSERT_TRUE(out.ok()) << out.error;
@@ -115,7 +109,7 @@ TEST(FrameProjection, TiltThatMakesTheMinorAxisMajorSwapsTheAxes) {
 
 TEST(FrameProjection, UpsideDownFrameMirrorsTheAngle) {
   // Half turn about x maps (x, y) to (x, -y): the centre's y and the angle change sign.
-  const Ellipse in = makeEllipse(1.0, 0.5, 0.6, 0.2, M_PI / 6);
+  const Ellipse in = ellipse(1.0, 0.5, 0.6, 0.2, M_PI / 6);
   const ProjectionResult out = projectToPlane(in, pose({0.0, 0.0, 2.0}, aboutX(M_PI)), "flipped");
   ASSERT_TRUE(out.ok()) << out.error;
   EXPECT_NEAR(out.ellipse.center.x(), 1.0, 1e-15);
@@ -126,7 +120,7 @@ TEST(FrameProjection, UpsideDownFrameMirrorsTheAngle) {
 }
 
 TEST(FrameProjection, HeightOfTheFrameDoesNotMatter) {
-  const Ellipse in = makeEllipse(0.3, 0.1, 0.6, 0.2, 1.0);
+  const Ellipse in = ellipse(0.3, 0.1, 0.6, 0.2, 1.0);
   const Eigen::Matrix3d r = aboutZ(0.3) * aboutX(0.5);
   const ProjectionResult low = projectToPlane(in, pose({1.0, 2.0, -5.0}, r), "a");
   const ProjectionResult high = projectToPlane(in, pose({1.0, 2.0, 7.5}, r), "a");
@@ -151,7 +145,7 @@ TEST(FrameProjection, RandomPosesProjectRimPointsOntoTheReturnedEllipse) {
     const Eigen::Isometry3d t =
         pose(3.0 * Eigen::Vector3d(unit(rng), unit(rng), unit(rng)), rotation);
     const Ellipse in =
-        makeEllipse(2 * unit(rng), 2 * unit(rng), radius(rng), radius(rng), 4 * unit(rng));
+        ellipse(2 * unit(rng), 2 * unit(rng), radius(rng), radius(rng), 4 * unit(rng));
     const ProjectionResult out = projectToPlane(in, t, "random");
     ASSERT_TRUE(out.ok()) << out.error;
     ++checked;
@@ -188,7 +182,7 @@ TEST(FrameProjection, RadiiMatchEigenSingularValues) {
                                          .toRotationMatrix();
     if (std::abs(rotation(2, 2)) < 0.05) continue;
     const Ellipse in =
-        makeEllipse(0.0, 0.0, 0.1 + std::abs(unit(rng)), 0.1 + std::abs(unit(rng)), 3 * unit(rng));
+        ellipse(0.0, 0.0, 0.1 + std::abs(unit(rng)), 0.1 + std::abs(unit(rng)), 3 * unit(rng));
     const ProjectionResult out = projectToPlane(in, pose(Eigen::Vector3d::Zero(), rotation), "svd");
     ASSERT_TRUE(out.ok()) << out.error;
     const Eigen::Matrix2d a = rotation.topLeftCorner<2, 2>() *
@@ -208,14 +202,14 @@ TEST(FrameProjection, NearlyEdgeOnFrameStillGivesAnAccurateThinEllipse) {
   // Tilt with cos = 1e-5, well above the edge-on threshold: radius_y = 0.4 * 1e-5.
   const double tilt = std::acos(1e-5);
   const ProjectionResult out =
-      projectToPlane(makeEllipse(0.0, 0.0, 0.4, 0.4, 0.0), pose({0, 0, 0}, aboutX(tilt)), "thin");
+      projectToPlane(ellipse(0.0, 0.0, 0.4, 0.4, 0.0), pose({0, 0, 0}, aboutX(tilt)), "thin");
   ASSERT_TRUE(out.ok()) << out.error;
   EXPECT_NEAR(out.ellipse.radius_x, 0.4, 1e-15);
   EXPECT_NEAR(out.ellipse.radius_y / (0.4 * std::cos(tilt)), 1.0, 1e-9);
 }
 
 TEST(FrameProjection, EdgeOnFrameIsAnErrorNamingTheEllipse) {
-  const ProjectionResult out = projectToPlane(makeEllipse(0.0, 0.0, 0.4, 0.2, 0.3),
+  const ProjectionResult out = projectToPlane(ellipse(0.0, 0.0, 0.4, 0.2, 0.3),
                                               pose({0, 0, 0}, aboutX(M_PI / 2)), "wing");
   ASSERT_FALSE(out.ok());
   EXPECT_NE(out.error.find("'wing'"), std::string::npos) << out.error;
@@ -224,7 +218,7 @@ TEST(FrameProjection, EdgeOnFrameIsAnErrorNamingTheEllipse) {
 
 TEST(FrameProjection, TiltJustPastTheThresholdIsRefused) {
   // A circle thinned to 1e-7 of its radius is below kMinProjectedThinning = 1e-6.
-  const ProjectionResult out = projectToPlane(makeEllipse(0.0, 0.0, 0.4, 0.4, 0.0),
+  const ProjectionResult out = projectToPlane(ellipse(0.0, 0.0, 0.4, 0.4, 0.0),
                                               pose({0, 0, 0}, aboutX(std::acos(1e-7))), "sliver");
   EXPECT_FALSE(out.ok());
   EXPECT_NE(out.error.find("'sliver'"), std::string::npos) << out.error;
@@ -232,7 +226,7 @@ TEST(FrameProjection, TiltJustPastTheThresholdIsRefused) {
 
 TEST(FrameProjection, InvalidEllipseIsAnErrorNamingEllipseAndField) {
   const ProjectionResult out =
-      projectToPlane(makeEllipse(0.0, 0.0, -1.0, 0.2, 0.0), Eigen::Isometry3d::Identity(), "bad");
+      projectToPlane(ellipse(0.0, 0.0, -1.0, 0.2, 0.0), Eigen::Isometry3d::Identity(), "bad");
   ASSERT_FALSE(out.ok());
   EXPECT_NE(out.error.find("'bad'"), std::string::npos) << out.error;
   EXPECT_NE(out.error.find("radius_x"), std::string::npos) << out.error;
@@ -240,7 +234,7 @@ TEST(FrameProjection, InvalidEllipseIsAnErrorNamingEllipseAndField) {
 
 TEST(FrameProjection, ProjectionThinnedBelowTheSmallestRadiusIsAnError) {
   // 2e-9 m tilted 70 deg: 2e-9 cos 70 = 6.8e-10 m < kMinRadius, though far from edge-on.
-  const ProjectionResult out = projectToPlane(makeEllipse(0.0, 0.0, 0.5, 2e-9, 0.0),
+  const ProjectionResult out = projectToPlane(ellipse(0.0, 0.0, 0.5, 2e-9, 0.0),
                                               pose({0, 0, 0}, aboutX(70 * M_PI / 180)), "hair");
   ASSERT_FALSE(out.ok());
   EXPECT_NE(out.error.find("'hair'"), std::string::npos) << out.error;
@@ -249,7 +243,7 @@ TEST(FrameProjection, ProjectionThinnedBelowTheSmallestRadiusIsAnError) {
 
 TEST(FrameProjection, ProjectionMovedBeyondTheLargestCoordinateIsAnError) {
   const ProjectionResult out =
-      projectToPlane(makeEllipse(0.9e9, 0.0, 1.0, 1.0, 0.0),
+      projectToPlane(ellipse(0.9e9, 0.0, 1.0, 1.0, 0.0),
                      pose({0.2e9, 0, 0}, Eigen::Matrix3d::Identity()), "far");
   ASSERT_FALSE(out.ok());
   EXPECT_NE(out.error.find("center.x"), std::string::npos) << out.error;
@@ -257,7 +251,7 @@ TEST(FrameProjection, ProjectionMovedBeyondTheLargestCoordinateIsAnError) {
 
 TEST(FrameProjection, LargestRadiiProjectWithoutOverflow) {
   const ProjectionResult out =
-      projectToPlane(makeEllipse(0.0, 0.0, kMaxRadius, 0.8 * kMaxRadius, 0.0),
+      projectToPlane(ellipse(0.0, 0.0, kMaxRadius, 0.8 * kMaxRadius, 0.0),
                      pose({0, 0, 0}, aboutX(M_PI / 3)), "large");
   ASSERT_TRUE(out.ok()) << out.error;
   EXPECT_NEAR(out.ellipse.radius_x / kMaxRadius, 1.0, 1e-15);
@@ -267,7 +261,7 @@ TEST(FrameProjection, LargestRadiiProjectWithoutOverflow) {
 TEST(FrameProjection, NonFiniteTransformIsAnError) {
   Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
   t.translation().x() = std::numeric_limits<double>::quiet_NaN();
-  const ProjectionResult out = projectToPlane(makeEllipse(0.0, 0.0, 1.0, 1.0, 0.0), t, "lost");
+  const ProjectionResult out = projectToPlane(ellipse(0.0, 0.0, 1.0, 1.0, 0.0), t, "lost");
   ASSERT_FALSE(out.ok());
   EXPECT_NE(out.error.find("'lost'"), std::string::npos) << out.error;
 }

@@ -9,20 +9,14 @@
 #include "ellipse_collision/core/overlap.h"
 #include "ellipse_collision/core/path_check.h"
 #include "first_contact_oracle.h"
+#include "scene_test_helpers.h"
 
 namespace ellipse_collision::core {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-Ellipse ellipse(double x, double y, double rx, double ry, double angle = 0.0) {
-  Ellipse e;
-  e.center = {x, y};
-  e.radius_x = rx;
-  e.radius_y = ry;
-  e.angle = angle;
-  return e;
-}
+using scene_test::ellipse;
 
 NamedEllipse named(const std::string& name, EllipseRole role, const Ellipse& e) {
   return NamedEllipse{name, role, e};

@@ -12,16 +12,19 @@
 
 namespace ellipse_collision::core::scene_test {
 
+/// The ellipse centred at (x, y) [m] with semi-axes rx, ry [m], turned by `angle` [rad].
+inline Ellipse ellipse(double x, double y, double rx, double ry, double angle = 0.0) {
+  Ellipse e;
+  e.center = Eigen::Vector2d(x, y);
+  e.radius_x = rx;
+  e.radius_y = ry;
+  e.angle = angle;
+  return e;
+}
+
 inline NamedEllipse ellipse(const std::string& name, EllipseRole role, double x, double y,
                             double rx, double ry, double angle = 0.0) {
-  NamedEllipse e;
-  e.name = name;
-  e.role = role;
-  e.ellipse.center = Eigen::Vector2d(x, y);
-  e.ellipse.radius_x = rx;
-  e.ellipse.radius_y = ry;
-  e.ellipse.angle = angle;
-  return e;
+  return NamedEllipse{name, role, ellipse(x, y, rx, ry, angle)};
 }
 
 inline NamedEllipse circle(const std::string& name, EllipseRole role, double x, double y,
