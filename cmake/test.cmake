@@ -214,3 +214,15 @@ ellipse_collision_add_gtest(test_demo_units LIBRARIES ellipse_collision_core ${X
 target_include_directories(test_demo_units PRIVATE demo/src ${X11_INCLUDE_DIR})
 target_compile_definitions(test_demo_units PRIVATE
   DEMO_RVIZ_CONFIG="${PROJECT_SOURCE_DIR}/demo/rviz/demo.rviz")
+
+# ---- the documented commands (test/docs, doc/testing.md) ----------------------------------------
+# doc_static needs no node; the pages' tests start what the page starts (roslaunch, rviz) on the
+# rostest's master. README's tour opens rviz, so its test runs under xvfb-run like the demo's.
+add_rostest(test/docs/doc_static.test)
+add_rostest(test/docs/doc_node_reference.test
+  DEPENDENCIES ellipse_collision_node ${PROJECT_NAME}_generate_messages)
+add_rostest(test/docs/doc_tools.test DEPENDENCIES check_ellipses fit_link_ellipses)
+set(_readme_test test/docs/doc_readme.test)
+catkin_run_tests_target("rostest" "test_docs_doc_readme.test" "rostest-test_docs_doc_readme.xml"
+  COMMAND "xvfb-run -a -s \"-screen 0 1280x800x24\" ${PYTHON_EXECUTABLE} /usr/bin/rostest --pkgdir=${PROJECT_SOURCE_DIR} --package=${PROJECT_NAME} --results-filename test_docs_doc_readme.xml --results-base-dir \"${CATKIN_TEST_RESULTS_DIR}\" ${PROJECT_SOURCE_DIR}/${_readme_test}"
+  DEPENDENCIES ellipse_collision_node ${PROJECT_NAME}_generate_messages)
