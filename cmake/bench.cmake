@@ -62,3 +62,6 @@ ellipse_collision_add_benchmark(bench_run_check bench/bench_run_check.cpp
 
 # The velocity gate for one command of a 20-link base among 1,000 to 100,000 obstacles.
 ellipse_collision_add_benchmark(bench_velocity_gate bench/bench_velocity_gate.cpp)
+# Command in to command out of the gate without ROS: app::CollisionMonitor::gateCommand().
+ellipse_collision_add_benchmark(bench_gate_command bench/bench_gate_command.cpp
+  LIBRARIES ellipse_collision_app)

@@ -39,7 +39,8 @@ echo "Building the benchmarks (log: build/benchmark/build.txt)"
 # off again below, behind its back.
 if ! bash "${repo}/scripts/build.sh" --force-cmake -DELLIPSE_COLLISION_BENCHMARKS=ON bench_pair_tests \
     bench_scene_check bench_distance bench_first_contact bench_scan_obstacles \
-    bench_service_roundtrip bench_check_path bench_run_check ellipse_collision_node \
+    bench_service_roundtrip bench_check_path bench_run_check bench_velocity_gate \
+    bench_gate_command ellipse_collision_node \
     > "${out}/build.txt" 2>&1; then
   cat "${out}/build.txt" >&2
   exit 1
@@ -56,6 +57,7 @@ if "${smoke}"; then
   scan_args=(--benchmark_min_time=0.01)
   path_args=(--benchmark_min_time=0.01)
   run_check_args=(--benchmark_min_time=0.01)
+  gate_args=(--benchmark_min_time=0.01)
   roundtrip_calls=200
 else
   repeat=(--benchmark_repetitions=5 --benchmark_enable_random_interleaving=true
@@ -67,6 +69,7 @@ else
   scan_args=(--benchmark_min_time=0.5 "${repeat[@]}")
   path_args=(--benchmark_min_time=0.5 "${repeat[@]}")
   run_check_args=(--benchmark_min_time=0.3 "${repeat[@]}")
+  gate_args=(--benchmark_min_time=0.3 "${repeat[@]}")
   roundtrip_calls=10000
 fi
 
@@ -121,6 +124,15 @@ echo "Running bench_run_check (us per app::runCheck with the node's cache, besid
 echo "ms per ~obstacles message of N obstacles, validated and stored)"
 run bench_run_check "${run_check_args[@]}"
 grep -E '^(Benchmark|run_check|topic_message)' "${out}/bench_run_check.txt" | grep -vE '_(stddev|cv)( |$)' || true
+
+# ---- the velocity gate: the core decision, and command in to command out without ROS ------------
+echo
+echo "Running bench_velocity_gate (us per core::gateCommand, 20 links) and bench_gate_command"
+echo "(us per app::CollisionMonitor::gateCommand: full check + gate; p50_us and p99_us per command)"
+run bench_velocity_gate "${gate_args[@]}"
+grep -E '^(Benchmark|BM_|gate)' "${out}/bench_velocity_gate.txt" | grep -vE '_(stddev|cv)( |$)' || true
+run bench_gate_command "${gate_args[@]}"
+grep -E '^(Benchmark|gateCommands)' "${out}/bench_gate_command.txt" | grep -vE '_(stddev|cv)( |$)' || true
 
 # ---- service round trip (issue 7) ---------------------------------------------------------------
 # Started here, stopped by the EXIT trap whatever ends the script: the node first, then roscore
