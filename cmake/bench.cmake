@@ -40,6 +40,13 @@ ellipse_collision_add_benchmark(bench_distance bench/bench_distance.cpp LIBRARIE
 ellipse_collision_add_benchmark(bench_first_contact bench/bench_first_contact.cpp
   test/support/first_contact_oracle.cpp LIBRARIES fcl)
 
+# The gate through ROS: command in to command out of the running node, beside a plain relay.
+add_executable(bench_gate_roundtrip bench/bench_gate_roundtrip.cpp)
+target_include_directories(bench_gate_roundtrip PRIVATE include ${catkin_INCLUDE_DIRS})
+target_link_libraries(bench_gate_roundtrip ${catkin_LIBRARIES})
+target_compile_options(bench_gate_roundtrip PRIVATE ${ELLIPSE_COLLISION_WARNINGS})
+add_dependencies(bench_gate_roundtrip ${PROJECT_NAME}_generate_messages_cpp)
+
 # Service round trip: a ROS client of the running node, a plain main (not Google Benchmark);
 # scripts/benchmark.sh starts a roscore and the node for it.
 add_executable(bench_service_roundtrip bench/bench_service_roundtrip.cpp)

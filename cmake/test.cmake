@@ -81,6 +81,7 @@ ellipse_collision_add_gtest(test_app LIBRARIES ellipse_collision_app SOURCES
   test/app/test_field_validation.cpp
   test/app/test_collision_check.cpp
   test/app/test_collision_monitor.cpp
+  test/app/test_command_gate.cpp
   test/app/test_obstacle_store.cpp
   test/app/test_obstacle_store_writer.cpp
   test/app/test_check_health.cpp

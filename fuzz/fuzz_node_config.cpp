@@ -133,7 +133,7 @@ void checkAccepted(const NodeConfig& config) {
   // The documented ranges (node_config.h): a timer period and a tf wait ros::Duration can hold.
   FUZZ_REQUIRE(config.rate_hz == 0.0 || (config.rate_hz >= kMinRateHz && config.rate_hz <= kMaxRateHz),
                "accepted rate " + std::to_string(config.rate_hz));
-  FUZZ_REQUIRE(config.tf_timeout_s <= kMaxTfTimeoutS,
+  FUZZ_REQUIRE(config.tf_timeout_s <= kMaxDurationS,
                "accepted tf_timeout " + std::to_string(config.tf_timeout_s));
   FUZZ_REQUIRE(config.padding_m <= core::kMaxRadius, "accepted padding " + std::to_string(config.padding_m));
   std::set<std::string> names;

@@ -40,7 +40,7 @@ echo "Building the benchmarks (log: build/benchmark/build.txt)"
 if ! bash "${repo}/scripts/build.sh" --force-cmake -DELLIPSE_COLLISION_BENCHMARKS=ON bench_pair_tests \
     bench_scene_check bench_distance bench_first_contact bench_scan_obstacles \
     bench_service_roundtrip bench_check_path bench_run_check bench_velocity_gate \
-    bench_gate_command ellipse_collision_node \
+    bench_gate_command bench_gate_roundtrip ellipse_collision_node \
     > "${out}/build.txt" 2>&1; then
   cat "${out}/build.txt" >&2
   exit 1
@@ -59,6 +59,7 @@ if "${smoke}"; then
   run_check_args=(--benchmark_min_time=0.01)
   gate_args=(--benchmark_min_time=0.01)
   roundtrip_calls=200
+  gate_roundtrip_args=(--commands 100 --sizes 1000)
 else
   repeat=(--benchmark_repetitions=5 --benchmark_enable_random_interleaving=true
           --benchmark_report_aggregates_only=true)
@@ -71,6 +72,7 @@ else
   run_check_args=(--benchmark_min_time=0.3 "${repeat[@]}")
   gate_args=(--benchmark_min_time=0.3 "${repeat[@]}")
   roundtrip_calls=10000
+  gate_roundtrip_args=(--commands 2000 --sizes 1000,10000,100000)
 fi
 
 # Runs one benchmark program with its console output in build/benchmark/<name>.txt, shown only
@@ -167,6 +169,30 @@ if ! "${bin}/bench_service_roundtrip" --calls "${roundtrip_calls}" --sizes 100,1
     --node /ellipse_collision --trigger /ros_floor 2>&1 | tee "${out}/bench_service_roundtrip.txt"; then
   tail -n 20 "${out}/node.txt" >&2
   echo "bench_service_roundtrip failed" >&2
+  exit 1
+fi
+stop_all
+
+# ---- the velocity gate through ROS: ~cmd_vel_in -> ~cmd_vel_out, beside a plain relay ------------
+echo
+echo "Running bench_gate_roundtrip against ellipse_collision_node (20 links, a turning command;"
+echo "goal: p99 under 1 ms at 10,000 obstacles)"
+roscore -p "${port}" > "${out}/roscore_gate.txt" 2>&1 &
+pids+=($!)
+for _ in $(seq 100); do
+  rosparam get /run_id > /dev/null 2>&1 && break
+  sleep 0.2
+done
+rosparam load "${repo}/bench/gate_roundtrip.yaml" /ellipse_collision
+"${bin}/ellipse_collision_node" __name:=ellipse_collision > "${out}/node_gate.txt" 2>&1 &
+pids+=($!)
+"${bin}/bench_gate_roundtrip" --relay /relay/in /relay/out __name:=relay \
+  > "${out}/relay.txt" 2>&1 &
+pids+=($!)
+if ! "${bin}/bench_gate_roundtrip" "${gate_roundtrip_args[@]}" --node /ellipse_collision \
+    --relay-in /relay/in --relay-out /relay/out 2>&1 | tee "${out}/bench_gate_roundtrip.txt"; then
+  tail -n 20 "${out}/node_gate.txt" >&2
+  echo "bench_gate_roundtrip failed" >&2
   exit 1
 fi
 stop_all

@@ -332,7 +332,7 @@ NodeConfig parseNodeConfig(const XmlRpcValue& params, const UrdfLinkFitter& fit_
   }
   if (has("tf_timeout")) {
     config.tf_timeout_s =
-        readInRange(root["tf_timeout"], "parameter ~tf_timeout", "tf_timeout", 0.0, kMaxTfTimeoutS);
+        readInRange(root["tf_timeout"], "parameter ~tf_timeout", "tf_timeout", 0.0, kMaxDurationS);
   }
   if (has("padding")) {
     config.padding_m =
@@ -348,11 +348,11 @@ NodeConfig parseNodeConfig(const XmlRpcValue& params, const UrdfLinkFitter& fit_
   }
   if (has("max_transform_age")) {
     config.max_transform_age_s = readInRange(root["max_transform_age"], "parameter ~max_transform_age",
-                                             "max_transform_age", 0.0, kMaxTfTimeoutS);
+                                             "max_transform_age", 0.0, kMaxDurationS);
   }
   if (has("obstacle_timeout")) {
     config.obstacle_timeout_s = readInRange(root["obstacle_timeout"], "parameter ~obstacle_timeout",
-                                            "obstacle_timeout", 0.0, kMaxTfTimeoutS);
+                                            "obstacle_timeout", 0.0, kMaxDurationS);
   }
   if (has("max_obstacles")) {
     config.limits.max_obstacles = static_cast<std::size_t>(readWhole(
@@ -368,12 +368,12 @@ NodeConfig parseNodeConfig(const XmlRpcValue& params, const UrdfLinkFitter& fit_
   if (has("obstacle_store_period")) {
     config.obstacle_store_period_s =
         readInRange(root["obstacle_store_period"], "parameter ~obstacle_store_period",
-                    "obstacle_store_period", 0.0, kMaxTfTimeoutS);
+                    "obstacle_store_period", 0.0, kMaxDurationS);
   }
   if (has("marker_refresh_period")) {
     config.marker_refresh_period_s =
         readInRange(root["marker_refresh_period"], "parameter ~marker_refresh_period",
-                    "marker_refresh_period", 0.0, kMaxTfTimeoutS);
+                    "marker_refresh_period", 0.0, kMaxDurationS);
   }
   if (has("gate")) config.gate = readGate(root["gate"]);
   if (!has("links") && !has("links_from_urdf")) {

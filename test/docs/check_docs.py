@@ -223,4 +223,7 @@ if __name__ == "__main__":
     name = "doc_" + (os.path.splitext(os.path.basename(DocumentedCommands.page))[0].lower()
                      if DocumentedCommands.page else "static")
     import rostest
-    rostest.rosrun("ellipse_collision", name, DocumentedCommands, sys.argv[:1])
+    # rostest's own --gtest_output=xml:PATH tells where the results go (run_tests gives a results
+    # directory of its own); everything else was ours.
+    rostest.rosrun("ellipse_collision", name, DocumentedCommands,
+                   sys.argv[:1] + [a for a in sys.argv[1:] if a.startswith("--gtest_output")])

@@ -280,7 +280,7 @@ TEST(NodeConfig, RateIsZeroOrWithinItsDocumentedRange) {
 
 TEST(NodeConfig, TfTimeoutIsWithinItsDocumentedRange) {
   XmlRpcValue p = validParams();
-  for (double ok : {0.0, 1e-9, kMaxTfTimeoutS}) {
+  for (double ok : {0.0, 1e-9, kMaxDurationS}) {
     p["tf_timeout"] = ok;
     EXPECT_EQ(parseNodeConfig(p).tf_timeout_s, ok);
   }
@@ -296,7 +296,7 @@ TEST(NodeConfig, TfTimeoutIsWithinItsDocumentedRange) {
 
 TEST(NodeConfig, MarkerRefreshPeriodIsZeroOrWithinItsDocumentedRange) {
   XmlRpcValue p = validParams();
-  for (double ok : {0.0, 0.5, kMaxTfTimeoutS}) {
+  for (double ok : {0.0, 0.5, kMaxDurationS}) {
     p["marker_refresh_period"] = ok;
     EXPECT_EQ(parseNodeConfig(p).marker_refresh_period_s, ok);
   }
@@ -351,6 +351,43 @@ TEST(NodeConfig, PaddedRadiiBeyondTheCoreRangeStopTheNode) {
   p["padding"] = 0.0;
   p["links"][0]["radius_x"] = core::kMaxRadius;  // exactly at the limit, unpadded: accepted
   EXPECT_EQ(parseNodeConfig(p).links[0].radius_x, core::kMaxRadius);
+}
+
+TEST(NodeConfig, TheGateIsOffByDefaultAndItsKeysAreReadAndRangeChecked) {
+  EXPECT_FALSE(parseNodeConfig(validParams()).gate.enabled);
+  XmlRpcValue p = validParams();
+  p["gate"]["enabled"] = true;
+  p["gate"]["robot_frame"] = "base_footprint";
+  p["gate"]["horizon"] = 4;
+  p["gate"]["time_before_collision"] = 2.0;
+  p["gate"]["stop_time"] = 0.5;
+  p["gate"]["on_incomplete"] = "pass";
+  const NodeConfig config = parseNodeConfig(p);
+  EXPECT_TRUE(config.gate.enabled);
+  EXPECT_EQ(config.gate.robot_frame, "base_footprint");
+  EXPECT_EQ(config.gate.timing.horizon, 4.0);
+  EXPECT_EQ(config.gate.timing.time_before_collision, 2.0);
+  EXPECT_EQ(config.gate.timing.stop_time, 0.5);
+  EXPECT_EQ(config.gate.on_incomplete, app::OnIncomplete::Pass);
+
+  p["gate"]["stop_time"] = 3.0;
+  EXPECT_EQ(errorOf(p),
+            "parameter ~gate, key 'gate/stop_time': expected a finite number within [0, 2] (at "
+            "most gate/time_before_collision), got 3");
+  p["gate"]["stop_time"] = 0.5;
+  p["gate"]["on_incomplete"] = "maybe";
+  EXPECT_EQ(errorOf(p),
+            "parameter ~gate, key 'gate/on_incomplete': expected 'stop' or 'pass', got 'maybe'");
+  p["gate"]["on_incomplete"] = "stop";
+  p["gate"]["horizen"] = 3.0;
+  EXPECT_NE(errorOf(p).find("parameter ~gate/horizen: unknown key"), std::string::npos)
+      << errorOf(p);
+  XmlRpcValue q = validParams();
+  q["gate"]["horizon"] = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_NE(errorOf(q).find("key 'gate/horizon'"), std::string::npos) << errorOf(q);
+  q = validParams();
+  q["gate"] = true;
+  EXPECT_NE(errorOf(q).find("expected a dict of gate parameters"), std::string::npos) << errorOf(q);
 }
 
 }  // namespace

@@ -29,9 +29,10 @@ class ConfigError : public std::runtime_error {
 /// resolution), and the global padding within the core's radius range.
 constexpr double kMinRateHz = 1e-3;        ///< rate is 0 or within [kMinRateHz, kMaxRateHz]
 constexpr double kMaxRateHz = 1e3;         ///< [Hz]
-constexpr double kMaxTfTimeoutS = 3600.0;  ///< tf_timeout, max_transform_age, obstacle_timeout,
-                                           ///< obstacle_store_period, marker_refresh_period
-                                           ///< within [0, kMaxTfTimeoutS] [s]
+/// The one bound of every duration parameter: tf_timeout, max_transform_age, obstacle_timeout,
+/// obstacle_store_period and marker_refresh_period lie within [0, kMaxDurationS] [s] (an hour:
+/// longer is a typo, and keeps ros::Duration far from its range).
+constexpr double kMaxDurationS = 3600.0;
 
 /// prediction_horizon within [0, kMaxPredictionHorizonS] [s]: a minute ahead is far beyond what
 /// constant velocities predict well, and keeps |angular_velocity| * horizon within the core's turn

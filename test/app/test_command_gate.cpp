@@ -1,0 +1,326 @@
+// The velocity gate's application layer: its settings and command rules, decideOnScene() (the
+// scene moved into the robot frame, the obstacles pre-filtered, the answer put back into the fixed
+// frame) against core::gateCommand() on the whole scene built by hand in the robot frame, and the
+// monitor's rules (disabled, silence, incomplete data, obstacles on moving frames).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "ellipse_collision/app/collision_monitor.h"
+#include "ellipse_collision/app/command_gate.h"
+#include "spec_builders.h"
+
+namespace ellipse_collision::app {
+namespace {
+
+using test::circle;
+
+TEST(GateSettings, DefaultsAreValidAndEachRangeIsRefusedNamingTheKey) {
+  EXPECT_FALSE(findInvalidGateSetting(GateConfig()));
+  const auto refused = [](void (*change)(GateConfig&)) {
+    GateConfig config;
+    change(config);
+    const auto invalid = findInvalidGateSetting(config);
+    return invalid ? invalid->key + " = " + invalid->actual : std::string("accepted");
+  };
+  EXPECT_EQ(refused([](GateConfig& c) { c.timing.horizon = 0.0; }), "gate/horizon = 0");
+  EXPECT_EQ(refused([](GateConfig& c) { c.timing.horizon = NAN; }), "gate/horizon = nan");
+  EXPECT_EQ(refused([](GateConfig& c) { c.timing.time_before_collision = 4.0; }),
+            "gate/time_before_collision = 4");
+  EXPECT_EQ(refused([](GateConfig& c) { c.timing.stop_time = 2.0; }), "gate/stop_time = 2");
+  EXPECT_EQ(refused([](GateConfig& c) { c.timing.margin = -0.1; }), "gate/margin = -0.1");
+  EXPECT_EQ(refused([](GateConfig& c) { c.timing.resolution = 0.0; }), "gate/resolution = 0");
+  EXPECT_EQ(refused([](GateConfig& c) { c.cmd_vel_timeout_s = INFINITY; }),
+            "gate/cmd_vel_timeout = inf");
+  EXPECT_EQ(refused([](GateConfig& c) { c.max_linear_speed = 0.0; }), "gate/max_linear_speed = 0");
+  EXPECT_EQ(refused([](GateConfig& c) { c.max_angular_speed = 21.0; }),
+            "gate/max_angular_speed = 21");
+  EXPECT_EQ(refused([](GateConfig& c) { c.robot_frame = "/base_link"; }),
+            "gate/robot_frame = '/base_link'");
+  EXPECT_EQ(refused([](GateConfig& c) { c.robot_frame = ""; }), "gate/robot_frame = ''");
+}
+
+TEST(GateCommandRule, NonFiniteOrAbsurdComponentsAreNamed) {
+  const GateConfig config;  // 5 m/s, 5 rad/s
+  VelocityCommand command;
+  EXPECT_FALSE(findInvalidCommand(command, config));
+  command.linear.x() = NAN;
+  auto invalid = findInvalidCommand(command, config);
+  ASSERT_TRUE(invalid);
+  EXPECT_EQ(describeFieldError("cmd_vel", *invalid),
+            "cmd_vel.linear.x = nan: expected a finite number within [-5, 5]");
+  command.linear.x() = 5.0;
+  command.angular.y() = -INFINITY;
+  invalid = findInvalidCommand(command, config);
+  ASSERT_TRUE(invalid);
+  EXPECT_EQ(invalid->key, "angular.y");
+  command.angular.y() = 0.0;
+  command.linear.z() = 5.5;
+  invalid = findInvalidCommand(command, config);
+  ASSERT_TRUE(invalid);
+  EXPECT_EQ(invalid->key, "linear.z");
+}
+
+/// A scene placed in the fixed frame: `links` and `obstacles` (in that order, as a check places
+/// them).
+core::Scene placedScene(const std::vector<core::NamedEllipse>& links,
+                        const std::vector<core::NamedEllipse>& obstacles) {
+  core::Scene scene;
+  for (const auto& link : links) scene.push_back(link.name, core::EllipseRole::Link, link.ellipse);
+  for (const auto& o : obstacles) scene.push_back(o.name, core::EllipseRole::Obstacle, o.ellipse);
+  return scene;
+}
+
+/// `e` (in the fixed frame) seen from a robot at `pose`, by hand.
+core::Ellipse inRobotFrame(const core::Ellipse& e, const PlanarPose& pose) {
+  const double c = std::cos(pose.yaw), s = std::sin(pose.yaw);
+  const Eigen::Vector2d d = e.center - pose.position;
+  core::Ellipse out = e;
+  out.center = {c * d.x() + s * d.y(), -s * d.x() + c * d.y()};
+  out.angle = e.angle - pose.yaw;
+  return out;
+}
+
+TEST(DecideOnScene, MatchesTheCoreOnTheWholeSceneSeenFromTheRobot) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0), size(0.05, 0.4);
+  GateConfig config;
+  config.timing.horizon = 3.0;
+  config.timing.time_before_collision = 1.5;
+  int slowed_or_stopped = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    const PlanarPose pose{{5.0 * unit(rng), 5.0 * unit(rng)}, 3.1 * unit(rng)};
+    std::vector<core::NamedEllipse> links, obstacles;
+    std::vector<core::Motion> motions;  // per placed entry, links first
+    core::PathScene by_hand;
+    for (int i = 0; i < 3; ++i) {
+      // Links given in the robot frame, placed into the fixed frame for the check.
+      const core::Ellipse in_robot{{0.3 * unit(rng), 0.2 * unit(rng)}, size(rng), size(rng),
+                                   unit(rng)};
+      core::Ellipse placed = in_robot;
+      const double c = std::cos(pose.yaw), s = std::sin(pose.yaw);
+      placed.center = pose.position + Eigen::Vector2d(c * in_robot.center.x() - s * in_robot.center.y(),
+                                                      s * in_robot.center.x() + c * in_robot.center.y());
+      placed.angle += pose.yaw;
+      links.push_back({"link_" + std::to_string(i), core::EllipseRole::Link, placed});
+      by_hand.links.push_back({links.back().name, core::EllipseRole::Link,
+                               inRobotFrame(placed, pose)});
+      motions.emplace_back();
+    }
+    for (int i = 0; i < 40; ++i) {
+      const core::Ellipse e{pose.position + Eigen::Vector2d(8.0 * unit(rng), 8.0 * unit(rng)),
+                            size(rng), size(rng), unit(rng)};
+      obstacles.push_back({"obstacle_" + std::to_string(i), core::EllipseRole::Obstacle, e});
+      core::Motion motion;
+      if (i % 4 == 0) motion.velocity = {0.5 * unit(rng), 0.5 * unit(rng)};
+      motions.push_back(motion);
+      core::Motion turned = motion;
+      const double c = std::cos(pose.yaw), s = std::sin(pose.yaw);
+      turned.velocity = {c * motion.velocity.x() + s * motion.velocity.y(),
+                         -s * motion.velocity.x() + c * motion.velocity.y()};
+      by_hand.obstacles.push_back({obstacles.back().name, core::EllipseRole::Obstacle,
+                                   inRobotFrame(e, pose)});
+      by_hand.obstacle_motions.push_back(turned);
+    }
+    VelocityCommand command;
+    command.linear.x() = 1.5 * unit(rng);
+    command.linear.y() = 0.3 * unit(rng);
+    command.angular.z() = 0.8 * unit(rng);
+    const GateDecision decision = decideOnScene(command, placedScene(links, obstacles), motions,
+                                                pose, core::AllowedPairs(), config);
+    const core::GateResult expected = core::gateCommand(
+        by_hand, {command.linear.x(), command.linear.y(), command.angular.z()}, config.timing);
+    ASSERT_TRUE(expected.ok()) << expected.error;
+    EXPECT_EQ(toString(decision.action),
+              std::string(core::toString(expected.action)) == "pass"     ? std::string("PASS")
+              : std::string(core::toString(expected.action)) == "slow"   ? std::string("SLOW")
+              : std::string(core::toString(expected.action)) == "escape" ? std::string("ESCAPE")
+                                                                         : std::string("STOP"))
+        << "trial " << trial << ": " << decision.reason << " / " << expected.reason;
+    EXPECT_NEAR(decision.scale, expected.scale, 1e-12) << "trial " << trial;
+    EXPECT_NEAR(decision.output.linear.x(), expected.scale * command.linear.x(), 1e-12);
+    const core::GateContact& shown = expected.contact.found ? expected.contact : expected.limiting;
+    EXPECT_EQ(decision.contact_predicted, shown.found) << "trial " << trial;
+    if (shown.found && decision.contact_predicted) {
+      EXPECT_EQ(decision.obstacle, shown.obstacle);
+      EXPECT_NEAR(decision.time_to_contact_s, shown.time, 1e-9);
+      // The contact point back in the fixed frame.
+      const double c = std::cos(pose.yaw), s = std::sin(pose.yaw);
+      const Eigen::Vector2d fixed =
+          pose.position + Eigen::Vector2d(c * shown.point.x() - s * shown.point.y(),
+                                          s * shown.point.x() + c * shown.point.y());
+      EXPECT_LT((decision.contact_point - fixed).norm(), 1e-9);
+    }
+    slowed_or_stopped += decision.action != GateAction::Pass;
+  }
+  EXPECT_GT(slowed_or_stopped, 30) << "the random scenes test more than passing commands";
+}
+
+TEST(DecideOnScene, TheOutlineIsTheRobotAtTheContactInTheFixedFrame) {
+  // The robot at (1, 2) facing +y; a post 2 m ahead of it, at (1, 4); 1 m/s ahead.
+  const PlanarPose pose{{1.0, 2.0}, M_PI / 2};
+  const core::Ellipse link{{1.0, 2.0}, 0.3, 0.3, 0.0};
+  const core::Ellipse post{{1.0, 4.0}, 0.2, 0.2, 0.0};
+  GateConfig config;
+  config.timing.horizon = 3.0;
+  config.timing.time_before_collision = 0.5;
+  config.timing.stop_time = 0.2;
+  VelocityCommand command;
+  command.linear.x() = 1.0;
+  const GateDecision decision =
+      decideOnScene(command, placedScene({{"body", core::EllipseRole::Link, link}},
+                                         {{"post", core::EllipseRole::Obstacle, post}}),
+                    {core::Motion(), core::Motion()}, pose, core::AllowedPairs(), config);
+  EXPECT_EQ(decision.action, GateAction::Pass) << decision.reason;
+  ASSERT_TRUE(decision.contact_predicted);
+  EXPECT_NEAR(decision.time_to_contact_s, 1.5, 1e-9);
+  EXPECT_LT((decision.contact_point - Eigen::Vector2d(1.0, 3.8)).norm(), 1e-6);
+  ASSERT_EQ(decision.outline.size(), 1u);
+  EXPECT_LT((decision.outline[0].ellipse.center - Eigen::Vector2d(1.0, 3.5)).norm(), 1e-9);
+  EXPECT_LT((decision.obstacle_ellipse.center - post.center).norm(), 1e-12);
+}
+
+/// Frames of the monitor tests: map, base_link at `base` (x only), timeless unless stamped.
+struct Frames {
+  double base_x{0.0};
+  double base_stamp{0.0};
+  bool base_known{true};
+  TransformLookup latest() const {
+    return [this](const std::string& frame) {
+      FrameTransform t;
+      if (frame == "map") {
+        t.ok = true;
+      } else if (frame == "base_link" && base_known) {
+        t.ok = true;
+        t.fixed_from_frame.translation().x() = base_x;
+        t.stamp_s = base_stamp;
+      } else {
+        t.error = "frame '" + frame + "' does not exist";
+      }
+      return t;
+    };
+  }
+  TransformAtLookup at() const {
+    return [this](const std::string& frame, double) { return latest()(frame); };
+  }
+};
+
+MonitorSettings gateSettings() {
+  MonitorSettings settings;
+  settings.check.fixed_frame = "map";
+  settings.check.max_transform_age_s = 0.5;
+  settings.gate.enabled = true;
+  settings.gate.timing.horizon = 3.0;
+  settings.gate.timing.time_before_collision = 1.0;
+  settings.gate.timing.stop_time = 0.3;
+  return settings;
+}
+
+VelocityCommand forward(double vx) {
+  VelocityCommand command;
+  command.linear.x() = vx;
+  return command;
+}
+
+TEST(MonitorGate, DisabledPassesUnchangedAndTheWatchdogSendsOneZero) {
+  CollisionMonitor monitor(gateSettings(), {circle("body", "base_link", 0, 0, 0.3)}, {}, {}, {});
+  Frames frames;
+  EXPECT_EQ(monitor.gateCommand(forward(1.0), 1.0, frames.latest(), frames.at()).action,
+            GateAction::Pass);
+  EXPECT_FALSE(monitor.gateWatchdog(1.3));
+  const auto zero = monitor.gateWatchdog(1.6);
+  ASSERT_TRUE(zero);
+  EXPECT_EQ(zero->action, GateAction::Timeout);
+  EXPECT_EQ(zero->output.linear.x(), 0.0);
+  EXPECT_FALSE(monitor.gateWatchdog(2.5)) << "one zero, not a stream";
+  monitor.gateCommand(forward(1.0), 3.0, frames.latest(), frames.at());
+  EXPECT_TRUE(monitor.gateWatchdog(3.6)) << "again after the next command";
+
+  monitor.setGateEnabled(false);
+  VelocityCommand odd = forward(NAN);
+  const GateDecision disabled = monitor.gateCommand(odd, 4.0, frames.latest(), frames.at());
+  EXPECT_EQ(disabled.action, GateAction::Disabled);
+  EXPECT_TRUE(std::isnan(disabled.output.linear.x())) << "unchanged, whatever it is";
+  EXPECT_FALSE(monitor.gateWatchdog(10.0)) << "no silence rule while disabled";
+  const auto values = monitor.health(10.0).values;
+  const std::map<std::string, std::string> shown(values.begin(), values.end());
+  EXPECT_EQ(shown.at("gate"), "disabled");
+  EXPECT_EQ(shown.at("gate stops"), "2") << "the two zeros of the silence rule";
+}
+
+TEST(MonitorGate, IncompleteDataStopsUnlessPassIsAskedAndTheRobotFrameIsAlwaysNeeded) {
+  // A link on a frame nobody publishes: incomplete.
+  for (const OnIncomplete policy : {OnIncomplete::Stop, OnIncomplete::Pass}) {
+    MonitorSettings settings = gateSettings();
+    settings.gate.on_incomplete = policy;
+    CollisionMonitor monitor(settings,
+                             {circle("body", "base_link", 0, 0, 0.3),
+                              circle("gripper", "arm_link", 0.5, 0, 0.1)},
+                             {}, {}, {});
+    Frames frames;
+    const GateDecision decision =
+        monitor.gateCommand(forward(1.0), 1.0, frames.latest(), frames.at());
+    EXPECT_EQ(decision.action,
+              policy == OnIncomplete::Stop ? GateAction::Incomplete : GateAction::Pass);
+    EXPECT_NE(decision.reason.find("frames unavailable: arm_link"), std::string::npos)
+        << decision.reason;
+    frames.base_known = false;
+    const GateDecision lost = monitor.gateCommand(forward(1.0), 1.1, frames.latest(), frames.at());
+    EXPECT_EQ(lost.action, GateAction::Incomplete) << "no robot pose, whatever the policy";
+    EXPECT_NE(lost.reason.find("robot_frame 'base_link'"), std::string::npos) << lost.reason;
+  }
+}
+
+TEST(MonitorGate, ExpiredPerceptionStopsUntilTheNextMessage) {
+  MonitorSettings settings = gateSettings();
+  settings.obstacle_timeout_s = 0.5;
+  CollisionMonitor monitor(settings, {circle("body", "base_link", 0, 0, 0.3)}, {}, {}, {});
+  Frames frames;
+  ASSERT_EQ(monitor.replaceTopicObstacles({circle("rock", "map", 5.0, 0.0, 0.2)}, 1.0,
+                                          frames.latest()),
+            "");
+  EXPECT_EQ(monitor.gateCommand(forward(0.5), 1.2, frames.latest(), frames.at()).action,
+            GateAction::Pass);
+  const GateDecision blind = monitor.gateCommand(forward(0.5), 2.0, frames.latest(), frames.at());
+  EXPECT_EQ(blind.action, GateAction::Incomplete);
+  EXPECT_NE(blind.reason.find("obstacle_timeout"), std::string::npos) << blind.reason;
+  ASSERT_EQ(monitor.replaceTopicObstacles({circle("rock", "map", 5.0, 0.0, 0.2)}, 2.1,
+                                          frames.latest()),
+            "");
+  EXPECT_EQ(monitor.gateCommand(forward(0.5), 2.2, frames.latest(), frames.at()).action,
+            GateAction::Pass);
+}
+
+TEST(MonitorGate, AnObstacleOnTheRobotsOwnFrameStandsAndAnOwnVelocityCounts) {
+  // A scan obstacle attached to base_link, 1 m ahead: the gate must not let it travel along.
+  CollisionMonitor monitor(gateSettings(), {circle("body", "base_link", 0, 0, 0.3)},
+                           {circle("scanned", "base_link", 1.2, 0.0, 0.1)}, {}, {});
+  Frames frames;
+  const GateDecision toward = monitor.gateCommand(forward(1.0), 1.0, frames.latest(), frames.at());
+  EXPECT_EQ(toward.action, GateAction::Slow) << toward.reason;
+  EXPECT_EQ(toward.obstacle, "scanned");
+  EXPECT_NEAR(toward.time_to_contact_s, 1.0, 0.02) << "0.8 m of gap, slowed so it takes 1 s";
+
+  // A box 2 m ahead (gap) coming at 1 m/s (its own velocity, in map) against a standing one: at
+  // 2 m/s the standing box is met in 1 s (= time_before_collision: full speed), the coming one
+  // sooner, so the command is slowed to 0.5 (2 m / (2 k + 1) m/s >= 1 s).
+  EllipseSpec coming = circle("box", "map", 2.5, 0.0, 0.2);
+  coming.vx = -1.0;
+  CollisionMonitor with_moving(gateSettings(), {circle("body", "base_link", 0, 0, 0.3)}, {coming},
+                               {}, {});
+  CollisionMonitor with_standing(gateSettings(), {circle("body", "base_link", 0, 0, 0.3)},
+                                 {circle("box", "map", 2.5, 0.0, 0.2)}, {}, {});
+  const double moving_scale =
+      with_moving.gateCommand(forward(2.0), 1.0, frames.latest(), frames.at()).scale;
+  const double standing_scale =
+      with_standing.gateCommand(forward(2.0), 1.0, frames.latest(), frames.at()).scale;
+  EXPECT_LT(moving_scale, standing_scale - 0.2)
+      << "moving " << moving_scale << ", standing " << standing_scale;
+}
+
+}  // namespace
+}  // namespace ellipse_collision::app
