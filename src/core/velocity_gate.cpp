@@ -475,12 +475,18 @@ void Gate::contactRule(bool escaping) {
     if (moving_count > 0 && k > 0.0 && k < 1.0) {
       // Searched down the grid: under k twist a moving obstacle may arrive sooner or later. Only
       // the moving pairs that may touch before T_b at k = 1 are looked at: a smaller k only puts
-      // off the bound (earliestPossible() grows as k falls).
-      std::vector<const Candidate*> near;
+      // off the bound (earliestPossible() grows as k falls). Which pair rules a k out does not
+      // change the k taken: they go soonest bound first, and a pair that fails moves to the
+      // front, since it most likely fails the next k too.
+      std::vector<std::pair<double, const Candidate*>> near;
       for (const Candidate& c : candidates_) {
-        if (!c.overlapping && !c.standing && earliestPossible(c, 1.0) < before) near.push_back(&c);
+        if (c.overlapping || c.standing) continue;
+        const double bound = earliestPossible(c, 1.0);
+        if (bound < before) near.emplace_back(bound, &c);
       }
-      const Candidate* failed = nullptr;
+      std::sort(near.begin(), near.end(), [](const auto& a, const auto& b) {
+        return a.first < b.first || (a.first == b.first && a.second < b.second);
+      });
       for (; n > 0; --n) {
         k = gridValue(n, top);
         const Twist command = scaled(twist_, k);
@@ -492,19 +498,10 @@ void Gate::contactRule(bool escaping) {
           limiting_scale = k;
           return true;
         };
-        // The pair that failed the last k first: it most likely fails this one too.
-        if (failed != nullptr && fails(*failed)) continue;
-        bool clear = true;
-        for (const Candidate* p : near) {
-          const Candidate& c = *p;
-          if (&c == failed) continue;
-          if (fails(c)) {
-            failed = &c;
-            clear = false;
-            break;
-          }
-        }
-        if (clear) break;
+        const auto failing =
+            std::find_if(near.begin(), near.end(), [&](const auto& p) { return fails(*p.second); });
+        if (failing == near.end()) break;
+        std::rotate(near.begin(), failing, failing + 1);
       }
       if (n == 0) k = 0.0;
     }
