@@ -85,6 +85,7 @@ BENCHMARK(BM_GateCommand)
     ->Args({100000, 1, 0})
     ->Args({1000, 0, 1})
     ->Args({10000, 0, 1})
+    ->Args({100000, 0, 1})
     ->Args({1000, 1, 1})
     ->Args({10000, 1, 1})
     ->Unit(benchmark::kMicrosecond);
