@@ -1,5 +1,6 @@
 #pragma once
 
+#include <limits>
 #include <utility>
 
 #include "ellipse_collision/core/distance.h"
@@ -33,9 +34,13 @@ inline constexpr double kStepShrink = 1.0 - 1e-9;
 /// The first contact in [0, horizon] of the pair `pair_at(t)` (a std::pair of ellipses at time
 /// t), whose rims approach no faster than `approach_speed`; `inscribed_sum` = r_a + r_b sets the
 /// grazing band. Never late; clear only when certified.
+/// With `until` < horizon the steps stop once the next one would pass `until`: the answer is the
+/// horizon's answer when that is a contact at or before `until`, and no contact otherwise (the
+/// same steps, so the same time: a caller that needs only contacts up to `until` loses nothing).
 template <class PairAt>
 FirstContact advanceConservatively(PairAt&& pair_at, double approach_speed, double inscribed_sum,
-                                   double horizon) {
+                                   double horizon,
+                                   double until = std::numeric_limits<double>::infinity()) {
   if (!(approach_speed > 0.0)) {
     const auto [a, b] = pair_at(0.0);
     if (distance(a, b).separated) return {};
@@ -50,6 +55,7 @@ FirstContact advanceConservatively(PairAt&& pair_at, double approach_speed, doub
     if (c.distance <= graze) return {true, t};  // within the band around tangency
     // Shrunk a little against the ~1e-16 relative rounding of the distance and of t + step.
     const double next = t + c.distance * kStepShrink / approach_speed;
+    if (next > until && until < horizon) return {};  // any contact comes after `until`
     if (next > horizon) {
       // [t, horizon] is certified clear unless the horizon itself touches: the last interval is
       // shortened to end exactly at the horizon and checked there.

@@ -201,15 +201,16 @@ std::string invalidVelocityReason(const Motion& m, double horizon,
     }
   }
   const double w = m.angular_velocity;
-  const std::string angular = names.angular;
-  if (!std::isfinite(w)) return angular + " = " + formatNumber(w) + " must be finite";
+  // Called for every obstacle a check or the gate looks at: no string unless there is a problem.
+  const char* const angular = names.angular;
+  if (!std::isfinite(w)) return angular + (" = " + formatNumber(w)) + " must be finite";
   if (std::fabs(w) > kMaxAngularVelocity) {
-    return angular + " = " + formatNumber(w) + " is outside [" +
+    return angular + (" = " + formatNumber(w)) + " is outside [" +
            formatNumber(-kMaxAngularVelocity) + ", " + formatNumber(kMaxAngularVelocity) +
            "] rad/s";
   }
   if (std::fabs(w) * horizon > kMaxTurn) {
-    return angular + " = " + formatNumber(w) + " turns more than " + formatNumber(kMaxTurn) +
+    return angular + (" = " + formatNumber(w)) + " turns more than " + formatNumber(kMaxTurn) +
            " rad within horizon = " + formatNumber(horizon) + " s";
   }
   return {};

@@ -186,6 +186,39 @@ std::string obstacleReason(const NamedEllipse& obstacle, const Motion& motion, d
   return {};
 }
 
+/// twistContact() over `horizon` when its contact comes at or before `until` [s], no contact
+/// otherwise: the same steps (the approach bound is that of the horizon), stopped once the next
+/// one would pass `until`, so that a search for the earliest of many pairs can stop each pair at
+/// the earliest contact found so far and still get the horizon's time for the earliest.
+FirstContact twistContactUntil(const Ellipse& link, const Twist& twist, const Ellipse& obstacle,
+                               const Motion& obstacle_motion, double horizon, double until) {
+  if (twist.wz == 0.0) {
+    // The frame does not turn: the link translates by (vx, vy), a Motion of the core.
+    const FirstContact contact =
+        firstContact(link, Motion{linear(twist), 0.0}, obstacle, obstacle_motion, horizon);
+    return contact.contact && contact.time <= until ? contact : FirstContact{};
+  }
+  if (overlap(link, obstacle)) return {true, 0.0};
+  if (!(horizon > 0.0)) return {};
+  const double approach =
+      largestRelativeSpeed(obstacle_motion.velocity, pointVelocity(twist, link.center),
+                           twist.wz * horizon) +
+      std::fabs(twist.wz) * (boundingRadius(link) - inscribedRadius(link)) +
+      std::fabs(obstacle_motion.angular_velocity) *
+          (boundingRadius(obstacle) - inscribedRadius(obstacle));
+  FirstContact contact = detail::advanceConservatively(
+      [&](double t) {
+        return std::make_pair(linkAfter(link, twist, t), movedBy(obstacle, obstacle_motion, t));
+      },
+      approach, inscribedRadius(link) + inscribedRadius(obstacle), horizon, until);
+  // Apart at t = 0 (overlap() above); a grazing contact found there is reported just after 0, as
+  // firstContact() does, so that time 0 always means overlapping now.
+  if (contact.contact && contact.time == 0.0) {
+    contact.time = std::min(horizon, std::numeric_limits<double>::denorm_min());
+  }
+  return contact;
+}
+
 // ---- the gate ---------------------------------------------------------------------------------
 
 struct Candidate {
@@ -193,7 +226,25 @@ struct Candidate {
   std::size_t obstacle{0};
   bool standing{true};
   bool overlapping{false};  // now: excluded from the contact rule (escape rule instead)
+  /// The gap between the bounding circles now, less twistContact()'s grazing band and rounding
+  /// [m]: a lower bound of distance() now, and of the distance at which a contact is reported.
+  double gap{0.0};
+  double link_speed{0.0};      ///< |v_c|, the link centre's speed under the full command [m/s]
+  double obstacle_speed{0.0};  ///< |v_o| [m/s]
 };
+
+/// No contact of the pair under k twist is reported before this time [s]: the bounding circles
+/// (which hold the ellipses whatever their turn) close at most at k |v_c| + |v_o| (the link centre
+/// moves at the constant speed k |v_c|, the obstacle's at |v_o|), and twistContact() reports a
+/// contact only at a distance within its grazing band, which `gap` has taken off. (The one
+/// exception is a pair stopped at the advancement's iteration cap, conservative.h's near-grazing
+/// case, whose claimed time may be earlier: it is then late only against that claim, never
+/// against the motion.)
+double earliestPossible(const Candidate& c, double k) {
+  if (!(c.gap > 0.0)) return 0.0;
+  const double speed = (k * c.link_speed + c.obstacle_speed) * (1.0 + kReachWidening);
+  return speed > 0.0 ? c.gap / speed : std::numeric_limits<double>::infinity();
+}
 
 struct ClosePair {
   Candidate pair;
@@ -219,28 +270,34 @@ class Gate {
   void measureClearance(std::vector<ClosePair>& close);
   bool pushesIn(const std::vector<ClosePair>& close);
   void contactRule(bool escaping);
+  void keepEarliest(PairTime& best, bool standing, double k, double until);
 
-  FirstContact contactOf(const Candidate& c, const Twist& twist, double horizon) {
+  /// twistContact() over `horizon`, reported only when at or before `until` (<= horizon).
+  FirstContact contactOf(const Candidate& c, const Twist& twist, double horizon, double until) {
     ++result_.pair_tests;
-    return twistContact(scene_.links[c.link].ellipse, twist, scene_.obstacles[c.obstacle].ellipse,
-                        scene_.obstacle_motions[c.obstacle], horizon);
+    return twistContactUntil(scene_.links[c.link].ellipse, twist,
+                             scene_.obstacles[c.obstacle].ellipse,
+                             scene_.obstacle_motions[c.obstacle], horizon, until);
   }
-  /// Keeps the earlier of `best` and (c, contact); ties to the smaller link, then obstacle name.
-  void keepEarlier(PairTime& best, const Candidate& c, const FirstContact& contact) const {
-    if (!contact.contact) return;
+  /// Keeps the earlier of `best` and `p`; ties to the smaller link, then obstacle name.
+  void keepEarlier(PairTime& best, const PairTime& p) const {
+    if (!p.found) return;
     if (best.found) {
-      if (contact.time > best.time) return;
-      if (contact.time == best.time) {
-        const std::string& link = scene_.links[c.link].name;
+      if (p.time > best.time) return;
+      if (p.time == best.time) {
+        const std::string& link = scene_.links[p.link].name;
         const std::string& best_link = scene_.links[best.link].name;
         if (link > best_link) return;
         if (link == best_link &&
-            scene_.obstacles[c.obstacle].name >= scene_.obstacles[best.obstacle].name) {
+            scene_.obstacles[p.obstacle].name >= scene_.obstacles[best.obstacle].name) {
           return;
         }
       }
     }
-    best = {true, contact.time, c.link, c.obstacle};
+    best = p;
+  }
+  void keepEarlier(PairTime& best, const Candidate& c, const FirstContact& contact) const {
+    keepEarlier(best, {contact.contact, contact.time, c.link, c.obstacle});
   }
   GateContact describe(const PairTime& p, double k) const;
   std::string pairText(const GateContact& c) const {
@@ -252,6 +309,10 @@ class Gate {
   const GateSettings& settings_;
   GateResult& result_;
   std::vector<Candidate> candidates_;
+  // keepEarliest()'s work space: bounds per candidate, candidates grouped by bound.
+  std::vector<double> bounds_;
+  std::vector<std::size_t> order_;
+  std::vector<std::size_t> bucket_starts_;
 };
 
 GateContact Gate::describe(const PairTime& p, double k) const {
@@ -273,10 +334,11 @@ bool Gate::findCandidates() {
   // Link l stays within |v_c| H + R_l of its centre at t = 0 under k twist for every k in [0, 1]:
   // its centre moves at the constant speed k |v_c| (the frame turns with it).
   double robot_reach = 0.0;
-  std::vector<double> reach(scene_.links.size());
+  std::vector<double> reach(scene_.links.size()), speed(scene_.links.size());
   for (std::size_t l = 0; l < scene_.links.size(); ++l) {
     const Ellipse& e = scene_.links[l].ellipse;
-    reach[l] = pointVelocity(twist_, e.center).norm() * horizon + boundingRadius(e);
+    speed[l] = pointVelocity(twist_, e.center).norm();
+    reach[l] = speed[l] * horizon + boundingRadius(e);
     robot_reach = std::max(robot_reach, e.center.norm() + reach[l]);
   }
   candidates_.clear();
@@ -301,7 +363,13 @@ bool Gate::findCandidates() {
         continue;
       }
       if (scene_.allowed.contains(scene_.links[l].name, scene_.obstacles[o].name)) continue;
-      candidates_.push_back({l, o, still, false});
+      const Ellipse& link = scene_.links[l].ellipse;
+      const double radii = boundingRadius(link) + boundingRadius(e);
+      // Less the grazing band (5e-10 of the inscribed radii) and the rounding of coordinates.
+      const double gap = (e.center - link.center).norm() - radii -
+                         kReachWidening * (radii + link.center.cwiseAbs().maxCoeff() +
+                                           e.center.cwiseAbs().maxCoeff());
+      candidates_.push_back({l, o, still, false, gap, speed[l], m.velocity.norm()});
     }
   }
   return true;
@@ -313,11 +381,8 @@ void Gate::measureClearance(std::vector<ClosePair>& close) {
     const Ellipse& link = scene_.links[c.link].ellipse;
     const Ellipse& obstacle = scene_.obstacles[c.obstacle].ellipse;
     // The bounding circles' gap is a lower bound of the distance: a pair neither close nor nearer
-    // than the best so far needs no distance() call (with a margin for rounding).
-    const double gap =
-        (obstacle.center - link.center).norm() - boundingRadius(link) - boundingRadius(obstacle);
-    const double slack = 1e-9 * (boundingRadius(link) + boundingRadius(obstacle));
-    if (gap - slack >= settings_.margin && gap - slack > best) continue;
+    // than the best so far needs no distance() call.
+    if (c.gap >= settings_.margin && c.gap > best) continue;
     ++result_.pair_tests;
     const Clearance now = distance(link, obstacle);
     c.overlapping = !now.separated;
@@ -369,16 +434,17 @@ void Gate::contactRule(bool escaping) {
   const double horizon = settings_.horizon;
   const double before = settings_.time_before_collision;
   const double res = settings_.resolution;
-  // Every pair at k = 1 over the horizon; standing and moving apart.
-  PairTime full, still, moving;
+  // The first contact of every pair at k = 1 over the horizon: `still`, the earliest standing
+  // pair's; `moving`, the earliest moving pair's when it comes no later than `still` (only then can
+  // it decide: after a standing contact before T_b the moving search runs whatever `moving` is, and
+  // otherwise one after `still` is not before T_b); `full`, the earlier of the two.
+  PairTime still, moving;
   std::size_t moving_count = 0;
-  for (const Candidate& c : candidates_) {
-    if (c.overlapping) continue;
-    const FirstContact contact = contactOf(c, twist_, horizon);
-    keepEarlier(full, c, contact);
-    keepEarlier(c.standing ? still : moving, c, contact);
-    moving_count += c.standing ? 0 : 1;
-  }
+  for (const Candidate& c : candidates_) moving_count += !c.overlapping && !c.standing;
+  keepEarliest(still, true, 1.0, horizon);
+  if (moving_count > 0) keepEarliest(moving, false, 1.0, still.found ? still.time : horizon);
+  PairTime full = still;
+  keepEarlier(full, moving);
   // The grid: k_n = n res for n = 0 .. top, and 1 (top_n: the largest n with n res < 1).
   const auto gridValue = [res](long n, long top) { return n > top ? 1.0 : n * res; };
   const long top = static_cast<long>(std::ceil(1.0 / res)) - 1;  // n res < 1 for n <= top
@@ -407,30 +473,35 @@ void Gate::contactRule(bool escaping) {
       k = gridValue(n, top);
     }
     if (moving_count > 0 && k > 0.0 && k < 1.0) {
-      // Searched down the grid: under k twist a moving obstacle may arrive sooner or later.
-      const Candidate* failed = nullptr;
+      // Searched down the grid: under k twist a moving obstacle may arrive sooner or later. Only
+      // the moving pairs that may touch before T_b at k = 1 are looked at: a smaller k only puts
+      // off the bound (earliestPossible() grows as k falls). Which pair rules a k out does not
+      // change the k taken: they go soonest bound first, and a pair that fails moves to the
+      // front, since it most likely fails the next k too.
+      std::vector<std::pair<double, const Candidate*>> near;
+      for (const Candidate& c : candidates_) {
+        if (c.overlapping || c.standing) continue;
+        const double bound = earliestPossible(c, 1.0);
+        if (bound < before) near.emplace_back(bound, &c);
+      }
+      std::sort(near.begin(), near.end(), [](const auto& a, const auto& b) {
+        return a.first < b.first || (a.first == b.first && a.second < b.second);
+      });
       for (; n > 0; --n) {
         k = gridValue(n, top);
         const Twist command = scaled(twist_, k);
         const auto fails = [&](const Candidate& c) {
-          const FirstContact contact = contactOf(c, command, before);
+          if (earliestPossible(c, k) >= before) return false;  // no contact reported before T_b
+          const FirstContact contact = contactOf(c, command, before, before);
           if (!contact.contact || contact.time >= before) return false;
           limiting = {true, contact.time, c.link, c.obstacle};
           limiting_scale = k;
           return true;
         };
-        // The pair that failed the last k first: it most likely fails this one too.
-        if (failed != nullptr && fails(*failed)) continue;
-        bool clear = true;
-        for (const Candidate& c : candidates_) {
-          if (c.overlapping || c.standing || &c == failed) continue;
-          if (fails(c)) {
-            failed = &c;
-            clear = false;
-            break;
-          }
-        }
-        if (clear) break;
+        const auto failing =
+            std::find_if(near.begin(), near.end(), [&](const auto& p) { return fails(*p.second); });
+        if (failing == near.end()) break;
+        std::rotate(near.begin(), failing, failing + 1);
       }
       if (n == 0) k = 0.0;
     }
@@ -445,10 +516,7 @@ void Gate::contactRule(bool escaping) {
     if (k > 0.0 && still.found && still.time <= k * horizon) {
       output = {true, still.time / k, still.link, still.obstacle};
     }
-    const Twist command = scaled(twist_, k);
-    for (const Candidate& c : candidates_) {
-      if (!c.overlapping && !c.standing) keepEarlier(output, c, contactOf(c, command, horizon));
-    }
+    if (moving_count > 0) keepEarliest(output, false, k, horizon);
   }
   result_.contact = describe(output, k);
 
@@ -490,6 +558,43 @@ void Gate::contactRule(bool escaping) {
             " s (stopping cannot avoid it)";
   }
   result_.reason = std::move(text);
+}
+
+/// Keeps in `best` the earliest of it and the first contacts over the horizon under k twist of the
+/// pairs not overlapping now that are standing (or moving), as keepEarlier() would over all of
+/// them, but only up to `until` [s] (<= horizon). A pair is searched only up to the earliest
+/// contact kept so far (twistContactUntil(): the same time when it comes no later) and not at
+/// all when earliestPossible() is later; pairs go in order of that bound (buckets of
+/// 1/kBoundBuckets of the window), so that the earliest contacts come first and cut the rest.
+void Gate::keepEarliest(PairTime& best, bool standing, double k, double until) {
+  constexpr std::size_t kBoundBuckets = 64;
+  const double horizon = settings_.horizon;
+  const Twist command = scaled(twist_, k);
+  const double window = best.found ? std::min(best.time, until) : until;
+  bounds_.resize(candidates_.size());
+  bucket_starts_.assign(kBoundBuckets + 1, 0);
+  const auto bucketOf = [&](double bound) {  // bound <= window
+    const double share = bound / window;     // NaN for 0 / 0
+    return share < 1.0 ? static_cast<std::size_t>(share * static_cast<double>(kBoundBuckets))
+                       : kBoundBuckets - 1;
+  };
+  for (std::size_t i = 0; i < candidates_.size(); ++i) {
+    const Candidate& c = candidates_[i];
+    const bool wanted = !c.overlapping && c.standing == standing;
+    bounds_[i] = wanted ? earliestPossible(c, k) : std::numeric_limits<double>::infinity();
+    if (bounds_[i] <= window) ++bucket_starts_[bucketOf(bounds_[i]) + 1];
+  }
+  for (std::size_t b = 0; b < kBoundBuckets; ++b) bucket_starts_[b + 1] += bucket_starts_[b];
+  order_.resize(bucket_starts_[kBoundBuckets]);
+  for (std::size_t i = 0; i < candidates_.size(); ++i) {
+    if (bounds_[i] <= window) order_[bucket_starts_[bucketOf(bounds_[i])]++] = i;
+  }
+  for (const std::size_t i : order_) {
+    const double limit = best.found ? std::min(best.time, until) : until;
+    if (bounds_[i] > limit) continue;
+    const Candidate& c = candidates_[i];
+    keepEarlier(best, c, contactOf(c, command, horizon, limit));
+  }
 }
 
 void Gate::run() {
@@ -547,29 +652,7 @@ std::string invalidTwistContactReason(const Ellipse& link, const Twist& twist,
 
 FirstContact twistContact(const Ellipse& link, const Twist& twist, const Ellipse& obstacle,
                           const Motion& obstacle_motion, double horizon) {
-  if (twist.wz == 0.0) {
-    // The frame does not turn: the link translates by (vx, vy), a Motion of the core.
-    return firstContact(link, Motion{linear(twist), 0.0}, obstacle, obstacle_motion, horizon);
-  }
-  if (overlap(link, obstacle)) return {true, 0.0};
-  if (!(horizon > 0.0)) return {};
-  const double approach =
-      largestRelativeSpeed(obstacle_motion.velocity, pointVelocity(twist, link.center),
-                           twist.wz * horizon) +
-      std::fabs(twist.wz) * (boundingRadius(link) - inscribedRadius(link)) +
-      std::fabs(obstacle_motion.angular_velocity) *
-          (boundingRadius(obstacle) - inscribedRadius(obstacle));
-  FirstContact contact = detail::advanceConservatively(
-      [&](double t) {
-        return std::make_pair(linkAfter(link, twist, t), movedBy(obstacle, obstacle_motion, t));
-      },
-      approach, inscribedRadius(link) + inscribedRadius(obstacle), horizon);
-  // Apart at t = 0 (overlap() above); a grazing contact found there is reported just after 0, as
-  // firstContact() does, so that time 0 always means overlapping now.
-  if (contact.contact && contact.time == 0.0) {
-    contact.time = std::min(horizon, std::numeric_limits<double>::denorm_min());
-  }
-  return contact;
+  return twistContactUntil(link, twist, obstacle, obstacle_motion, horizon, horizon);
 }
 
 const char* toString(GateAction action) {

@@ -529,20 +529,42 @@ TEST(Gate, ObstacleMovingTowardTheRobotStopsItEarlierThanAStandingOne) {
   expectLargestSafeScale(scene, twist, s, coming.scale);
 }
 
+// The scan's verdict on a gate's answer: no contact before T_b under scale * twist (scale > 0).
+void expectNoContactBeforeTimeBeforeCollision(const PathScene& scene, const Twist& twist,
+                                              const GateSettings& s, const GateResult& r,
+                                              int samples, int scene_index) {
+  if (!(r.scale > 0.0)) return;
+  const double t =
+      scannedSceneContact(scene, scaled(twist, r.scale), s.time_before_collision, samples);
+  EXPECT_LT(t, 0.0) << scene_index << ": contact at " << t << " under " << r.scale << ", "
+                    << r.reason;
+}
+
+// `count` links "l0", "l1", ... centred within +-half.x() by +-half.y() [m], radius_x and radius_y
+// in the given [min, max] ranges [m], at any angle.
+std::vector<NamedEllipse> randomLinks(ellipse_collision::test::RandomSource& rng, int count,
+                                      const Eigen::Vector2d& half, const Eigen::Vector2d& radius_x,
+                                      const Eigen::Vector2d& radius_y) {
+  std::vector<NamedEllipse> links;
+  for (int l = 0; l < count; ++l) {
+    links.push_back(link("l" + std::to_string(l),
+                         ellipse(rng.uniform(-half.x(), half.x()), rng.uniform(-half.y(), half.y()),
+                                 rng.uniform(radius_x[0], radius_x[1]),
+                                 rng.uniform(radius_y[0], radius_y[1]), rng.uniform(-3.0, 3.0))));
+  }
+  return links;
+}
+
 TEST(Gate, RandomScenesNeverLetAContactComeBeforeTimeBeforeCollision) {
   // Property against the scan, over random robots, twists and partly moving obstacles.
   // Mutations tried: every obstacle standing; rounding the scale to nearest -> both fail.
   ellipse_collision::test::RandomSource rng(73);
+  const GateSettings s = settings(3.0, 1.5, 0.2, 0.0, 0.05);
   int slowed = 0;
   for (int i = 0; i < 150; ++i) {
     std::vector<NamedEllipse> links, obstacles;
     std::vector<Motion> motions;
-    for (int l = 0; l < 3; ++l) {
-      links.push_back(
-          link("l" + std::to_string(l),
-               ellipse(rng.uniform(-0.4, 0.4), rng.uniform(-0.3, 0.3), rng.uniform(0.05, 0.25),
-                       rng.uniform(0.05, 0.25), rng.uniform(-3.0, 3.0))));
-    }
+    links = randomLinks(rng, 3, {0.4, 0.3}, {0.05, 0.25}, {0.05, 0.25});
     for (int o = 0; o < 4; ++o) {
       const double angle = rng.uniform(-3.2, 3.2), range = rng.uniform(1.0, 3.0);
       obstacles.push_back(
@@ -556,18 +578,103 @@ TEST(Gate, RandomScenesNeverLetAContactComeBeforeTimeBeforeCollision) {
     }
     const PathScene scene = sceneOf(links, obstacles, motions);
     const Twist twist{rng.uniform(-1.0, 1.5), rng.uniform(-0.5, 0.5), rng.uniform(-1.0, 1.0)};
-    const GateSettings s = settings(3.0, 1.5, 0.2, 0.0, 0.05);
     const GateResult r = gateCommand(scene, twist, s);
     ASSERT_TRUE(r.ok()) << r.error;
     if (r.action == GateAction::Escape) continue;  // overlapping at the start
-    if (r.scale > 0.0) {
-      const double t =
-          scannedSceneContact(scene, scaled(twist, r.scale), s.time_before_collision, 600);
-      EXPECT_LT(t, 0.0) << i << ": contact at " << t << " under " << r.scale << ", " << r.reason;
-    }
+    expectNoContactBeforeTimeBeforeCollision(scene, twist, s, r, 600, i);
     if (r.action == GateAction::Slow) ++slowed;
   }
   EXPECT_GT(slowed, 10);
+}
+
+// The earliest of every pair's twistContact() over the horizon, among standing (or moving, or
+// all) obstacles, pair by pair: what the gate's pruned search must reproduce exactly.
+struct EveryPair {
+  bool found{false};
+  double time{0.0};
+  std::string link, obstacle;
+};
+EveryPair everyPairFirst(const PathScene& scene, const Twist& twist, double horizon, int which) {
+  EveryPair best;
+  for (const NamedEllipse& l : scene.links) {
+    for (std::size_t o = 0; o < scene.obstacles.size(); ++o) {
+      const Motion& m = scene.obstacle_motions[o];
+      const bool moving = !m.velocity.isZero() || m.angular_velocity != 0.0;
+      if ((which == 0 && moving) || (which == 1 && !moving)) continue;
+      const FirstContact c = twistContact(l.ellipse, twist, scene.obstacles[o].ellipse, m, horizon);
+      if (c.contact && (!best.found || c.time < best.time)) {
+        best = {true, c.time, l.name, scene.obstacles[o].name};
+      }
+    }
+  }
+  return best;
+}
+
+TEST(Gate, CrowdedScenesFindTheContactsOfEveryPairSearchedOverTheHorizon) {
+  // Dozens of obstacles within reach of every link: the gate searches a pair only up to the
+  // earliest contact found so far and skips pairs whose bounding circles cannot close in time.
+  // Its first contacts must be those of every pair searched over the whole horizon, to the bit,
+  // and its scale the largest the scan finds safe. Mutations tried: the bound without the
+  // obstacle's speed; the search stopped at time_before_collision -> both fail.
+  ellipse_collision::test::RandomSource rng(91);
+  const GateSettings s = settings(3.0, 1.5, 0.1, 0.0, 0.05);
+  int slowed = 0, passed_with_contact = 0, moving_limited = 0;
+  for (int i = 0; i < 24; ++i) {
+    std::vector<NamedEllipse> links, obstacles;
+    std::vector<Motion> motions;
+    links = randomLinks(rng, 4, {0.3, 0.2}, {0.05, 0.2}, {0.03, 0.1});
+    const bool with_moving = i % 2 == 1;
+    for (int o = 0; o < 60; ++o) {
+      const double angle = rng.uniform(-3.2, 3.2), range = rng.uniform(0.9, 4.0);
+      const double r = rng.uniform(0.03, 0.3);
+      obstacles.push_back(obstacle("o" + std::to_string(o),
+                                   ellipse(range * std::cos(angle), range * std::sin(angle), r,
+                                           0.5 * r, rng.uniform(-3.0, 3.0))));
+      Motion m;
+      if (with_moving && rng.coin(0.3)) {
+        m.velocity = Eigen::Vector2d(rng.uniform(-0.6, 0.6), rng.uniform(-0.6, 0.6));
+        if (rng.coin(0.5)) m.angular_velocity = rng.uniform(-1.0, 1.0);
+      }
+      motions.push_back(m);
+    }
+    const PathScene scene = sceneOf(links, obstacles, motions);
+    const Twist twist{rng.uniform(-0.3, 1.2), rng.uniform(-0.2, 0.2), rng.uniform(-0.6, 0.6)};
+    const GateResult r = gateCommand(scene, twist, s);
+    ASSERT_TRUE(r.ok()) << r.error;
+    if (r.action == GateAction::Escape) continue;
+    const EveryPair full = everyPairFirst(scene, twist, s.horizon, 2);
+    const EveryPair still = everyPairFirst(scene, twist, s.horizon, 0);
+    if (r.scale == 1.0 || (full.found && full.time <= s.stop_time)) {
+      // The limiting contact is the first under the full command, over the whole horizon.
+      ASSERT_EQ(r.limiting.found, full.found) << i << " " << r.reason;
+      if (full.found) {
+        EXPECT_EQ(r.limiting.time, full.time) << i;
+        EXPECT_EQ(r.limiting.link, full.link) << i;
+        EXPECT_EQ(r.limiting.obstacle, full.obstacle) << i;
+        passed_with_contact += r.scale == 1.0;
+      }
+    } else if (r.limiting.scale == 1.0) {
+      // Slowed for a standing obstacle: t_s is the first standing contact of every pair.
+      ASSERT_TRUE(still.found) << i << " " << r.reason;
+      EXPECT_EQ(r.limiting.time, still.time) << i;
+      EXPECT_EQ(r.limiting.obstacle, still.obstacle) << i;
+    } else {
+      ++moving_limited;
+    }
+    if (r.scale == 1.0) {
+      EXPECT_EQ(r.contact.found, full.found) << i;
+      EXPECT_EQ(r.contact.time, full.found ? full.time : 0.0) << i;
+    }
+    expectNoContactBeforeTimeBeforeCollision(scene, twist, s, r, 400, i);
+    if (r.scale > 0.0 && r.scale < 1.0) {
+      ++slowed;
+      const double faster = scannedSceneContact(scene, scaled(twist, r.scale + s.resolution),
+                                                s.time_before_collision, 400);
+      EXPECT_GE(faster, 0.0) << i << ": " << r.scale + s.resolution << " was safe too";
+    }
+  }
+  EXPECT_GT(slowed, 6);
+  EXPECT_GT(passed_with_contact + moving_limited, 2);
 }
 
 TEST(Gate, AllowedPairsAndFarObstaclesAreNotLookedAt) {

@@ -178,6 +178,17 @@ std::string invalidGateReason(const PathScene& scene, const Twist& twist,
 /// an obstacle in the capsule of radius R_o about the segment its centre sweeps; pairs whose
 /// disc and capsule (grown by margin) are apart are never looked at, and obstacles outside the
 /// disc about the origin containing every link's cost one segment-distance test.
+/// Search, the same answers for less work: a pair cannot be reported in contact under k twist
+/// before its bounding circles' gap now (less twistContact()'s grazing band) over k |v_c| + |v_o|,
+/// the fastest they can close; the first contacts are found pair by pair, roughly soonest bound
+/// first, each pair searched only up to the earliest contact kept so far (the advancement's
+/// steps are those of the horizon, stopped early, so the earliest keeps its time) and not at all
+/// when its bound is later; moving pairs under the full command only up to the standing pairs'
+/// first contact (a later one decides nothing and is not the first); in the search over k, pairs
+/// whose bound is not before T_b are not tried. Actions, scales and times are those of every pair
+/// searched over the horizon; only a pair stopped at the advancement's step cap (a near-graze,
+/// claimed in contact at its last certified time) could be passed over for a later claim, which
+/// is then still never later than the motion's first contact.
 /// Inputs: the twist, the settings, the links and the obstacle_motions count are checked on
 /// every call (an error names them, the action is Stop); an obstacle is checked only when it
 /// passes the broadphase, where a non-finite one always does (invalidGateReason() checks all).
