@@ -82,7 +82,8 @@ TEST(DemoBase, ArcPoseMatchesSmallStepsOfTheCommandFromAnyPose) {
     const Pose2D after = poseAfterArc(start, twist, duration);
     EXPECT_NEAR(after.position.x(), x, 1e-9) << twist.vx << " " << twist.vy << " " << twist.wz;
     EXPECT_NEAR(after.position.y(), y, 1e-9);
-    EXPECT_NEAR(std::remainder(after.yaw - yaw, 2.0 * M_PI), 0.0, 1e-12);
+    // The oracle's heading sums 100,000 steps: ~1e-11 of rounding.
+    EXPECT_NEAR(std::remainder(after.yaw - yaw, 2.0 * M_PI), 0.0, 1e-10);
   }
 }
 
