@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
+#include <utility>
 #include <vector>
 
 #include "ellipse_collision/core/number_format.h"
@@ -130,17 +131,20 @@ DemoDriver::DemoDriver(const ros::NodeHandle& nh, const ros::NodeHandle& private
   base_.position = {number(p, "start/x"), number(p, "start/y")};
   base_.yaw = number(p, "start/yaw");
   dictKeys(p, "drive", {"speed", "turn_rate", "heading_gain", "tolerance"});
-  DriveSettings drive;
-  drive.speed = positive(p, "drive/speed");
-  drive.turn_rate = positive(p, "drive/turn_rate");
-  drive.heading_gain = positive(p, "drive/heading_gain");
-  drive.tolerance = positive(p, "drive/tolerance");
   dictKeys(p, "back_off", {"blocked_time", "speed", "turn_rate", "duration"});
+  DriveSettings drive;
   BackOffSettings back_off;
-  back_off.blocked_time = positive(p, "back_off/blocked_time");
-  back_off.speed = positive(p, "back_off/speed");
+  // Every one > 0 but the back-off's turn rate, which may turn either way or not at all.
+  for (const auto& [key, field] : {std::pair<const char*, double*>{"drive/speed", &drive.speed},
+                                   {"drive/turn_rate", &drive.turn_rate},
+                                   {"drive/heading_gain", &drive.heading_gain},
+                                   {"drive/tolerance", &drive.tolerance},
+                                   {"back_off/blocked_time", &back_off.blocked_time},
+                                   {"back_off/speed", &back_off.speed},
+                                   {"back_off/duration", &back_off.duration}}) {
+    *field = positive(p, key);
+  }
   back_off.turn_rate = number(p, "back_off/turn_rate");
-  back_off.duration = positive(p, "back_off/duration");
   base_script_ = std::make_unique<BaseScript>(pointList(p, "route"), drive, back_off);
 
   for (const std::string& joint : dictKeys(p, "joints", {})) {
