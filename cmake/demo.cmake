@@ -7,6 +7,7 @@ find_package(std_srvs REQUIRED)
 add_executable(demo_driver
   demo/src/demo_driver_node.cpp
   demo/src/demo_driver.cpp
+  demo/src/demo_base_control.cpp
   demo/src/demo_scanner.cpp
   demo/src/demo_trajectory.cpp)
 target_include_directories(demo_driver PRIVATE

@@ -143,6 +143,9 @@ ellipse_collision_add_rostest(test_respawn test/ros/respawn.test
 ellipse_collision_add_rostest(test_node_cli test/ros/node_cli.test
   test/ros/test_node_cli.cpp)
 add_dependencies(test_node_cli fit_link_ellipses)
+# Issue 34: the package's launch file with links_from_urdf; its guard fits the URDF too.
+ellipse_collision_add_rostest(test_urdf_launch test/ros/urdf_launch.test
+  test/ros/test_urdf_launch.cpp)
 ellipse_collision_add_rostest(test_bad_config test/ros/bad_config.test
   test/ros/test_bad_config.cpp)
 # A synthetic LaserScan through scan_obstacles into the node's ~obstacles.
@@ -211,6 +214,7 @@ ellipse_collision_add_gtest(test_demo_units LIBRARIES ellipse_collision_core ${X
   test/demo/rviz_top_down_view.cpp
   test/demo/screen_image.cpp
   demo/src/demo_scanner.cpp
+  demo/src/demo_base_control.cpp
   demo/src/demo_trajectory.cpp)
 target_include_directories(test_demo_units PRIVATE demo/src ${X11_INCLUDE_DIR})
 target_compile_definitions(test_demo_units PRIVATE

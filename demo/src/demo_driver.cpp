@@ -6,8 +6,11 @@
 #include <tf2_geometry_msgs/tf2_geometry_msgs.h>
 #include <visualization_msgs/MarkerArray.h>
 
+#include <algorithm>
 #include <cmath>
 #include <set>
+#include <utility>
+#include <vector>
 
 #include "ellipse_collision/core/number_format.h"
 #include "ellipse_collision/ros/conversions.h"
@@ -15,6 +18,10 @@
 
 namespace ellipse_collision {
 namespace {
+
+bool isZero(const core::Twist& twist) {
+  return twist.vx == 0.0 && twist.vy == 0.0 && twist.wz == 0.0;
+}
 
 std::string fullName(const ros::NodeHandle& nh, const std::string& key) {
   return nh.resolveName(key);
@@ -66,6 +73,37 @@ double positive(const ros::NodeHandle& nh, const std::string& key) {
   return value;
 }
 
+/// A list of [x, y] points [m], at least one.
+std::vector<Eigen::Vector2d> pointList(const ros::NodeHandle& nh, const std::string& key) {
+  XmlRpc::XmlRpcValue value;
+  const std::string name = fullName(nh, key);
+  if (!nh.getParam(key, value) || value.getType() != XmlRpc::XmlRpcValue::TypeArray ||
+      value.size() == 0) {
+    throw DemoConfigError("parameter " + name + ": expected a non-empty list of [x, y] points");
+  }
+  std::vector<Eigen::Vector2d> points;
+  for (int i = 0; i < value.size(); ++i) {
+    const std::string entry = name + "[" + std::to_string(i) + "]";
+    XmlRpc::XmlRpcValue& point = value[i];
+    if (point.getType() != XmlRpc::XmlRpcValue::TypeArray || point.size() != 2) {
+      throw DemoConfigError("parameter " + entry + ": expected [x, y]");
+    }
+    Eigen::Vector2d p;
+    for (int k = 0; k < 2; ++k) {
+      XmlRpc::XmlRpcValue& c = point[k];
+      if (c.getType() == XmlRpc::XmlRpcValue::TypeInt) {
+        p[k] = static_cast<int>(c);
+      } else if (c.getType() == XmlRpc::XmlRpcValue::TypeDouble && std::isfinite(double(c))) {
+        p[k] = static_cast<double>(c);
+      } else {
+        throw DemoConfigError("parameter " + entry + ": expected finite numbers [x, y]");
+      }
+    }
+    points.push_back(p);
+  }
+  return points;
+}
+
 std::string frameOr(const ros::NodeHandle& nh, const std::string& key,
                     const std::string& fallback) {
   if (!nh.hasParam(key)) return fallback;
@@ -83,17 +121,31 @@ DemoDriver::DemoDriver(const ros::NodeHandle& nh, const ros::NodeHandle& private
     : nh_(nh), private_nh_(private_nh) {
   const ros::NodeHandle& p = private_nh_;
   dictKeys(p, "",
-           {"rate", "odom_frame", "base_frame", "base_path", "joints", "moving_obstacle", "scanner",
-            "planned_path"});
+           {"rate", "odom_frame", "base_frame", "start", "route", "drive", "back_off", "joints",
+            "moving_obstacle", "scanner", "planned_path"});
   const double rate_hz = p.hasParam("rate") ? positive(p, "rate") : 30.0;
   odom_frame_ = frameOr(p, "odom_frame", "odom");
   base_frame_ = frameOr(p, "base_frame", "base_link");
 
-  dictKeys(p, "base_path", {"center_x", "center_y", "radius_x", "radius_y", "period"});
-  trajectory_.base.center = {number(p, "base_path/center_x"), number(p, "base_path/center_y")};
-  trajectory_.base.radius_x = positive(p, "base_path/radius_x");
-  trajectory_.base.radius_y = positive(p, "base_path/radius_y");
-  trajectory_.base.period_s = positive(p, "base_path/period");
+  dictKeys(p, "start", {"x", "y", "yaw"});
+  base_.position = {number(p, "start/x"), number(p, "start/y")};
+  base_.yaw = number(p, "start/yaw");
+  dictKeys(p, "drive", {"speed", "turn_rate", "heading_gain", "tolerance"});
+  dictKeys(p, "back_off", {"blocked_time", "speed", "turn_rate", "duration"});
+  DriveSettings drive;
+  BackOffSettings back_off;
+  // Every one > 0 but the back-off's turn rate, which may turn either way or not at all.
+  for (const auto& [key, field] : {std::pair<const char*, double*>{"drive/speed", &drive.speed},
+                                   {"drive/turn_rate", &drive.turn_rate},
+                                   {"drive/heading_gain", &drive.heading_gain},
+                                   {"drive/tolerance", &drive.tolerance},
+                                   {"back_off/blocked_time", &back_off.blocked_time},
+                                   {"back_off/speed", &back_off.speed},
+                                   {"back_off/duration", &back_off.duration}}) {
+    *field = positive(p, key);
+  }
+  back_off.turn_rate = number(p, "back_off/turn_rate");
+  base_script_ = std::make_unique<BaseScript>(pointList(p, "route"), drive, back_off);
 
   for (const std::string& joint : dictKeys(p, "joints", {})) {
     const std::string key = "joints/" + joint;
@@ -165,13 +217,18 @@ DemoDriver::DemoDriver(const ros::NodeHandle& nh, const ros::NodeHandle& private
       nh_.createTimer(ros::Duration(1.0 / check_rate_hz), &DemoDriver::onPathCheckTimer, this);
 
   joint_states_pub_ = nh_.advertise<sensor_msgs::JointState>("joint_states", 10);
+  cmd_vel_pub_ = nh_.advertise<geometry_msgs::Twist>("cmd_vel", 1);
+  gated_sub_ = nh_.subscribe("cmd_vel_gated", 1, &DemoDriver::onGatedCommand, this,
+                             ros::TransportHints().tcpNoDelay());
   scan_pub_ = nh_.advertise<sensor_msgs::LaserScan>("scan", 10);
   pause_service_ = private_nh_.advertiseService("pause", &DemoDriver::onPause, this);
 
   started_ = ros::Time::now();
   launched_ = started_;
+  last_cycle_ = started_;
   timer_ = nh_.createTimer(ros::Duration(1.0 / rate_hz), &DemoDriver::onTimer, this);
-  ROS_INFO_STREAM("demo_driver: moving " << base_frame_ << " in " << odom_frame_ << ", "
+  ROS_INFO_STREAM("demo_driver: driving " << base_frame_ << " in " << odom_frame_
+                                          << " through the gate (cmd_vel -> cmd_vel_gated), "
                                          << trajectory_.joints.size() << " joints and obstacle '"
                                          << obstacle_.name << "' at " << rate_hz << " Hz");
 }
@@ -187,6 +244,10 @@ bool DemoDriver::onPause(std_srvs::SetBool::Request& request,
   clock_at_start_s_ = demoTime(now);
   started_ = now;
   paused_ = request.data;
+  // Paused, the driver sends nothing and the base stands; resumed, it moves again only by a
+  // gated command for a new command.
+  gated_ = core::Twist();
+  gated_since_command_ = false;
   response.success = true;
   response.message = std::string(paused_ ? "paused" : "running") + " at demo time " +
                      core::formatNumber(clock_at_start_s_) + " s";
@@ -194,11 +255,24 @@ bool DemoDriver::onPause(std_srvs::SetBool::Request& request,
   return true;
 }
 
+void DemoDriver::onGatedCommand(const geometry_msgs::Twist& gated) {
+  if (paused_) return;
+  gated_.vx = gated.linear.x;
+  gated_.vy = gated.linear.y;
+  gated_.wz = gated.angular.z;
+  gated_since_command_ = true;
+}
+
 void DemoDriver::onTimer(const ros::TimerEvent&) {
   const ros::Time now = ros::Time::now();
   const double t = demoTime(now);
 
-  const Pose2D base = trajectory_.base.at(t);
+  // The base has moved by the gated command since the last cycle (the gate judged it at the
+  // pose of that cycle): the exact arc.
+  const double elapsed_s = std::max(0.0, (now - last_cycle_).toSec());
+  last_cycle_ = now;
+  if (!paused_) base_ = poseAfterArc(base_, gated_, elapsed_s);
+  const Pose2D& base = base_;
   geometry_msgs::TransformStamped odom_to_base;
   odom_to_base.header.stamp = now;
   odom_to_base.header.frame_id = odom_frame_;
@@ -227,19 +301,31 @@ void DemoDriver::onTimer(const ros::TimerEvent&) {
       }(),
       0.0);
   publishScan(now, base, obstacle);
-  last_plan_ = plannedPath(now, t);
+
+  if (!paused_) {
+    // The gate stopped the last command: it answered, with zero, a command that was not zero.
+    const bool gate_stopped = gated_since_command_ && isZero(gated_) && !isZero(command_);
+    command_ = base_script_->command(base_, t, gate_stopped);
+    gated_since_command_ = false;
+    geometry_msgs::Twist cmd;
+    cmd.linear.x = command_.vx;
+    cmd.linear.y = command_.vy;
+    cmd.angular.z = command_.wz;
+    cmd_vel_pub_.publish(cmd);
+  }
+  last_plan_ = plannedPath(now, paused_ ? core::Twist() : command_);
   planned_path_pub_.publish(last_plan_);
 }
 
-nav_msgs::Path DemoDriver::plannedPath(const ros::Time& now, double t) const {
+nav_msgs::Path DemoDriver::plannedPath(const ros::Time& now, const core::Twist& command) const {
   nav_msgs::Path path;
   path.header.stamp = now;
   path.header.frame_id = odom_frame_;
   const int steps = static_cast<int>(std::round(planned_horizon_s_ / planned_step_s_));
   for (int k = 0; k <= steps; ++k) {
     const double ahead = k * planned_step_s_;
-    // While paused the base stands still: the plan is the same pose, with rising stamps.
-    const Pose2D pose = trajectory_.base.at(paused_ ? t : t + ahead);
+    // While paused the command is zero: the plan is the same pose, with rising stamps.
+    const Pose2D pose = poseAfterArc(base_, command, ahead);
     geometry_msgs::PoseStamped stamped;
     stamped.header.stamp = now + ros::Duration(ahead);
     stamped.header.frame_id = odom_frame_;

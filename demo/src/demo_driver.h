@@ -1,5 +1,6 @@
 #pragma once
 
+#include <geometry_msgs/Twist.h>
 #include <nav_msgs/Path.h>
 #include <ros/ros.h>
 #include <std_srvs/SetBool.h>
@@ -7,9 +8,11 @@
 #include <tf2_ros/transform_broadcaster.h>
 #include <tf2_ros/transform_listener.h>
 
+#include <memory>
 #include <stdexcept>
 #include <string>
 
+#include "demo_base_control.h"
 #include "demo_scanner.h"
 #include "demo_trajectory.h"
 #include "ellipse_collision/app/ellipse_spec.h"
@@ -22,13 +25,19 @@ class DemoConfigError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// demo_driver: moves the demo robot and one obstacle along DemoTrajectory. Publishes joint_states
+/// demo_driver: drives the demo robot through the collision node's velocity gate and moves one
+/// obstacle and the joints along DemoTrajectory. The base: every cycle BaseScript's command goes
+/// out on `cmd_vel` (the launch remaps it to the node's ~cmd_vel_in), and the base moves only by
+/// the gated command on `cmd_vel_gated` (the node's ~cmd_vel_out), integrated exactly as an arc
+/// from one cycle to the next; the odom -> base transform is that pose. Publishes joint_states
 /// (for robot_state_publisher), the odom -> base transform, and what a planar laser scanner at
 /// the scanner frame sees of the moving obstacle, as a sensor_msgs/LaserScan on `scan` (which
 /// scan_obstacles turns into the collision node's ~obstacles). The service ~pause
 /// (std_srvs/SetBool) stops and restarts the demo clock; while paused everything is still
-/// published, with fresh stamps, at the same pose, so tf stays current and the scene stays still.
-/// The base's plan: every cycle the next `planned_path/horizon` seconds of its loop, as a timed
+/// published, with fresh stamps, at the same pose, so tf stays current and the scene stays still;
+/// no command goes out (the gate's cmd_vel_timeout zeroes it) and the base stands.
+/// The base's plan: every cycle the next `planned_path/horizon` seconds of its command held (the
+/// arc the gate judges, before the gate), as a timed
 /// nav_msgs/Path on `planned_path` (in the odom frame, one pose per `planned_path/step`); at
 /// `planned_path/check_rate` the driver checks it with the collision node's ~check_path and shows
 /// the answer on ~path_check_markers: the first contact as a magenta ring at the base's pose then
@@ -44,8 +53,9 @@ class DemoDriver {
   /// odom frame), once tf knows where the scanner sits on the base.
   void publishScan(const ros::Time& now, const Pose2D& base, const core::Ellipse& obstacle);
   bool onPause(std_srvs::SetBool::Request& request, std_srvs::SetBool::Response& response);
-  /// The next planned_horizon_s of the base's loop from demo time t, stamped from `now`.
-  nav_msgs::Path plannedPath(const ros::Time& now, double t) const;
+  /// The next planned_horizon_s of `command` held from the base's pose, stamped from `now`.
+  nav_msgs::Path plannedPath(const ros::Time& now, const core::Twist& command) const;
+  void onGatedCommand(const geometry_msgs::Twist& gated);
   void onPathCheckTimer(const ros::TimerEvent& event);
   /// The demo clock [s]: ROS time since start, minus the time spent paused.
   double demoTime(const ros::Time& now) const;
@@ -55,6 +65,12 @@ class DemoDriver {
   std::string odom_frame_;
   std::string base_frame_;
   DemoTrajectory trajectory_;
+  std::unique_ptr<BaseScript> base_script_;
+  Pose2D base_;                 ///< the base's pose in the odom frame, moved by the gated command
+  core::Twist command_;         ///< the last command sent on cmd_vel
+  core::Twist gated_;           ///< the last gated command received; the base moves by it
+  bool gated_since_command_{false};  ///< a gated command arrived since the last command
+  ros::Time last_cycle_;        ///< when the base's pose was last advanced
   app::EllipseSpec obstacle_;  ///< the moving obstacle's shape; x, y follow trajectory_.obstacle
   std::string scanner_frame_;
   ScannerModel scanner_;
@@ -63,6 +79,8 @@ class DemoDriver {
   tf2_ros::Buffer tf_buffer_;
   tf2_ros::TransformListener tf_listener_{tf_buffer_};
   ros::Publisher joint_states_pub_;
+  ros::Publisher cmd_vel_pub_;
+  ros::Subscriber gated_sub_;
   ros::Publisher scan_pub_;
   ros::ServiceServer pause_service_;
   ros::Timer timer_;

@@ -21,16 +21,6 @@ struct Pose2D {
   double yaw{0.0};
 };
 
-/// The base drives counter-clockwise around an axis-aligned ellipse, heading along its tangent,
-/// starting at (center_x + radius_x, center_y).
-struct LoopPath {
-  Eigen::Vector2d center{0.0, 0.0};  ///< [m]
-  double radius_x{1.0};              ///< [m], > 0
-  double radius_y{1.0};              ///< [m], > 0
-  double period_s{1.0};              ///< one lap [s], > 0
-  Pose2D at(double t_s) const;
-};
-
 /// Back and forth between two points with a smooth (cosine) speed profile, at `start` for t = 0.
 struct ShuttleMotion {
   Eigen::Vector2d start{0.0, 0.0};  ///< [m]
@@ -44,10 +34,10 @@ struct NamedJointMotion {
   SineMotion motion;
 };
 
-/// Everything the demo driver moves, as a function of the demo's own clock (which stops while the
-/// driver is paused).
+/// What the demo driver moves by the clock, as a function of the demo's own clock (which stops
+/// while the driver is paused). The base is not here: it moves by the velocity gate's output
+/// (demo_base_control.h).
 struct DemoTrajectory {
-  LoopPath base;
   std::vector<NamedJointMotion> joints;
   ShuttleMotion obstacle;
 };

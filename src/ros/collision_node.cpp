@@ -76,10 +76,14 @@ diagnostic_msgs::KeyValue keyValue(const std::string& key, const std::string& va
 
 }  // namespace
 
+NodeConfig loadCollisionNodeConfig(const ros::NodeHandle& private_nh) {
+  return loadNodeConfig(private_nh, fitUrdfLinksFromParam);
+}
+
 CollisionNode::CollisionNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
     : nh_(nh),
       private_nh_(private_nh),
-      config_(loadNodeConfig(private_nh, fitUrdfLinksFromParam)),
+      config_(loadCollisionNodeConfig(private_nh)),
       tf_buffer_(),
       tf_listener_(tf_buffer_) {
   app::MonitorHooks hooks;

@@ -1,5 +1,6 @@
 // rostest client for demo/launch/demo.launch in a virtual X server (see demo_screenshot.test): waits
-// until the demo has been both in collision and clear, freezes it (demo_driver/pause) at a moment
+// until the demo has been both in collision and clear and its base, driven through the velocity
+// gate, has been held by the gate and let go again without ever overlapping an obstacle, freezes it (demo_driver/pause) at a moment
 // with a collision (and, if the demo offers one soon, a warning pair), grabs the screen and checks
 // that rviz draws every colliding ellipse red, every other one in a warning pair yellow and every
 // clear one green, at the pixels the view in demo/rviz/demo.rviz maps it to. The links come from
@@ -191,7 +192,6 @@ bool complete(const CollisionState& s) { return s.unavailable_frames.empty(); }
 struct SeenKinds {
   explicit SeenKinds(const NodeConfig& config) {
     for (const app::EllipseSpec& spec : config.links) links.insert(spec.name);
-    for (const app::EllipseSpec& spec : config.obstacles) fixed_obstacles.insert(spec.name);
   }
   void onState(const CollisionState::ConstPtr& state) {
     if (!complete(*state)) return;
@@ -201,25 +201,52 @@ struct SeenKinds {
     for (const CollisionPair& pair : state->collisions) {
       if (links.count(pair.name_b)) {
         self = true;
-      } else if (fixed_obstacles.count(pair.name_b)) {
-        fixed_obstacle = true;
-      } else {
-        streamed_obstacle = true;
+      } else if (pair.name_a == kGatedBase) {
+        base_hits.insert(pair.name_b + " at " + std::to_string(state->header.stamp.toSec()));
       }
     }
   }
   bool all() {
     std::lock_guard<std::mutex> lock(mutex);
-    return clear && self && fixed_obstacle && streamed_obstacle;
+    return clear && self;
   }
 
+  /// The link the gate's command moves the robot by (demo.yaml gate/robot_frame's link).
+  static constexpr const char* kGatedBase = "base_link";
   std::set<std::string> links;
-  std::set<std::string> fixed_obstacles;
   std::mutex mutex;
   bool clear{false};
   bool self{false};
-  bool fixed_obstacle{false};
-  bool streamed_obstacle{false};
+  std::set<std::string> base_hits;  ///< obstacles base_link overlapped, with the time
+};
+
+bool moves(const geometry_msgs::Twist& t) {
+  return t.linear.x != 0.0 || t.linear.y != 0.0 || t.angular.z != 0.0;
+}
+
+/// The velocity gate's decisions for the driver's commands: held (STOP, or SLOW) and, after a
+/// hold, let go (ESCAPE, or PASS) with the base moving.
+struct GateSequence {
+  void onState(const GateState::ConstPtr& state) {
+    std::lock_guard<std::mutex> lock(mutex);
+    if (!moves(state->input)) return;
+    if (state->action == "STOP" || state->action == "SLOW") {
+      if (!held) held_reason = state->action + ": " + state->reason;
+      held = true;
+    } else if (held && (state->action == "ESCAPE" || state->action == "PASS") &&
+               moves(state->output)) {
+      if (!went_on) went_on_reason = state->action + ": " + state->reason;
+      went_on = true;
+    }
+  }
+  bool done() {
+    std::lock_guard<std::mutex> lock(mutex);
+    return held && went_on;
+  }
+  std::mutex mutex;
+  bool held{false};
+  bool went_on{false};
+  std::string held_reason, went_on_reason;
 };
 
 TEST(DemoInRviz, CollidingEllipsesAreRedNearOnesYellowAndClearOnesGreen) {
@@ -240,16 +267,27 @@ TEST(DemoInRviz, CollidingEllipsesAreRedNearOnesYellowAndClearOnesGreen) {
   tf2_ros::TransformListener tf_listener(tf_buffer);
   ros::ServiceClient pause = nh.serviceClient<std_srvs::SetBool>("/demo_driver/pause");
 
-  // The demo runs: its state has been clear, and links have collided with each other, with a
-  // configured obstacle and with the obstacle the driver streams, all with every frame known.
+  // The demo runs: its state has been clear, and links have collided with each other, all with
+  // every frame known. The base drives through the velocity gate: the gate has held a command
+  // (STOP or SLOW) and later let the base go on (ESCAPE or PASS), and all the while the base
+  // never overlapped an obstacle.
   SeenKinds seen(config);
   ros::Subscriber seen_subscriber =
       nh.subscribe(nodeTopic("collisions"), 100, &SeenKinds::onState, &seen);
-  waitUntil([&seen] { return seen.all(); }, 100.0);
+  GateSequence gate;
+  ros::Subscriber gate_subscriber =
+      nh.subscribe(nodeTopic("gate_state"), 100, &GateSequence::onState, &gate);
+  waitUntil([&] { return seen.all() && gate.done(); }, 100.0);
   EXPECT_TRUE(seen.self) << "no self-collision";
-  EXPECT_TRUE(seen.fixed_obstacle) << "no collision with a configured obstacle";
-  EXPECT_TRUE(seen.streamed_obstacle) << "no collision with the streamed obstacle";
   ASSERT_TRUE(seen.clear) << "the demo was never clear";
+  {
+    std::lock_guard<std::mutex> lock(gate.mutex);
+    EXPECT_TRUE(gate.held) << "the gate never stopped or slowed the base";
+    EXPECT_TRUE(gate.went_on) << "after " << gate.held_reason
+                              << ", the gate never let the base go on";
+    ROS_INFO_STREAM("demo gate: held (" << gate.held_reason << "), then went on ("
+                                        << gate.went_on_reason << ")");
+  }
   ASSERT_TRUE(pause.waitForExistence(ros::Duration(30.0)));
 
   // Freeze it while something collides, in the first attempts only at a moment that also has a
@@ -346,6 +384,10 @@ TEST(DemoInRviz, CollidingEllipsesAreRedNearOnesYellowAndClearOnesGreen) {
                                           << where.str();
   ROS_INFO_STREAM("demo screenshot: " << where.str());
   EXPECT_TRUE(setPaused(pause, false));
+  std::lock_guard<std::mutex> lock(seen.mutex);
+  std::string hits;
+  for (const std::string& hit : seen.base_hits) hits += hit + "\n";
+  EXPECT_EQ(hits, "") << SeenKinds::kGatedBase << " overlapped obstacles through the gate";
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 // Units behind the demo and its screenshot test that need no ROS master: the demo trajectory, the
-// rviz view reader and pixel mapping, and finding rviz's render panel in a picture.
+// base's script and its arc, the rviz view reader and pixel mapping, and finding rviz's render
+// panel in a picture.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -9,6 +10,7 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "demo_base_control.h"
 #include "demo_scanner.h"
 #include "demo_trajectory.h"
 #include "rviz_top_down_view.h"
@@ -60,31 +62,83 @@ TEST(DemoScanner, ScanSeesTheNearestEllipseInTheSensorsFrame) {
   EXPECT_TRUE(std::isinf(ranges[2]));
 }
 
-TEST(DemoTrajectory, LoopStartsOnTheXAxisAndGoesCounterClockwise) {
-  LoopPath path;
-  path.center = {1.0, -2.0};
-  path.radius_x = 2.0;
-  path.radius_y = 0.5;
-  path.period_s = 8.0;
-  EXPECT_NEAR(path.at(0.0).position.x(), 3.0, 1e-12);
-  EXPECT_NEAR(path.at(0.0).position.y(), -2.0, 1e-12);
-  EXPECT_NEAR(path.at(2.0).position.x(), 1.0, 1e-12);  // a quarter lap: top of the loop
-  EXPECT_NEAR(path.at(2.0).position.y(), -1.5, 1e-12);
-  EXPECT_NEAR(path.at(8.0).position.x(), 3.0, 1e-12);  // one lap
+TEST(DemoBase, ArcPoseMatchesSmallStepsOfTheCommandFromAnyPose) {
+  // Oracle: the unicycle integrated in 100,000 small steps (midpoint heading).
+  Pose2D start;
+  start.position = {1.5, -0.7};
+  start.yaw = 2.5;
+  for (const core::Twist& twist : {core::Twist{0.4, 0.0, 0.0}, core::Twist{-0.25, 0.0, 0.6},
+                                   core::Twist{0.3, 0.1, -1.2}, core::Twist{0.0, 0.0, 0.8}}) {
+    const double duration = 2.0;
+    const int steps = 100000;
+    const double dt = duration / steps;
+    double x = start.position.x(), y = start.position.y(), yaw = start.yaw;
+    for (int i = 0; i < steps; ++i) {
+      const double mid = yaw + 0.5 * twist.wz * dt;
+      x += (std::cos(mid) * twist.vx - std::sin(mid) * twist.vy) * dt;
+      y += (std::sin(mid) * twist.vx + std::cos(mid) * twist.vy) * dt;
+      yaw += twist.wz * dt;
+    }
+    const Pose2D after = poseAfterArc(start, twist, duration);
+    EXPECT_NEAR(after.position.x(), x, 1e-9) << twist.vx << " " << twist.vy << " " << twist.wz;
+    EXPECT_NEAR(after.position.y(), y, 1e-9);
+    // The oracle's heading sums 100,000 steps: ~1e-11 of rounding.
+    EXPECT_NEAR(std::remainder(after.yaw - yaw, 2.0 * M_PI), 0.0, 1e-10);
+  }
 }
 
-TEST(DemoTrajectory, LoopHeadingFollowsTheMotion) {
-  LoopPath path;
-  path.radius_x = 2.0;
-  path.radius_y = 1.1;
-  path.period_s = 30.0;
-  // Oracle: the direction of a small step along the path.
-  for (double t = 0.0; t < 30.0; t += 1.7) {
-    const Eigen::Vector2d step = path.at(t + 1e-6).position - path.at(t - 1e-6).position;
-    const double yaw = path.at(t).yaw;
-    EXPECT_NEAR(std::cos(yaw), step.normalized().x(), 1e-6) << "t = " << t;
-    EXPECT_NEAR(std::sin(yaw), step.normalized().y(), 1e-6) << "t = " << t;
-  }
+BaseScript exampleScript() {
+  DriveSettings drive;  // 0.4 m/s, 0.8 rad/s, gain 1.5, tolerance 0.3 m
+  BackOffSettings back_off;  // blocked 1 s, then 0.25 m/s back turning 0.6 rad/s for 2.5 s
+  return BaseScript({{2.0, 0.0}, {0.0, 2.0}}, drive, back_off);
+}
+
+TEST(DemoBase, DrivesStraightAtAWaypointAheadAndTurnsOnTheSpotForOneBehind) {
+  BaseScript script = exampleScript();
+  Pose2D pose;  // at the origin facing +x: the first waypoint is straight ahead
+  core::Twist twist = script.command(pose, 0.0, false);
+  EXPECT_NEAR(twist.vx, 0.4, 1e-12);
+  EXPECT_NEAR(twist.wz, 0.0, 1e-12);
+  pose.yaw = M_PI;  // facing away: turn (either way), no forward speed
+  twist = script.command(pose, 0.1, false);
+  EXPECT_NEAR(twist.vx, 0.0, 1e-12);
+  EXPECT_NEAR(std::fabs(twist.wz), 0.8, 1e-12);
+  pose.yaw = -0.2;  // the waypoint a little to the left: turn left at the gain
+  twist = script.command(pose, 0.2, false);
+  EXPECT_NEAR(twist.wz, 1.5 * 0.2, 1e-12);
+  EXPECT_NEAR(twist.vx, 0.4 * std::cos(0.2), 1e-12);
+}
+
+TEST(DemoBase, AReachedWaypointGivesWayToTheNextAndTheRouteCloses) {
+  BaseScript script = exampleScript();
+  Pose2D pose;
+  pose.position = {1.8, 0.0};  // within 0.3 m of the first
+  script.command(pose, 0.0, false);
+  EXPECT_EQ(script.waypoint(), 1u);
+  pose.position = {0.1, 1.9};
+  script.command(pose, 0.1, false);
+  EXPECT_EQ(script.waypoint(), 0u);
+}
+
+TEST(DemoBase, HeldByTheGateItBacksOutTurningThenGoesOnToTheNextWaypoint) {
+  BaseScript script = exampleScript();
+  Pose2D pose;
+  // Stopped for 0.9 s only, then let through: no back-off, the timer starts again.
+  for (double t = 0.0; t < 0.95; t += 0.1) EXPECT_GT(script.command(pose, t, true).vx, 0.0);
+  EXPECT_GT(script.command(pose, 1.0, false).vx, 0.0);
+  for (double t = 1.1; t < 2.05; t += 0.1) EXPECT_GT(script.command(pose, t, true).vx, 0.0);
+  // 1 s held: reverse while turning, for 2.5 s, whatever the gate does meanwhile.
+  const core::Twist back = script.command(pose, 2.1, true);
+  EXPECT_NEAR(back.vx, -0.25, 1e-12);
+  EXPECT_NEAR(back.wz, 0.6, 1e-12);
+  EXPECT_EQ(script.waypoint(), 1u);
+  EXPECT_TRUE(script.backingOff(4.5));
+  EXPECT_NEAR(script.command(pose, 4.5, false).vx, -0.25, 1e-12);
+  // Then on to the next waypoint, (0, 2): to the left, so a left turn on the spot.
+  EXPECT_FALSE(script.backingOff(4.7));
+  const core::Twist on = script.command(pose, 4.7, false);
+  EXPECT_NEAR(on.wz, 0.8, 1e-12);
+  EXPECT_NEAR(on.vx, 0.0, 1e-9);
 }
 
 TEST(DemoTrajectory, ShuttleGoesToTheEndAndBackOncePerPeriod) {

@@ -19,6 +19,12 @@
 
 namespace ellipse_collision {
 
+/// The node's configuration from its private namespace: loadNodeConfig() with `links_from_urdf`
+/// fitted by fitUrdfLinksFromParam() (URDF and meshes). The node and its --check-config guard
+/// both validate through this one call, so the guard refuses exactly what the node refuses.
+/// Throws ConfigError.
+NodeConfig loadCollisionNodeConfig(const ros::NodeHandle& private_nh);
+
 /// ellipse_collision_node: the ROS edge of app::CollisionMonitor. It reads the parameters, binds
 /// tf, converts messages, advertises and publishes; every rule is the monitor's.
 /// Single-threaded: every callback runs from ros::spin(), tf arrives on the listener's own thread.
