@@ -12,11 +12,11 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <random>
 #include <string>
 #include <vector>
 
 #include "ellipse_collision/app/collision_monitor.h"
+#include "floor_obstacles.h"
 
 namespace ellipse_collision::app {
 namespace {
@@ -39,22 +39,19 @@ std::vector<EllipseSpec> links() {
   return specs;
 }
 
+/// `count` standing obstacles in map, a clearing of 1.5 m about the robot's track.
 std::vector<EllipseSpec> obstacles(int count, double half_side) {
-  std::mt19937 rng(11);
-  std::uniform_real_distribution<double> position(-half_side, half_side), radius(0.05, 0.4),
-      angle(-3.1, 3.1);
   std::vector<EllipseSpec> specs;
-  for (int i = 0; i < count; ++i) {
+  int i = 0;
+  for (const bench::FloorObstacle& o : bench::floorObstacles(count, half_side, 1.5, 11)) {
     EllipseSpec spec;
-    spec.name = "obstacle_" + std::to_string(i);
+    spec.name = "obstacle_" + std::to_string(i++);
     spec.frame_id = "map";
-    do {
-      spec.x = position(rng);
-      spec.y = position(rng);
-    } while (std::hypot(spec.x, spec.y) < 1.5);  // a clearing about the robot's track
-    spec.angle = angle(rng);
-    spec.radius_x = radius(rng);
-    spec.radius_y = spec.radius_x * 0.5;
+    spec.x = o.x;
+    spec.y = o.y;
+    spec.angle = o.angle;
+    spec.radius_x = o.radius_x;
+    spec.radius_y = o.radius_y;
     specs.push_back(spec);
   }
   return specs;

@@ -21,13 +21,13 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <random>
 #include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
 
 #include "ellipse_collision/ros/messages.h"
+#include "floor_obstacles.h"
 
 namespace ellipse_collision {
 namespace {
@@ -115,22 +115,20 @@ class RoundTrip {
   int step_{0};
 };
 
+/// One obstacle per 4 m^2 in odom, a clearing of 1.5 m about the robot.
 std::vector<Ellipse> warehouse(int count) {
-  std::mt19937 rng(5);
-  const double half = std::sqrt(static_cast<double>(count));
-  std::uniform_real_distribution<double> position(-half, half), radius(0.05, 0.4), angle(-3, 3);
   std::vector<Ellipse> obstacles;
-  for (int i = 0; i < count; ++i) {
+  int i = 0;
+  for (const bench::FloorObstacle& o :
+       bench::floorObstacles(count, std::sqrt(static_cast<double>(count)), 1.5, 5)) {
     Ellipse e;
-    e.name = "obstacle_" + std::to_string(i);
+    e.name = "obstacle_" + std::to_string(i++);
     e.frame_id = "odom";
-    do {
-      e.x = position(rng);
-      e.y = position(rng);
-    } while (std::hypot(e.x, e.y) < 1.5);
-    e.angle = angle(rng);
-    e.radius_x = radius(rng);
-    e.radius_y = 0.5 * e.radius_x;
+    e.x = o.x;
+    e.y = o.y;
+    e.angle = o.angle;
+    e.radius_x = o.radius_x;
+    e.radius_y = o.radius_y;
     obstacles.push_back(e);
   }
   return obstacles;
@@ -148,7 +146,7 @@ int run(const Options& options) {
   RoundTrip gate(nh, options.node + "/cmd_vel_in", options.node + "/cmd_vel_out");
   std::unique_ptr<RoundTrip> relay;
   if (!options.relay_in.empty()) relay.reset(new RoundTrip(nh, options.relay_in, options.relay_out));
-  ros::ServiceClient add = nh.serviceClient<AddObstacles>(options.node + "/add_obstacles", true);
+  ros::ServiceClient add = nh.serviceClient<AddObstacles>(options.node + "/add_obstacles");
   ros::ServiceClient remove = nh.serviceClient<RemoveObstacles>(options.node + "/remove_obstacles");
   if (!add.waitForExistence(ros::Duration(30.0)) || !gate.connect() ||
       (relay && !relay->connect())) {

@@ -21,6 +21,7 @@
 #include "ellipse_collision/app/ellipse_registry.h"
 #include "ellipse_collision/app/placement_cache.h"
 #include "ellipse_collision/core/scene_check.h"
+#include "floor_obstacles.h"
 
 namespace ellipse_collision::app {
 namespace {
@@ -55,19 +56,17 @@ std::vector<EllipseSpec> links(const std::string& frame) {
 
 // Obstacles as bench_service_roundtrip adds them: over a 20 m x 20 m floor about the links.
 std::vector<EllipseSpec> obstacles(int count) {
-  std::mt19937 rng(11);
-  std::uniform_real_distribution<double> position(-10.0, 10.0), radius(0.05, 0.4),
-      angle(-3.1, 3.1);
   std::vector<EllipseSpec> specs;
-  for (int i = 0; i < count; ++i) {
+  int i = 0;
+  for (const bench::FloorObstacle& o : bench::floorObstacles(count, 10.0, 0.0, 11)) {
     EllipseSpec spec;
-    spec.name = "obstacle_" + std::to_string(i);
+    spec.name = "obstacle_" + std::to_string(i++);
     spec.frame_id = "map";
-    spec.x = position(rng);
-    spec.y = position(rng);
-    spec.angle = angle(rng);
-    spec.radius_x = radius(rng);
-    spec.radius_y = spec.radius_x * 0.5;
+    spec.x = o.x;
+    spec.y = o.y;
+    spec.angle = o.angle;
+    spec.radius_x = o.radius_x;
+    spec.radius_y = o.radius_y;
     specs.push_back(spec);
   }
   return specs;

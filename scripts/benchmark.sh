@@ -147,17 +147,7 @@ port="$(/usr/bin/python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.
 export ROS_MASTER_URI="http://127.0.0.1:${port}" ROS_IP=127.0.0.1 ROS_LOG_DIR="${out}/ros_log"
 echo
 echo "Running bench_service_roundtrip against ellipse_collision_node (roscore on port ${port})"
-roscore -p "${port}" > "${out}/roscore.txt" 2>&1 &
-pids+=($!)
-for _ in $(seq 100); do
-  rosparam get /run_id > /dev/null 2>&1 && break
-  sleep 0.2
-done
-if ! rosparam get /run_id > /dev/null 2>&1; then
-  cat "${out}/roscore.txt" >&2
-  echo "roscore did not start" >&2
-  exit 1
-fi
+start_roscore "${port}" "${out}/roscore.txt" || exit 1
 rosparam load "${repo}/bench/service_roundtrip.yaml" /ellipse_collision
 "${bin}/ellipse_collision_node" __name:=ellipse_collision > "${out}/node.txt" 2>&1 &
 pids+=($!)
@@ -177,12 +167,7 @@ stop_all
 echo
 echo "Running bench_gate_roundtrip against ellipse_collision_node (20 links, a turning command;"
 echo "goal: p99 under 1 ms at 10,000 obstacles)"
-roscore -p "${port}" > "${out}/roscore_gate.txt" 2>&1 &
-pids+=($!)
-for _ in $(seq 100); do
-  rosparam get /run_id > /dev/null 2>&1 && break
-  sleep 0.2
-done
+start_roscore "${port}" "${out}/roscore_gate.txt" || exit 1
 rosparam load "${repo}/bench/gate_roundtrip.yaml" /ellipse_collision
 "${bin}/ellipse_collision_node" __name:=ellipse_collision > "${out}/node_gate.txt" 2>&1 &
 pids+=($!)

@@ -56,12 +56,7 @@ for run in ${runs}; do
   rate="${run#*@}"
   port="$(/usr/bin/python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')"
   export ROS_MASTER_URI="http://127.0.0.1:${port}" ROS_IP=127.0.0.1 ROS_LOG_DIR="${out}/ros_log"
-  roscore -p "${port}" > "${out}/roscore.txt" 2>&1 &
-  pids+=($!)
-  for _ in $(seq 100); do
-    rosparam get /run_id > /dev/null 2>&1 && break
-    sleep 0.2
-  done
+  start_roscore "${port}" "${out}/roscore.txt" || exit 1
   {
     echo "fixed_frame: map"
     echo "rate: ${rate}"

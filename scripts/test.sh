@@ -35,6 +35,8 @@ path, name, status, log = sys.argv[1], sys.argv[2], int(sys.argv[3]), sys.argv[4
 failure = ""
 if status != 0:
     tail = open(log, errors="replace").read()[-4000:]
+    # Terminal colours (ESC) and other control characters are not allowed in XML.
+    tail = "".join(c for c in tail if c in "\n\t" or ord(c) >= 32)
     failure = '<failure message="exit status %d">%s</failure>' % (status, escape(tail))
 with open(path, "w") as out:
     out.write('<?xml version="1.0" encoding="UTF-8"?>\n<testsuite name="%s" tests="1" failures="%d" '

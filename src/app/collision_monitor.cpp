@@ -296,8 +296,8 @@ std::optional<GateDecision> CollisionMonitor::gateWatchdog(double now_s) {
   timeout_sent_ = true;
   GateDecision decision = stoppedDecision(
       GateAction::Timeout, VelocityCommand(),
-      "stopped: no command on ~cmd_vel_in for " + core::formatNumber(now_s - last_command_s_) +
-          " s, longer than cmd_vel_timeout " + core::formatNumber(timeout) + " s");
+      "stopped: no command on ~cmd_vel_in within cmd_vel_timeout " + core::formatNumber(timeout) +
+          " s of the last one");
   last_gate_action_ = toString(decision.action);
   last_gate_reason_ = decision.reason;
   ++gate_stops_;
