@@ -25,20 +25,10 @@
 
 namespace {
 
-using ellipse_collision::test::World;
-
-/// An 8 m x 6 m room (x within [-3, 5], y within [-3, 3]) with ten round objects, 0.1 m to 0.4 m
-/// in radius, 5 mm range noise and a few NaN and inf beams.
+/// objectRoomWorld() with 5 mm range noise and a few NaN and inf beams.
 sensor_msgs::LaserScan objectRoomScan() {
-  std::mt19937_64 random(40);
-  std::uniform_real_distribution<double> x(-2.5, 4.5), y(-2.5, 2.5), r(0.1, 0.4);
-  World world;
-  world.addBox(-3.0, -3.0, 5.0, 3.0);
-  while (world.pillars.size() < 10) {
-    const ellipse_collision::test::WorldCircle c{{x(random), y(random)}, r(random)};
-    if (c.centre.norm() > c.radius + 0.3) world.pillars.push_back(c);
-  }
-  const auto fields = ellipse_collision::test::castScan(world, 720, 30.0, 0.005, 40);
+  const auto fields =
+      ellipse_collision::test::castScan(ellipse_collision::test::objectRoomWorld(), 720, 30.0, 0.005, 40);
   sensor_msgs::LaserScan scan;
   scan.header.frame_id = "laser";
   scan.angle_min = static_cast<float>(fields.angle_min);

@@ -3,6 +3,7 @@
 #include <Eigen/Cholesky>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 
 #include "ellipse_collision/core/enclosing_ellipse.h"
@@ -44,15 +45,18 @@ std::size_t splitIndex(const std::vector<SensorReturn>& run, std::size_t begin, 
   return best;
 }
 
+/// The signed angle from a's direction to b's, in (-pi, pi] [rad].
+double signedAngle(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  return std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));
+}
+
 /// Which side of the run [begin, end) (returns in angular order) the beam along `ray` passes:
-/// -1 before its first return, +1 after its last, 0 within its span (or the origin, ray zero).
+/// -1 before its return begin + inner, +1 after its return end - 1 - inner, 0 between them (or
+/// the origin, ray zero). Needs end - begin > 2 inner.
 int sideOf(const std::vector<SensorReturn>& run, std::size_t begin, std::size_t end,
-           const Eigen::Vector2d& ray) {
+           const Eigen::Vector2d& ray, std::size_t inner = 0) {
   if (ray.isZero()) return 0;
-  const Eigen::Vector2d a = run[begin].point, b = run[end - 1].point;
-  const auto signedAngle = [](const Eigen::Vector2d& from, const Eigen::Vector2d& to) {
-    return std::atan2(from.x() * to.y() - from.y() * to.x(), from.dot(to));
-  };
+  const Eigen::Vector2d a = run[begin + inner].point, b = run[end - 1 - inner].point;
   const double span = signedAngle(a, b), toward = signedAngle(a, ray);
   const double s = span < 0.0 ? -1.0 : 1.0;  // orient the run from 0 to |span|
   if (s * toward < 0.0) return -1;
@@ -60,9 +64,31 @@ int sideOf(const std::vector<SensorReturn>& run, std::size_t begin, std::size_t 
   return 0;
 }
 
+/// The principal direction of `points` (of their covariance's larger eigenvalue) and their
+/// half-width across it [m].
+std::pair<Eigen::Vector2d, double> principalBand(const std::vector<Eigen::Vector2d>& points) {
+  Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+  for (const Eigen::Vector2d& p : points) mean += p;
+  mean /= static_cast<double>(points.size());
+  double xx = 0.0, xy = 0.0, yy = 0.0;
+  for (const Eigen::Vector2d& p : points) {
+    const Eigen::Vector2d q = p - mean;
+    xx += q.x() * q.x(), xy += q.x() * q.y(), yy += q.y() * q.y();
+  }
+  const double angle = 0.5 * std::atan2(2.0 * xy, xx - yy);
+  const Eigen::Vector2d direction(std::cos(angle), std::sin(angle));
+  double lo = 0.0, hi = 0.0;
+  for (const Eigen::Vector2d& p : points) {
+    const double across = direction.x() * (p.y() - mean.y()) - direction.y() * (p.x() - mean.x());
+    lo = std::min(lo, across), hi = std::max(hi, across);
+  }
+  return {direction, 0.5 * (hi - lo)};
+}
+
 /// The circle through `points` by least squares (I. Kasa, "A circle fitting procedure and its
 /// error analysis", IEEE Trans. Instrum. Meas. 25, 1976: x^2 + y^2 + D x + E y + F = 0), grown to
-/// contain every point; nothing when the points are (nearly) collinear.
+/// contain every point; nothing when the points are (nearly) collinear or not round (some point
+/// more than a fifth of the radius inside the circle).
 std::optional<Ellipse> enclosingCircleFit(const std::vector<Eigen::Vector2d>& points) {
   // Centred on the mean for conditioning.
   Eigen::Vector2d mean = Eigen::Vector2d::Zero();
@@ -79,8 +105,14 @@ std::optional<Ellipse> enclosingCircleFit(const std::vector<Eigen::Vector2d>& po
   const Eigen::Vector3d def = normal.ldlt().solve(rhs);
   if (!def.allFinite()) return std::nullopt;
   const Eigen::Vector2d centre = mean - 0.5 * def.head<2>();
-  double radius = 0.0;
-  for (const Eigen::Vector2d& p : points) radius = std::max(radius, (p - centre).norm());
+  double radius = 0.0, nearest = std::numeric_limits<double>::infinity();
+  for (const Eigen::Vector2d& p : points) {
+    const double distance = (p - centre).norm();
+    radius = std::max(radius, distance), nearest = std::min(nearest, distance);
+  }
+  // Round: every point within a fifth of the radius of the circle (a pillar's arc with noise;
+  // not a corner, whose middle lies far inside the circle through its ends).
+  if (!(radius - nearest <= 0.2 * radius)) return std::nullopt;
   // A few ulps more, so that rounding leaves every point inside.
   radius *= 1.0 + 1e-12;
   if (!(radiusOk(radius) && coordinateOk(centre.x()) && coordinateOk(centre.y()))) {
@@ -255,76 +287,101 @@ ContourEllipses contourEllipses(const std::vector<std::vector<SensorReturn>>& co
       }
       points.clear();
       for (std::size_t i = begin; i < end; ++i) points.push_back(contour[i].point);
-      EnclosingEllipse fit = enclosingEllipseWithMinRadius(points, min_radius);
+      ContourEllipse out{Ellipse{}, contour[begin].key, n, false};
+      std::vector<Eigen::Vector2d> rays;  // the beams the candidates entered
+      // Takes `candidate` when it stays out of the free space.
+      const auto accepted = [&](const Ellipse& candidate, bool reduced) {
+        Eigen::Vector2d ray;
+        if (free_space.entered(candidate, &ray)) {
+          rays.push_back(ray);
+          return false;
+        }
+        out.ellipse = candidate;
+        out.radius_reduced = reduced;
+        result.ellipses.push_back(out);
+        return true;
+      };
+      // 1. A thin run (a wall's returns) whose band fits within min_radius: the band's ellipse,
+      // O(n), about what the minimum-area optimiser would give at far more cost.
+      const auto [direction, half_width] = principalBand(points);
+      const bool thin = n >= 3 && std::sqrt(2.0) * half_width <= min_radius;
+      if (n >= 3) {
+        // 2. A round object's arc: the circle it lies on (not the huge one of a nearly straight
+        // run: at most the chord's length in radius). O(n) too.
+        const std::optional<Ellipse> circle = enclosingCircleFit(points);
+        const double chord = (points.back() - points.front()).norm();
+        if (circle && circle->radius_x >= min_radius && circle->radius_x <= chord && !thin) {
+          if (accepted(*circle, false)) continue;
+          // A round arc whose circle meets a beam (where the beams graze the object, its circle
+          // grown by the range noise reaches their free parts): every circle and every ellipse
+          // as round would, so the arc is split (Douglas-Peucker) with no costlier candidate
+          // tried, until its parts are thin enough for band ellipses.
+          split(splitIndex(contour, begin, end));
+          continue;
+        }
+      }
+      // 3. The enclosing ellipse (for a thin run, the band's).
+      const EnclosingEllipse fit = thin ? bandEllipse(points, direction, min_radius)
+                                        : enclosingEllipseWithMinRadius(points, min_radius);
       if (!fit.ok()) {
         result.skipped.push_back("returns " + std::to_string(contour[begin].key) + " to " +
                                  std::to_string(contour[end - 1].key) + ": " + fit.error);
         continue;
       }
-      ContourEllipse out{fit.ellipse, contour[begin].key, n, false};
-      Eigen::Vector2d ray = Eigen::Vector2d::Zero();
-      if (!free_space.entered(fit.ellipse, &ray)) {
-        result.ellipses.push_back(out);
-        continue;
-      }
-      if (n >= 3) {
-        // A round object's arc: the circle it lies on.
-        const std::optional<Ellipse> circle = enclosingCircleFit(points);
-        if (circle && circle->radius_x >= min_radius && !free_space.entered(*circle)) {
-          out.ellipse = *circle;
-          result.ellipses.push_back(out);
-          continue;
-        }
-        // A convex arc (a pillar) bulges the enclosing ellipse out in front of it: enclose the
-        // run with its shadow (each return pushed back along its ray by the chord's length,
-        // space the sensor cannot see), which rounds the ellipse onto the object.
+      if (accepted(fit.ellipse, false)) continue;
+      if (n >= 3 && !thin) {
+        // 4. A convex object bulges the enclosing ellipse out in front of it: enclose the run
+        // with its shadow (each return pushed back along its ray by the chord's length, space the
+        // sensor cannot see), which rounds the ellipse onto the object.
         const double depth = (points.back() - points.front()).norm();
         for (std::size_t i = 0; i < n; ++i) {
           points.push_back(points[i] * (1.0 + depth / points[i].norm()));
         }
         const EnclosingEllipse shadowed = enclosingEllipseWithMinRadius(points, min_radius);
         points.resize(n);
-        if (shadowed.ok() && !free_space.entered(shadowed.ellipse)) {
-          out.ellipse = shadowed.ellipse;
-          result.ellipses.push_back(out);
-          continue;
-        }
+        if (shadowed.ok() && accepted(shadowed.ellipse, false)) continue;
       }
-      // A thin run (a wall seen at a glancing angle, one or two returns) whose min_radius
-      // ellipse reaches into the free parts of its neighbouring beams: the minor radius the free
-      // space leaves, half the smallest clearance of its returns.
+      // 5. A thin run (a wall seen at a glancing angle, one or two returns) whose min_radius
+      // ellipse reaches into the free parts of its neighbouring beams: the smaller radius the
+      // free space leaves, half the smallest clearance of its returns.
       if (inscribedRadius(fit.ellipse) <= min_radius * (1.0 + 1e-9)) {
         double clearance = min_radius;
         for (const Eigen::Vector2d& p : points) {
           clearance = std::min(clearance, free_space.clearance(p, min_radius));
         }
-        const EnclosingEllipse thin =
-            enclosingEllipseWithMinRadius(points, std::max(0.5 * clearance, kMinRadius));
-        if (thin.ok()) {
-          out.ellipse = thin.ellipse;
+        const double reduced = std::max(0.5 * clearance, kMinRadius);
+        const EnclosingEllipse thinner = thin ? bandEllipse(points, direction, reduced)
+                                              : enclosingEllipseWithMinRadius(points, reduced);
+        if (thinner.ok() && accepted(thinner.ellipse, true)) continue;
+        if (thinner.ok() && n == 1) {
+          // Another beam through the return itself: kept all the same, and said.
+          out.ellipse = thinner.ellipse;
           out.radius_reduced = true;
-          if (!free_space.entered(thin.ellipse, &ray) || n == 1) {
-            if (n == 1 && free_space.entered(thin.ellipse)) {
-              result.skipped.push_back("return " + std::to_string(contour[begin].key) +
-                                       ": no circle around it stays out of the free space");
-            }
-            result.ellipses.push_back(out);
-            continue;
-          }
+          result.ellipses.push_back(out);
+          result.skipped.push_back("return " + std::to_string(contour[begin].key) +
+                                   ": no circle around it stays out of the free space");
+          continue;
         }
       }
       if (n <= 2) {
         split(begin + 1);
         continue;
       }
-      // Where the ellipse entered a beam beyond one end, that end's return goes alone (once per
+      // Where a candidate entered a beam beyond one end, that end's return goes alone (once per
       // end: a face seen at a glancing angle would otherwise be peeled return by return); else
       // the Douglas-Peucker split.
-      const int side = sideOf(contour, begin, end, ray);
-      if (side < 0 && run.peel_front) {
+      int side = 0;
+      for (const Eigen::Vector2d& ray : rays) {
+        const int s = sideOf(contour, begin, end, ray);
+        if ((s < 0 && run.peel_front) || (s > 0 && run.peel_back)) {
+          side = s;
+          break;
+        }
+      }
+      if (side < 0) {
         todo.push_back({begin + 1, end, false, run.peel_back});
         todo.push_back({begin, begin + 1, false, false});
-      } else if (side > 0 && run.peel_back) {
+      } else if (side > 0) {
         todo.push_back({end - 1, end, false, false});
         todo.push_back({begin, end - 1, run.peel_front, false});
       } else {

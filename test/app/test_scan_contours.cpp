@@ -156,6 +156,17 @@ TEST(ScanContours, NoisyRoomsKeepEveryGuarantee) {
   }
 }
 
+TEST(ScanContours, RoomWithTenRoundObjectsKeepsEveryGuarantee) {
+  ScanFields scan = test::castScan(test::objectRoomWorld(), 720, 30.0, 0.005, 40);
+  for (const int i : {5, 200, 400}) scan.ranges[i] = std::numeric_limits<float>::quiet_NaN();
+  const ScanObstacleSettings settings;
+  const SensorObstacles result = run(scan, settings);
+  EXPECT_EQ(violations(scan, result, settings), 0);
+  std::printf("8 m x 6 m room with ten round objects (bench_scan_obstacles' scan): %zu ellipses\n",
+              result.ellipses.size());
+  dump(result);
+}
+
 TEST(ScanContours, CorridorLongerThanTheRangeLeavesItsAxisFree) {
   World world;
   world.walls.push_back({{-50.0, 1.0}, {50.0, 1.0}});

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <limits>
 #include <optional>
+#include <random>
 #include <vector>
 
 #include "random_source.h"
@@ -122,6 +123,20 @@ inline World roomWorld() {
   world.walls.push_back({{-3.0, 3.7}, {2.0, 3.7}});  // the corridor behind the doorway
   world.addBox(1.5, 0.6, 2.0, 1.1);
   world.pillars.push_back({{-1.4, -0.9}, 0.15});
+  return world;
+}
+
+/// An 8 m x 6 m room (x within [-3, 5], y within [-3, 3]) with ten round objects, 0.1 m to
+/// 0.4 m in radius, placed at random (seeded) at least 0.3 m from the sensor.
+inline World objectRoomWorld() {
+  std::mt19937_64 random(40);
+  std::uniform_real_distribution<double> x(-2.5, 4.5), y(-2.5, 2.5), r(0.1, 0.4);
+  World world;
+  world.addBox(-3.0, -3.0, 5.0, 3.0);
+  while (world.pillars.size() < 10) {
+    const WorldCircle c{{x(random), y(random)}, r(random)};
+    if (c.centre.norm() > c.radius + 0.3) world.pillars.push_back(c);
+  }
   return world;
 }
 
