@@ -265,6 +265,18 @@ TEST(ScanContours, RemovedReturnsAroundAPointShrinkItsCircleNotDropIt) {
   EXPECT_GT(result.ellipses[0].radius_x, 0.001);
 }
 
+TEST(ScanContours, ReturnsCloseAllAroundNeverPutTheSensorInsideAnEllipse) {
+  // Three quarters of a turn of returns 0.12 m away: within range_min + free_space_tolerance,
+  // so their beams have no free part, and only the origin rule keeps the sensor out of the
+  // ellipse around them (one enclosing ellipse of the arc would contain it).
+  ScanFields scan;
+  scan.ranges.assign(540, 0.12f);
+  const ScanObstacleSettings settings;
+  const SensorObstacles result = run(scan, settings);
+  EXPECT_EQ(violations(scan, result, settings), 0);
+  EXPECT_GE(result.ellipses.size(), 2u);
+}
+
 TEST(ScanContours, NamesAreStableAcrossIdenticalScansAndFollowTheFirstBeam) {
   const ScanFields scan = test::castScan(test::roomWorld(), 720, 10.0, 0.01, 7);
   const SensorObstacles first = run(scan), second = run(scan);
@@ -296,35 +308,39 @@ TEST(ScanContours, NamesAreStableAcrossIdenticalScansAndFollowTheFirstBeam) {
 TEST(CloudContours, RoomCloudOf100000PointsKeepsEveryGuarantee) {
   const World world = test::roomWorld();
   const auto cloud = test::castCloud(world, 16, 6250);
-  ScanObstacleSettings settings;
-  settings.z_min = -0.3;
-  settings.z_max = 1.5;
-  const SensorObstacles result = cloudObstacles(cloud, "lidar", settings);
-  std::printf("room cloud, %zu points: %zu ellipses\n", cloud.size(), result.ellipses.size());
-  dump(result);
   EXPECT_GT(cloud.size(), 80000u);
-  int bad = 0;
-  for (const Eigen::Vector3f& p : cloud) {
-    if (!(p.z() >= settings.z_min && p.z() <= settings.z_max)) continue;
-    const bool covered = std::any_of(result.ellipses.begin(), result.ellipses.end(),
-                                     [&](const EllipseSpec& e) { return contains(e, p.x(), p.y()); });
-    if (!covered && ++bad <= 10) ADD_FAILURE() << "(" << p.x() << ", " << p.y() << ") in no ellipse";
-  }
-  // The world's rays: every azimuth's ray is free up to its wall (all surfaces are vertical), less
-  // the tolerance and the bin width's worth of a wall seen obliquely.
-  for (int c = 0; c < 6250; c += 3) {
-    const double a = -test::kScanPi + 2.0 * test::kScanPi * c / 6250;
-    const auto hit = test::rayCast(world, a);
-    if (!hit) continue;
-    for (const EllipseSpec& e : result.ellipses) {
-      if (contains(e, 0.0, 0.0)) ADD_FAILURE() << "origin inside " << e.name;
-      if (segmentEnters(e, std::cos(a), std::sin(a), 0.0, *hit - 2.0 * settings.free_space_tolerance) &&
-          ++bad <= 10) {
-        ADD_FAILURE() << e.name << " enters the free ray at azimuth " << a;
+  // The default tolerance, and one below min_radius (walls seen head-on get thinner ellipses).
+  for (const double tolerance : {0.1, 0.03}) {
+    ScanObstacleSettings settings;
+    settings.z_min = -0.3;
+    settings.z_max = 1.5;
+    settings.free_space_tolerance = tolerance;
+    const SensorObstacles result = cloudObstacles(cloud, "lidar", settings);
+    std::printf("room cloud, %zu points, free_space_tolerance %g m: %zu ellipses\n", cloud.size(),
+                tolerance, result.ellipses.size());
+    dump(result);
+    int bad = 0;
+    for (const Eigen::Vector3f& p : cloud) {
+      if (!(p.z() >= settings.z_min && p.z() <= settings.z_max)) continue;
+      const bool covered = std::any_of(result.ellipses.begin(), result.ellipses.end(),
+                                       [&](const EllipseSpec& e) { return contains(e, p.x(), p.y()); });
+      if (!covered && ++bad <= 10) ADD_FAILURE() << "(" << p.x() << ", " << p.y() << ") in no ellipse";
+    }
+    // The world's rays: every azimuth's ray is free up to its wall (all surfaces are vertical),
+    // less the tolerance (the bins are finer than the columns: each column's ray is a bin's).
+    for (int c = 0; c < 6250; c += 3) {
+      const double a = -test::kScanPi + 2.0 * test::kScanPi * c / 6250;
+      const auto hit = test::rayCast(world, a);
+      if (!hit) continue;
+      for (const EllipseSpec& e : result.ellipses) {
+        if (contains(e, 0.0, 0.0)) ADD_FAILURE() << "origin inside " << e.name;
+        if (segmentEnters(e, std::cos(a), std::sin(a), 0.0, *hit - tolerance) && ++bad <= 10) {
+          ADD_FAILURE() << e.name << " enters the free ray at azimuth " << a;
+        }
       }
     }
+    EXPECT_EQ(bad, 0) << "free_space_tolerance " << tolerance;
   }
-  EXPECT_EQ(bad, 0);
 }
 
 TEST(ScanObstacleSettings, NewSettingsAreRefusedOutsideTheirRangeNamingTheKey) {
