@@ -25,18 +25,23 @@
 
 namespace {
 
-/// objectRoomWorld() with 5 mm range noise and a few NaN and inf beams.
-sensor_msgs::LaserScan objectRoomScan() {
-  const auto fields =
-      ellipse_collision::test::castScan(ellipse_collision::test::objectRoomWorld(), 720, 30.0, 0.005, 40);
+/// A LaserScan message of ray-cast fields, in frame "laser".
+sensor_msgs::LaserScan toLaserScan(const ellipse_collision::test::ScanFields& fields) {
   sensor_msgs::LaserScan scan;
   scan.header.frame_id = "laser";
   scan.angle_min = static_cast<float>(fields.angle_min);
   scan.angle_increment = static_cast<float>(fields.angle_increment);
-  scan.angle_max = scan.angle_min + 719 * scan.angle_increment;
+  scan.angle_max = scan.angle_min + static_cast<float>(fields.ranges.size() - 1) * scan.angle_increment;
   scan.range_min = static_cast<float>(fields.range_min);
   scan.range_max = static_cast<float>(fields.range_max);
   scan.ranges = fields.ranges;
+  return scan;
+}
+
+/// objectRoomWorld() with 5 mm range noise and a few NaN and inf beams.
+sensor_msgs::LaserScan objectRoomScan() {
+  sensor_msgs::LaserScan scan = toLaserScan(
+      ellipse_collision::test::castScan(ellipse_collision::test::objectRoomWorld(), 720, 30.0, 0.005, 40));
   for (const int i : {5, 200, 400}) scan.ranges[i] = std::numeric_limits<float>::quiet_NaN();
   scan.ranges[300] = std::numeric_limits<float>::infinity();
   return scan;
@@ -44,16 +49,8 @@ sensor_msgs::LaserScan objectRoomScan() {
 
 /// The room (a box, a pillar, a doorway), 1 cm range noise.
 sensor_msgs::LaserScan doorwayRoomScan() {
-  const auto fields =
-      ellipse_collision::test::castScan(ellipse_collision::test::roomWorld(), 720, 10.0, 0.01, 41);
-  sensor_msgs::LaserScan scan;
-  scan.header.frame_id = "laser";
-  scan.angle_min = static_cast<float>(fields.angle_min);
-  scan.angle_increment = static_cast<float>(fields.angle_increment);
-  scan.range_min = static_cast<float>(fields.range_min);
-  scan.range_max = static_cast<float>(fields.range_max);
-  scan.ranges = fields.ranges;
-  return scan;
+  return toLaserScan(
+      ellipse_collision::test::castScan(ellipse_collision::test::roomWorld(), 720, 10.0, 0.01, 41));
 }
 
 /// The previous naming: scan_ + the index.
