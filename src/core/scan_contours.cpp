@@ -301,13 +301,12 @@ ContourEllipses contourEllipses(const std::vector<std::vector<SensorReturn>>& co
         result.ellipses.push_back(out);
         return true;
       };
-      // 1. A thin run (a wall's returns) whose band fits within min_radius: the band's ellipse,
-      // O(n), about what the minimum-area optimiser would give at far more cost.
+      // A thin run (a wall's returns) is one whose band fits within min_radius.
       const auto [direction, half_width] = principalBand(points);
       const bool thin = n >= 3 && std::sqrt(2.0) * half_width <= min_radius;
       if (n >= 3) {
-        // 2. A round object's arc: the circle it lies on (not the huge one of a nearly straight
-        // run: at most the chord's length in radius). O(n) too.
+        // 1. A round object's arc: the circle it lies on (not the huge one of a nearly straight
+        // run: at most the chord's length in radius). O(n).
         const std::optional<Ellipse> circle = enclosingCircleFit(points);
         const double chord = (points.back() - points.front()).norm();
         if (circle && circle->radius_x >= min_radius && circle->radius_x <= chord && !thin) {
@@ -320,7 +319,8 @@ ContourEllipses contourEllipses(const std::vector<std::vector<SensorReturn>>& co
           continue;
         }
       }
-      // 3. The enclosing ellipse (for a thin run, the band's).
+      // 2. The enclosing ellipse; for a thin run the band's ellipse, O(n), about what the
+      // minimum-area optimiser would give at far more cost.
       const EnclosingEllipse fit = thin ? bandEllipse(points, direction, min_radius)
                                         : enclosingEllipseWithMinRadius(points, min_radius);
       if (!fit.ok()) {
@@ -330,7 +330,7 @@ ContourEllipses contourEllipses(const std::vector<std::vector<SensorReturn>>& co
       }
       if (accepted(fit.ellipse, false)) continue;
       if (n >= 3 && !thin) {
-        // 4. A convex object bulges the enclosing ellipse out in front of it: enclose the run
+        // 3. A convex object bulges the enclosing ellipse out in front of it: enclose the run
         // with its shadow (each return pushed back along its ray by the chord's length, space the
         // sensor cannot see), which rounds the ellipse onto the object.
         const double depth = (points.back() - points.front()).norm();
@@ -341,7 +341,7 @@ ContourEllipses contourEllipses(const std::vector<std::vector<SensorReturn>>& co
         points.resize(n);
         if (shadowed.ok() && accepted(shadowed.ellipse, false)) continue;
       }
-      // 5. A thin run (a wall seen at a glancing angle, one or two returns) whose min_radius
+      // 4. A thin run (a wall seen at a glancing angle, one or two returns) whose min_radius
       // ellipse reaches into the free parts of its neighbouring beams: the smaller radius the
       // free space leaves, half the smallest clearance of its returns.
       if (inscribedRadius(fit.ellipse) <= min_radius * (1.0 + 1e-9)) {
@@ -363,7 +363,14 @@ ContourEllipses contourEllipses(const std::vector<std::vector<SensorReturn>>& co
           continue;
         }
       }
-      if (n <= 2) {
+      if (n == 1) {  // not even the reduced circle is a valid ellipse: kept, and said
+        out.ellipse = fit.ellipse;
+        result.ellipses.push_back(out);
+        result.skipped.push_back("return " + std::to_string(contour[begin].key) +
+                                 ": its circle of min_radius enters the free space");
+        continue;
+      }
+      if (n == 2) {
         split(begin + 1);
         continue;
       }

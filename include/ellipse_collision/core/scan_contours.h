@@ -94,27 +94,31 @@ struct ContourEllipses {
 };
 
 /// Each contour split into as few runs of consecutive returns as the rules allow, one ellipse per
-/// run, every return in exactly one run. A run takes the first of these ellipses that neither
-/// enters the free space nor contains the origin (FreeSpace::entered(), exact):
-/// 1. enclosingEllipseWithMinRadius(run, min_radius);
-/// 2. (3 or more returns) the circle fitted to the run by least squares (Kasa), grown to contain
-///    it, when its radius is at least min_radius: a round pillar is its own circle;
-/// 3. (3 or more returns) enclosingEllipseWithMinRadius() around the run and its shadow, each return pushed back along
-///    its ray by the chord's length: a convex arc (a pillar) gets an ellipse round like the
-///    object instead of one bulging out in front of it;
-/// 4. (when 1's smaller radius is min_radius: one or two returns, a straight stretch) the same
-///    with the smaller radius reduced to half the smallest clearance of its returns
+/// run, every return in exactly one run. A run whose chord already crosses free space
+/// (FreeSpace::crossed(): every ellipse around the run contains the chord) is split at once;
+/// otherwise it keeps the first of these ellipses that neither enters the free space nor contains
+/// the origin (FreeSpace::entered(), exact):
+/// 1. (3 or more returns, not thin) the circle fitted to the run by least squares (Kasa), grown
+///    to contain it, when the run is round (every return within a fifth of the radius of it) and
+///    the radius is within [min_radius, chord]: a round pillar is its own circle. When a round
+///    run's circle enters the free space (beams grazing the object), no other candidate is tried:
+///    the run is split;
+/// 2. enclosingEllipseWithMinRadius(run, min_radius), or for a thin run (its band across its
+///    principal axis within min_radius / sqrt(2)) bandEllipse(), O(n);
+/// 3. (3 or more returns, not thin) enclosingEllipseWithMinRadius() around the run and its
+///    shadow, each return pushed back along its ray by the chord's length: a convex object gets
+///    an ellipse round like it instead of one bulging out in front of it;
+/// 4. (when 2's smaller radius is min_radius: one or two returns, a thin run) the same with the
+///    smaller radius reduced to half the smallest clearance of its returns
 ///    (FreeSpace::clearance()): a face seen at a glancing angle, a lone return between beams that
 ///    saw far, stays an obstacle, thinner than min_radius (radius_reduced), never dropped.
-/// Else the run is split: a run of two into two runs of one; a longer one without any fit when
-/// its chord already crosses free space (FreeSpace::crossed()), at the return farthest from its
-/// chord (Douglas-Peucker; the middle one when all are on the chord); but when the ellipse first
-/// entered a beam beyond one end of the run, that end's return is split off alone (at most once
-/// per end of each run: the return by a pillar's edge where the next beam grazes past it).
-/// A single return is always kept: when even 4 enters the free space (another beam through the
-/// return itself), it is kept and reported in `skipped`.
+/// Else the run is split: a run of two into two runs of one; a longer one at the return farthest
+/// from its chord (Douglas-Peucker; the middle one when all are on the chord), but when a
+/// candidate entered a beam beyond one end of the run, that end's return is split off alone (at
+/// most once per end of each run). A single return is always kept: when even 4 enters the free
+/// space (another beam through the return itself), it is kept and reported in `skipped`.
 /// Measured (test_scan_contours): a 720-beam 6 m x 4 m room with a box, a pillar and a doorway
-/// is 12 ellipses; a straight wall seen at steep angles is one, a corner seen from inside two.
+/// is 10 ellipses; a straight wall seen at steep angles is one, a corner seen from inside two.
 ContourEllipses contourEllipses(const std::vector<std::vector<SensorReturn>>& contours,
                                 const FreeSpace& free_space, double min_radius);
 
