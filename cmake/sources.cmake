@@ -22,6 +22,8 @@ set(ELLIPSE_COLLISION_CORE_SOURCES
   src/core/path_check.cpp
   src/core/path_motion.cpp
   src/core/point_clusters.cpp
+  src/core/free_space.cpp
+  src/core/scan_contours.cpp
   src/core/polygonal_test.cpp
   src/core/prepared_ellipse.cpp
   src/core/relative_shape.cpp

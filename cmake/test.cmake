@@ -88,6 +88,10 @@ ellipse_collision_add_gtest(test_app LIBRARIES ellipse_collision_app SOURCES
   test/app/test_link_fitting.cpp
   test/app/test_path_request.cpp)
 
+# scan_obstacles' guarantees on ray-cast scenes: coverage, free space, doorways, names, counts.
+ellipse_collision_add_gtest(test_scan_contours LIBRARIES ellipse_collision_app SOURCES
+  test/app/test_scan_contours.cpp)
+
 # ---- ROS layer units (test/ros): conversions, parameters, markers; no master -------------------
 ellipse_collision_add_gtest(test_ros_units LIBRARIES ellipse_collision_ros SOURCES
   test/ros/test_conversions.cpp

@@ -1,9 +1,10 @@
 #include "ellipse_collision/app/scan_obstacles.h"
 
 #include <cmath>
+#include <unordered_map>
 
 #include "ellipse_collision/core/number_format.h"
-#include "ellipse_collision/core/point_clusters.h"
+#include "ellipse_collision/core/scan_contours.h"
 
 namespace ellipse_collision::app {
 namespace {
@@ -15,16 +16,19 @@ std::optional<FieldError> outside(const std::string& key, double value, double m
                     core::formatNumber(value)};
 }
 
-SensorObstacles toSpecs(const core::ClusterEllipses& fit, const std::string& frame_id,
+SensorObstacles toSpecs(const core::ContourEllipses& fit, const std::string& frame_id,
                         const ScanObstacleSettings& settings) {
   SensorObstacles result;
   result.skipped = fit.skipped;
   if (!fit.error.empty()) result.skipped.push_back(fit.error);
   result.ellipses.reserve(fit.ellipses.size());
-  for (std::size_t i = 0; i < fit.ellipses.size(); ++i) {
-    const core::Ellipse& e = fit.ellipses[i];
+  std::unordered_map<std::size_t, std::size_t> starts;  // ellipses so far per key
+  for (const core::ContourEllipse& contour : fit.ellipses) {
+    const core::Ellipse& e = contour.ellipse;
+    const std::size_t earlier = starts[contour.key]++;
     EllipseSpec spec;
-    spec.name = settings.name_prefix + std::to_string(i);
+    spec.name = settings.name_prefix + std::to_string(contour.key) +
+                (earlier > 0 ? "_" + std::to_string(earlier) : std::string());
     spec.frame_id = frame_id;
     spec.x = e.center.x();
     spec.y = e.center.y();
@@ -49,6 +53,11 @@ std::optional<FieldError> findInvalidSetting(const ScanObstacleSettings& s) {
                       std::to_string(s.min_cluster_points)};
   }
   if (auto e = outside("min_radius", s.min_radius, core::kMinRadius, core::kMaxRadius)) return e;
+  if (auto e = outside("range_noise_sigma", s.range_noise_sigma, 0.0, kMaxRangeNoiseSigma)) return e;
+  if (auto e = outside("free_space_tolerance", s.free_space_tolerance, kMinFreeSpaceTolerance,
+                       kMaxFreeSpaceTolerance)) {
+    return e;
+  }
   if (!std::isfinite(s.z_min)) return FieldError{"z_min", "a finite number", core::formatNumber(s.z_min)};
   if (!std::isfinite(s.z_max)) return FieldError{"z_max", "a finite number", core::formatNumber(s.z_max)};
   if (s.z_max < s.z_min) {
@@ -62,10 +71,13 @@ std::optional<FieldError> findInvalidSetting(const ScanObstacleSettings& s) {
 SensorObstacles scanObstacles(const std::vector<float>& ranges, double angle_min,
                               double angle_increment, double range_min, double range_max,
                               const std::string& frame_id, const ScanObstacleSettings& settings) {
-  const auto points = core::scanPoints(ranges, angle_min, angle_increment, range_min, range_max);
-  const auto clusters = core::clusterPoints(points, settings.cluster_distance,
-                                            static_cast<std::size_t>(settings.min_cluster_points));
-  return toSpecs(core::fitClusters(clusters, settings.min_radius), frame_id, settings);
+  const core::SensorView view = core::scanView(ranges, angle_min, angle_increment, range_min,
+                                               range_max, settings.free_space_tolerance);
+  const auto contours =
+      core::breakContours(view, settings.range_noise_sigma, settings.cluster_distance,
+                          static_cast<std::size_t>(settings.min_cluster_points));
+  return toSpecs(core::contourEllipses(contours, view.free_space, settings.min_radius), frame_id,
+                 settings);
 }
 
 SensorObstacles cloudObstacles(const std::vector<Eigen::Vector3f>& points,
@@ -76,9 +88,11 @@ SensorObstacles cloudObstacles(const std::vector<Eigen::Vector3f>& points,
     // NaN z fails both comparisons: dropped, like NaN x or y later.
     if (p.z() >= settings.z_min && p.z() <= settings.z_max) band.emplace_back(p.x(), p.y());
   }
-  const auto clusters = core::clusterUnorderedPoints(
-      band, settings.cluster_distance, static_cast<std::size_t>(settings.min_cluster_points));
-  return toSpecs(core::fitClusters(clusters, settings.min_radius), frame_id, settings);
+  const core::SensorView view = core::cloudView(band, settings.free_space_tolerance);
+  const auto contours = core::cloudContours(view, settings.cluster_distance,
+                                            static_cast<std::size_t>(settings.min_cluster_points));
+  return toSpecs(core::contourEllipses(contours, view.free_space, settings.min_radius), frame_id,
+                 settings);
 }
 
 }  // namespace ellipse_collision::app

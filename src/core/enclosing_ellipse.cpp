@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <optional>
 #include <utility>
 
 #include "ellipse_collision/core/number_format.h"
@@ -592,6 +593,30 @@ std::string outOfRange(const Ellipse& e) {
   return reason.empty() ? reason : "the enclosing ellipse is out of range: " + reason;
 }
 
+/// Why `min_radius` is refused, or nothing.
+std::optional<std::string> minRadiusError(double min_radius) {
+  const auto violation = radiusViolation(min_radius);
+  if (!violation) return std::nullopt;
+  const std::string head = "min_radius = " + formatNumber(min_radius);
+  if (violation->rule == ValueViolation::Rule::Finite) return head + " is not finite";
+  if (violation->rule == ValueViolation::Rule::Positive) return head + " must be > 0";
+  return head + " is outside [" + formatNumber(violation->min) + ", " +
+         formatNumber(violation->max) + "] m";
+}
+
+/// The Ok result for `e` once certified and within range, else the Error.
+EnclosingEllipse certifiedResult(Ellipse e, const std::vector<Vec2>& points) {
+  if (!certify(e, points)) {
+    return errorResult("the enclosing ellipse could not be certified (radius_x = " +
+                       formatNumber(e.radius_x) + ")");
+  }
+  if (std::string error = outOfRange(e); !error.empty()) return errorResult(error);
+  EnclosingEllipse result;
+  result.status = EnclosingStatus::Ok;
+  result.ellipse = e;
+  return result;
+}
+
 }  // namespace
 
 EnclosingEllipse minimumAreaEllipse(const std::vector<Eigen::Vector2d>& points) {
@@ -642,23 +667,22 @@ EnclosingEllipse minimumAreaEllipse(const std::vector<Eigen::Vector2d>& points) 
   result.ellipse = ellipseFromMap(total.origin, total.linear, total.det);
   // area = pi sqrt(det S) reach with det S <= det S* (dual optimality) and reach <= 2 + 3 gap.
   result.area_excess_bound = std::max(0.0, 1.5 * gap);
-  if (!certify(result.ellipse, points)) {
-    return errorResult("the enclosing ellipse could not be certified (radius_x = " +
-                       formatNumber(result.ellipse.radius_x) + ")");
-  }
-  if (std::string error = outOfRange(result.ellipse); !error.empty()) return errorResult(error);
-  return result;
+  const double excess = result.area_excess_bound;
+  EnclosingEllipse certified = certifiedResult(result.ellipse, points);
+  if (certified.ok()) certified.area_excess_bound = excess;
+  return certified;
+}
+
+EnclosingEllipse bandEllipse(const std::vector<Eigen::Vector2d>& points,
+                             const Eigen::Vector2d& direction, double min_radius) {
+  if (auto error = minRadiusError(min_radius)) return errorResult(*error);
+  if (std::string error = validationError(points); !error.empty()) return errorResult(error);
+  return certifiedResult(segmentEllipse(bandAlong(points, direction), min_radius), points);
 }
 
 EnclosingEllipse enclosingEllipseWithMinRadius(const std::vector<Eigen::Vector2d>& points,
                                                double min_radius) {
-  if (auto violation = radiusViolation(min_radius)) {
-    const std::string head = "min_radius = " + formatNumber(min_radius);
-    if (violation->rule == ValueViolation::Rule::Finite) return errorResult(head + " is not finite");
-    if (violation->rule == ValueViolation::Rule::Positive) return errorResult(head + " must be > 0");
-    return errorResult(head + " is outside [" + formatNumber(violation->min) + ", " +
-                       formatNumber(violation->max) + "] m");
-  }
+  if (auto error = minRadiusError(min_radius)) return errorResult(*error);
   EnclosingEllipse result = minimumAreaEllipse(points);
   if (result.status == EnclosingStatus::Error) return result;
   if (result.status == EnclosingStatus::Ok) {
@@ -687,12 +711,10 @@ EnclosingEllipse enclosingEllipseWithMinRadius(const std::vector<Eigen::Vector2d
     result.status = EnclosingStatus::Ok;
     result.ellipse = e;
   }
-  if (!certify(result.ellipse, points)) {
-    return errorResult("the enclosing ellipse could not be certified (radius_x = " +
-                       formatNumber(result.ellipse.radius_x) + ")");
-  }
-  if (std::string error = outOfRange(result.ellipse); !error.empty()) return errorResult(error);
-  return result;
+  const double excess = result.area_excess_bound;
+  EnclosingEllipse certified = certifiedResult(result.ellipse, points);
+  if (certified.ok()) certified.area_excess_bound = excess;
+  return certified;
 }
 
 }  // namespace ellipse_collision::core

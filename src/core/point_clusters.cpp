@@ -7,6 +7,7 @@
 #include <unordered_map>
 
 #include "ellipse_collision/core/enclosing_ellipse.h"
+#include "ellipse_collision/core/scan_contours.h"
 
 namespace ellipse_collision::core {
 
@@ -15,14 +16,9 @@ std::vector<Eigen::Vector2d> scanPoints(const std::vector<float>& ranges, double
                                         double range_max) {
   std::vector<Eigen::Vector2d> points;
   points.reserve(ranges.size());
-  const double lowest = std::max(range_min, 0.0);
-  for (std::size_t i = 0; i < ranges.size(); ++i) {
-    const double r = ranges[i];
-    // Written so that NaN ranges and NaN limits fail the test.
-    if (!(std::isfinite(r) && r >= lowest && r <= range_max && r <= kMaxCoordinate)) continue;
-    const double angle = angle_min + static_cast<double>(i) * angle_increment;
-    if (!std::isfinite(angle)) continue;
-    points.emplace_back(r * std::cos(angle), r * std::sin(angle));
+  for (const SensorReturn& r :
+       scanView(ranges, angle_min, angle_increment, range_min, range_max, 0.0).returns) {
+    points.push_back(r.point);
   }
   return points;
 }

@@ -444,19 +444,24 @@ app::ScanObstacleSettings parseScanObstacleSettings(const XmlRpcValue& params) {
     throw ConfigError("private namespace: expected a dict of parameters, got " +
                       describeValue(root));
   }
-  const std::set<std::string> known = {"cluster_distance", "min_cluster_points", "min_radius",
-                                       "z_min",            "z_max",              "name_prefix"};
+  const std::set<std::string> known = {"cluster_distance", "min_cluster_points",
+                                       "min_radius",       "range_noise_sigma",
+                                       "free_space_tolerance", "z_min",
+                                       "z_max",            "name_prefix"};
   for (auto it = root.begin(); it != root.end(); ++it) {
     if (!known.count(it->first)) {
       throw ConfigError("parameter ~" + it->first +
                         ": unknown key (expected one of cluster_distance, min_cluster_points, "
-                        "min_radius, z_min, z_max, name_prefix)");
+                        "min_radius, range_noise_sigma, free_space_tolerance, z_min, z_max, "
+                        "name_prefix)");
     }
   }
   app::ScanObstacleSettings settings;
   for (const auto& [key, field] :
        {std::pair<const char*, double*>{"cluster_distance", &settings.cluster_distance},
         {"min_radius", &settings.min_radius},
+        {"range_noise_sigma", &settings.range_noise_sigma},
+        {"free_space_tolerance", &settings.free_space_tolerance},
         {"z_min", &settings.z_min},
         {"z_max", &settings.z_max}}) {
     if (root.hasMember(key)) *field = readNumber(root[key], std::string("parameter ~") + key, key);

@@ -39,9 +39,11 @@ ScanObstaclesNode::ScanObstaclesNode(const ros::NodeHandle& nh, const ros::NodeH
   scan_sub_ = nh_.subscribe<sensor_msgs::LaserScan>("scan", 1, &ScanObstaclesNode::onScan, this);
   cloud_sub_ =
       nh_.subscribe<sensor_msgs::PointCloud2>("cloud", 1, &ScanObstaclesNode::onCloud, this);
-  ROS_INFO_STREAM("scan_obstacles: clusters of >= " << settings_.min_cluster_points
-                  << " points closer than " << settings_.cluster_distance
-                  << " m, min_radius " << settings_.min_radius << " m, cloud z within ["
+  ROS_INFO_STREAM("scan_obstacles: contours of >= " << settings_.min_cluster_points
+                  << " returns (breakpoints for range noise " << settings_.range_noise_sigma
+                  << " m, always joined closer than " << settings_.cluster_distance
+                  << " m), min_radius " << settings_.min_radius << " m, free space up to "
+                  << settings_.free_space_tolerance << " m before each return, cloud z within ["
                   << settings_.z_min << ", " << settings_.z_max << "] m");
 }
 

@@ -22,6 +22,10 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double kCircleX = 1.5, kCircleR = 0.3;        // circle centre (1.5, 0) in laser [m]
 constexpr double kWallY = -2.0, kWallHalfLength = 1.0;  // wall y = -2, |x| <= 1 in laser [m]
 constexpr double kRangeMax = 8.0;
+// Ellipses are named after the beam of their first return (beams from -pi, 0.5 degrees apart):
+// the wall's first return is beam 127, the circle's beam 337.
+const char* const kWallName = "scan_127";
+const char* const kCircleName = "scan_337";
 
 /// Distance along the beam at `angle` to the first hit of the circle or the wall, or nothing.
 std::optional<double> rayCast(double angle) {
@@ -105,24 +109,25 @@ TEST(ScanObstacles, ScannedShapesReachTheCollisionNodeAsEnclosingEllipses) {
       [&] {
         scan_pub.publish(scan);
         std::lock_guard<std::mutex> lock(mutex);
-        return obstacles && state && collides(*state, "arm", "scan_1") &&
-               collides(*state, "side", "scan_0");
+        return obstacles && state && collides(*state, "arm", kCircleName) &&
+               collides(*state, "side", kWallName);
       },
       40.0);
   std::lock_guard<std::mutex> lock(mutex);
   ASSERT_TRUE(obstacles.has_value()) << "no EllipseArray reached the collision node's ~obstacles";
   ASSERT_TRUE(state.has_value()) << "no ~collisions from the collision node";
-  EXPECT_TRUE(arrived) << "expected collisions (arm, scan_1) and (side, scan_0); got "
+  EXPECT_TRUE(arrived) << "expected collisions (arm, " << kCircleName << ") and (side, "
+                       << kWallName << "); got "
                        << state->collisions.size() << " collisions";
 
-  // The sensor's header; beam order from -pi: the wall (around -pi/2) first, then the circle.
+  // The sensor's header; contour order from -pi: the wall (around -pi/2) first, then the circle.
   EXPECT_EQ(obstacles->header.frame_id, "laser");
   EXPECT_EQ(obstacles->header.stamp, ros::Time(1234, 5678));
   ASSERT_EQ(obstacles->ellipses.size(), 2u);
   const Ellipse& wall = obstacles->ellipses[0];
   const Ellipse& circle = obstacles->ellipses[1];
-  EXPECT_EQ(wall.name, "scan_0");
-  EXPECT_EQ(circle.name, "scan_1");
+  EXPECT_EQ(wall.name, kWallName);
+  EXPECT_EQ(circle.name, kCircleName);
   EXPECT_EQ(circle.frame_id, "laser");
 
   // Every hit point inside the ellipse of its shape.
@@ -136,13 +141,16 @@ TEST(ScanObstacles, ScannedShapesReachTheCollisionNodeAsEnclosingEllipses) {
   EXPECT_NEAR(std::sin(wall.angle), 0.0, 1e-3);
   EXPECT_NEAR(wall.radius_x, kWallHalfLength, 0.03);
   EXPECT_NEAR(wall.radius_y, 0.05, 1e-3);
-  // The circle's visible arc (the near half): at most the circle's radius along the arc's chord,
-  // the ellipse within the circle's neighbourhood.
+  // The circle's visible arc is enclosed by the circle it lies on (the float ranges' rounding
+  // aside), not by an ellipse bulging out in front of it into the space the beams saw free.
   EXPECT_NEAR(circle.y, 0.0, 1e-3);
-  EXPECT_GT(circle.x, kCircleX - kCircleR);
-  EXPECT_LT(circle.x, kCircleX);
-  EXPECT_GE(std::max(circle.radius_x, circle.radius_y), 0.27);
-  EXPECT_LE(std::max(circle.radius_x, circle.radius_y), 0.4);
+  EXPECT_NEAR(circle.x, kCircleX, 2e-3);
+  EXPECT_NEAR(circle.radius_x, kCircleR, 2e-3);
+  EXPECT_NEAR(circle.radius_y, kCircleR, 2e-3);
+  // The sensor is in no ellipse.
+  for (const Ellipse& e : obstacles->ellipses) {
+    EXPECT_GT(quadraticForm(e, 0.0, 0.0), 1.0) << e.name << " contains the sensor";
+  }
 
   // Nothing where nothing was scanned; the hostile beams made no obstacle.
   EXPECT_FALSE(test::mentions(state->collisions, "far"));

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <sensor_msgs/point_cloud2_iterator.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -25,15 +26,21 @@ std::string settingsError(const XmlRpc::XmlRpcValue& params) {
 TEST(ScanObstacleSettings, DefaultsAndOverrides) {
   const app::ScanObstacleSettings defaults = parseScanObstacleSettings(XmlRpc::XmlRpcValue());
   EXPECT_EQ(defaults.cluster_distance, 0.1);
-  EXPECT_EQ(defaults.min_cluster_points, 3);
+  EXPECT_EQ(defaults.min_cluster_points, 1);
   EXPECT_EQ(defaults.min_radius, 0.05);
+  EXPECT_EQ(defaults.range_noise_sigma, 0.01);
+  EXPECT_EQ(defaults.free_space_tolerance, 0.1);
   EXPECT_EQ(defaults.z_min, 0.0);
   EXPECT_EQ(defaults.z_max, 2.0);
   XmlRpc::XmlRpcValue params;
   params["cluster_distance"] = 1;  // ints are numbers
   params["min_cluster_points"] = 1;
   params["z_min"] = -0.5;
+  params["range_noise_sigma"] = 0;
+  params["free_space_tolerance"] = 0.03;
   const auto settings = parseScanObstacleSettings(params);
+  EXPECT_EQ(settings.range_noise_sigma, 0.0);
+  EXPECT_EQ(settings.free_space_tolerance, 0.03);
   EXPECT_EQ(settings.cluster_distance, 1.0);
   EXPECT_EQ(settings.min_cluster_points, 1);
   EXPECT_EQ(settings.z_min, -0.5);
@@ -61,6 +68,19 @@ TEST(ScanObstacleSettings, BadValuesNameTheKey) {
   params["cluster_distanse"] = 0.1;
   EXPECT_NE(settingsError(params).find("parameter ~cluster_distanse: unknown key"),
             std::string::npos);
+  params = XmlRpc::XmlRpcValue();
+  params["free_space_tolerance"] = 0.0;
+  EXPECT_EQ(settingsError(params),
+            "parameter ~free_space_tolerance, key 'free_space_tolerance': expected a number "
+            "within [0.001, 10], got 0");
+  params = XmlRpc::XmlRpcValue();
+  params["range_noise_sigma"] = -0.01;
+  EXPECT_EQ(settingsError(params),
+            "parameter ~range_noise_sigma, key 'range_noise_sigma': expected a number within "
+            "[0, 1], got -0.01");
+  params = XmlRpc::XmlRpcValue();
+  params["range_noise_sigma"] = "0.01";
+  EXPECT_NE(settingsError(params).find("key 'range_noise_sigma'"), std::string::npos);
   params = XmlRpc::XmlRpcValue();
   params["z_max"] = std::numeric_limits<double>::quiet_NaN();
   EXPECT_NE(settingsError(params).find("key 'z_max'"), std::string::npos);
@@ -97,7 +117,9 @@ TEST(ScanObstaclesCloud, PointsWithinTheZBandMakeEllipsesWithTheSensorHeader) {
   EXPECT_EQ(msg.header.frame_id, "camera");
   EXPECT_EQ(msg.header.stamp, ros::Time(7, 8));
   ASSERT_EQ(msg.ellipses.size(), 1u);
-  EXPECT_EQ(msg.ellipses[0].name, "scan_0");
+  // Named by the angular bin of its first point in angular order: (1, 0) at angle 0, bin 8192
+  // of 16384 from -pi.
+  EXPECT_EQ(msg.ellipses[0].name, "scan_8192");
   EXPECT_EQ(msg.ellipses[0].frame_id, "camera");
   EXPECT_NEAR(msg.ellipses[0].x, 1.045, 0.01);
 }
@@ -120,8 +142,29 @@ TEST(ScanObstaclesScan, HostileRangesAreSkipped) {
   const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
   scan.ranges = {1.0f, 1.0f, nan, 1.0f, inf, -inf, 0.0f, 9.0f, 1.0f};
   const auto obstacles = scanObstacles(scan, app::ScanObstacleSettings{});
-  ASSERT_EQ(obstacles.ellipses.size(), 1u);  // the four 1 m returns, one cluster
-  EXPECT_EQ(obstacles.ellipses[0].frame_id, "laser");
+  // The four 1 m returns (beams 0, 1, 3, 8) are each inside an ellipse near 1 m; beams 4 (inf)
+  // and 7 (above range_max) saw nothing up to range_max, so no ellipse crosses them at 1 m: the
+  // returns are split around them (before: one cluster across them).
+  const auto inside = [](const app::EllipseSpec& e, double angle, double r) {
+    const double dx = r * std::cos(angle) - e.x, dy = r * std::sin(angle) - e.y;
+    const double c = std::cos(e.angle), s = std::sin(e.angle);
+    const double u = (c * dx + s * dy) / e.radius_x, v = (-s * dx + c * dy) / e.radius_y;
+    return u * u + v * v <= 1.0;
+  };
+  ASSERT_FALSE(obstacles.ellipses.empty());
+  for (const int beam : {0, 1, 3, 8}) {
+    const double angle = beam * static_cast<double>(scan.angle_increment);
+    EXPECT_TRUE(std::any_of(obstacles.ellipses.begin(), obstacles.ellipses.end(),
+                            [&](const app::EllipseSpec& e) { return inside(e, angle, 1.0); }))
+        << "beam " << beam;
+  }
+  for (const app::EllipseSpec& e : obstacles.ellipses) {
+    EXPECT_EQ(e.frame_id, "laser");
+    EXPECT_NEAR(std::hypot(e.x, e.y), 1.0, 0.06) << e.name;
+    for (const int beam : {4, 7}) {
+      EXPECT_FALSE(inside(e, beam * static_cast<double>(scan.angle_increment), 1.0)) << e.name;
+    }
+  }
   EXPECT_TRUE(scanObstacles(sensor_msgs::LaserScan(), app::ScanObstacleSettings{}).ellipses.empty());
 }
 

@@ -12,9 +12,20 @@ namespace ellipse_collision::app {
 
 /// scan_obstacles' parameters (README: scan_obstacles; config in launch/scan_obstacles.launch).
 struct ScanObstacleSettings {
-  double cluster_distance{0.1};  ///< points closer than this join one cluster [m]
-  int min_cluster_points{3};     ///< smaller clusters are dropped (noise)
-  double min_radius{0.05};       ///< both radii of every ellipse at least this [m]
+  /// Scans: consecutive returns closer than this always join one contour (beside the adaptive
+  /// breakpoint rule, core::sameContour()); clouds: the single-linkage distance [m].
+  double cluster_distance{0.1};
+  /// The noise rule: contours (scans) or clusters (clouds) of fewer returns are dropped. 1 keeps
+  /// every return (a thin pole seen by one beam is an obstacle).
+  int min_cluster_points{1};
+  /// Both radii of every ellipse at least this [m], except a single return whose circle of
+  /// min_radius would enter the free space (core::contourEllipses()).
+  double min_radius{0.05};
+  /// The sensor's range noise, one standard deviation [m]: the breakpoint rule allows 3 sigma.
+  double range_noise_sigma{0.01};
+  /// No ellipse enters a beam's free part, from range_min to the return minus this [m] (or to
+  /// range_max for a beam without return).
+  double free_space_tolerance{0.1};
   /// Cloud points are used when z_min <= z <= z_max, z in the cloud's frame [m] (costmap_2d's
   /// obstacle layer defaults: from the ground to 2 m).
   double z_min{0.0};
@@ -24,32 +35,41 @@ struct ScanObstacleSettings {
 
 /// Accepted ranges (refused, never clamped): cluster_distance within [kMinClusterDistance,
 /// kMaxClusterDistance]; min_cluster_points within [1, kMaxClusterPoints]; min_radius within
-/// [core::kMinRadius, core::kMaxRadius]; z_min, z_max finite with z_min <= z_max; name_prefix
-/// non-empty.
+/// [core::kMinRadius, core::kMaxRadius]; range_noise_sigma within [0, kMaxRangeNoiseSigma];
+/// free_space_tolerance within [kMinFreeSpaceTolerance, kMaxFreeSpaceTolerance] (> 0: a return's
+/// own beam must leave room for an ellipse around it); z_min, z_max finite with z_min <= z_max;
+/// name_prefix non-empty.
 constexpr double kMinClusterDistance = 1e-6;  ///< [m]
 constexpr double kMaxClusterDistance = 1e3;   ///< [m]
 constexpr int kMaxClusterPoints = 1000000;
+constexpr double kMaxRangeNoiseSigma = 1.0;        ///< [m]
+constexpr double kMinFreeSpaceTolerance = 1e-3;    ///< [m]
+constexpr double kMaxFreeSpaceTolerance = 10.0;    ///< [m]
 
 /// The first setting outside its range, naming its key, or nothing.
 std::optional<FieldError> findInvalidSetting(const ScanObstacleSettings& settings);
 
 /// Obstacle ellipses of one sensor message, in the sensor's frame.
 struct SensorObstacles {
-  std::vector<EllipseSpec> ellipses;  ///< names name_prefix + index, frame_id = the sensor frame
+  /// Names: name_prefix + the key of the ellipse's first return (scans: its beam index, so a
+  /// name stays while the scene does; clouds: its angular bin, + "_" + n for the n-th further
+  /// ellipse starting in the same bin); frame_id = the sensor frame.
+  std::vector<EllipseSpec> ellipses;
   std::vector<std::string> skipped;   ///< clusters that got no ellipse, and why
 };
 
-/// A laser scan (sensor_msgs/LaserScan's fields, angles [rad], ranges [m]): its points
-/// (core::scanPoints(): NaN, inf and out-of-range beams skipped) clustered in beam order
-/// (core::clusterPoints()), each cluster enclosed by the minimum-area ellipse with both radii >=
-/// min_radius (core::fitClusters()). `settings` must pass findInvalidSetting().
+/// A laser scan (sensor_msgs/LaserScan's fields, angles [rad], ranges [m]): its returns and
+/// free beams (core::scanView()), cut into contours by the adaptive breakpoint rule
+/// (core::breakContours()), each contour split into as few ellipses as keep every return inside
+/// and the free space free (core::contourEllipses()). `settings` must pass findInvalidSetting().
 SensorObstacles scanObstacles(const std::vector<float>& ranges, double angle_min,
                               double angle_increment, double range_min, double range_max,
                               const std::string& frame_id, const ScanObstacleSettings& settings);
 
 /// A point cloud's points [m] (x, y, z in the cloud's frame, any order): those with z within
-/// [z_min, z_max] projected onto the xy-plane, clustered by single linkage
-/// (core::clusterUnorderedPoints()) and enclosed like scanObstacles().
+/// [z_min, z_max] projected onto the xy-plane (core::cloudView(): the rays from the frame's
+/// origin to each bin's nearest point are the free space), clustered by single linkage
+/// (core::cloudContours()) and split into ellipses like scanObstacles().
 SensorObstacles cloudObstacles(const std::vector<Eigen::Vector3f>& points,
                                const std::string& frame_id, const ScanObstacleSettings& settings);
 

@@ -92,6 +92,15 @@ EnclosingEllipse minimumAreaEllipse(const std::vector<Eigen::Vector2d>& points);
 EnclosingEllipse enclosingEllipseWithMinRadius(const std::vector<Eigen::Vector2d>& points,
                                                double min_radius);
 
+/// The ellipse of the band of `points` [m] along the unit `direction`: centred on the band (the
+/// extreme projections along and across), radius_y = max(min_radius, sqrt(2) half-width) across
+/// it and the smallest radius_x >= min_radius that contains the band's box. O(n), no optimiser:
+/// for thin sets (a wall's returns) about as small as enclosingEllipseWithMinRadius(), which uses
+/// it. Certified like minimumAreaEllipse(); Status Ok or Error (points or min_radius invalid, an
+/// out-of-range ellipse).
+EnclosingEllipse bandEllipse(const std::vector<Eigen::Vector2d>& points,
+                             const Eigen::Vector2d& direction, double min_radius);
+
 /// Upper bound on the optimiser's steps per minimumAreaEllipse() call; reaching it still returns
 /// a certified enclosing ellipse, with a larger area_excess_bound.
 constexpr int kMaxOptimiserIterations = 20000;

@@ -25,8 +25,8 @@ app::SensorObstacles scanObstacles(const sensor_msgs::LaserScan& scan,
 
 /// scan_obstacles: turns `scan` (sensor_msgs/LaserScan) and `cloud` (sensor_msgs/PointCloud2,
 /// points within a z band) into obstacle ellipses on `obstacles` (EllipseArray, header = the
-/// sensor's frame and stamp), one per cluster of points, every point inside its ellipse
-/// (README: scan_obstacles).
+/// sensor's frame and stamp): every return inside an ellipse, no ellipse in the free part of any
+/// beam, each contour in as few ellipses as that allows (README: scan_obstacles).
 class ScanObstaclesNode {
  public:
   /// Reads and validates the private parameters first; throws ConfigError naming the key.

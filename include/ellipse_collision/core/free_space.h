@@ -1,0 +1,59 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "ellipse_collision/core/ellipse.h"
+
+namespace ellipse_collision::core {
+
+/// The part of one beam a sensor saw free: the points t * direction with from < t < to [m] (the
+/// open segment; empty when to <= from), direction a unit vector from the sensor origin.
+struct FreeSegment {
+  Eigen::Vector2d direction{1.0, 0.0};
+  double from{0.0};  ///< [m]
+  double to{0.0};    ///< [m]
+};
+
+/// The free segments of one sensor message, sorted by angle about the sensor origin, with the
+/// exact tests an obstacle ellipse must pass: it enters no free segment and does not contain the
+/// origin. Only the segments whose beams pass within the ellipse's bounding circle are looked at
+/// (a binary search on angle), so a test costs O(log n + beams near the ellipse).
+class FreeSpace {
+ public:
+  FreeSpace() = default;
+  explicit FreeSpace(std::vector<FreeSegment> segments);
+
+  /// True when `e` meets the open free part of some beam or contains the sensor origin. Exact: per
+  /// beam the normalised quadratic form along the ray is a quadratic in t, minimised in closed
+  /// form over (from, to); it enters when that minimum is below 1 + kFreeSpaceMargin (so a
+  /// segment that grazes the rim to rounding counts as entering: the test errs on the safe side).
+  /// When it enters and `where` is given, *where is the direction of the first beam it enters
+  /// (zero when it contains the origin).
+  bool entered(const Ellipse& e, Eigen::Vector2d* where = nullptr) const;
+
+  /// True when the segment [a, b] [m] meets the open free part of some beam or passes within
+  /// 1e-12 m of the origin. Every ellipse containing a and b contains the segment, so this is a
+  /// cheap necessary test before fitting an ellipse to points from a to b.
+  bool crossed(const Eigen::Vector2d& a, const Eigen::Vector2d& b) const;
+
+  /// The distance [m] from `p` to the nearest free segment within `radius` [m] of it, or to the
+  /// origin if nearer; `radius` when nothing is nearer.
+  double clearance(const Eigen::Vector2d& p, double radius) const;
+
+  const std::vector<FreeSegment>& segments() const { return segments_; }
+
+ private:
+  /// Calls visit(segment) for every segment whose beam angle lies within `half_width` [rad] of
+  /// `angle` [rad] (every segment when half_width >= pi); stops when visit returns true.
+  template <typename Visit>
+  bool anyWithin(double angle, double half_width, Visit visit) const;
+
+  std::vector<FreeSegment> segments_;
+  std::vector<double> angles_;  ///< atan2 of each direction, ascending, in [-pi, pi]
+};
+
+/// The margin of FreeSpace::entered() on the normalised quadratic form (dimensionless).
+constexpr double kFreeSpaceMargin = 1e-9;
+
+}  // namespace ellipse_collision::core

@@ -1,0 +1,402 @@
+#include "ellipse_collision/core/scan_contours.h"
+
+#include <Eigen/Cholesky>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+
+#include "ellipse_collision/core/enclosing_ellipse.h"
+#include "ellipse_collision/core/point_clusters.h"
+
+namespace ellipse_collision::core {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr std::size_t kCloudBins = 16384;
+
+/// The bin of cloudView() holding the direction of `p`.
+std::size_t cloudBin(const Eigen::Vector2d& p) {
+  const double bin = std::floor((std::atan2(p.y(), p.x()) + kPi) / kCloudBinAngle);
+  return std::min(kCloudBins - 1, static_cast<std::size_t>(std::max(bin, 0.0)));
+}
+
+/// The angle between the directions of a and b as seen from the origin, in [0, pi] [rad].
+double angleBetween(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  return std::abs(std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b)));
+}
+
+/// The return of `run` farthest from the chord between its ends (Douglas-Peucker's split point),
+/// the middle one when none is off the chord; an index strictly inside the run.
+std::size_t splitIndex(const std::vector<SensorReturn>& run, std::size_t begin, std::size_t end) {
+  const Eigen::Vector2d a = run[begin].point, chord = run[end - 1].point - a;
+  const double length = chord.norm();
+  std::size_t best = begin + (end - begin) / 2;
+  double farthest = 0.0;
+  for (std::size_t i = begin + 1; i + 1 < end; ++i) {
+    const Eigen::Vector2d v = run[i].point - a;
+    const double off = length > 0.0 ? std::abs(chord.x() * v.y() - chord.y() * v.x()) / length
+                                    : v.norm();
+    if (off > farthest) {
+      farthest = off;
+      best = i;
+    }
+  }
+  return best;
+}
+
+/// The signed angle from a's direction to b's, in (-pi, pi] [rad].
+double signedAngle(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  return std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));
+}
+
+/// Which side of the run [begin, end) (returns in angular order) the beam along `ray` passes:
+/// -1 before its return begin + inner, +1 after its return end - 1 - inner, 0 between them (or
+/// the origin, ray zero). Needs end - begin > 2 inner.
+int sideOf(const std::vector<SensorReturn>& run, std::size_t begin, std::size_t end,
+           const Eigen::Vector2d& ray, std::size_t inner = 0) {
+  if (ray.isZero()) return 0;
+  const Eigen::Vector2d a = run[begin + inner].point, b = run[end - 1 - inner].point;
+  const double span = signedAngle(a, b), toward = signedAngle(a, ray);
+  const double s = span < 0.0 ? -1.0 : 1.0;  // orient the run from 0 to |span|
+  if (s * toward < 0.0) return -1;
+  if (s * toward > s * span) return 1;
+  return 0;
+}
+
+/// The principal direction of `points` (of their covariance's larger eigenvalue) and their
+/// half-width across it [m].
+std::pair<Eigen::Vector2d, double> principalBand(const std::vector<Eigen::Vector2d>& points) {
+  Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+  for (const Eigen::Vector2d& p : points) mean += p;
+  mean /= static_cast<double>(points.size());
+  double xx = 0.0, xy = 0.0, yy = 0.0;
+  for (const Eigen::Vector2d& p : points) {
+    const Eigen::Vector2d q = p - mean;
+    xx += q.x() * q.x(), xy += q.x() * q.y(), yy += q.y() * q.y();
+  }
+  const double angle = 0.5 * std::atan2(2.0 * xy, xx - yy);
+  const Eigen::Vector2d direction(std::cos(angle), std::sin(angle));
+  double lo = 0.0, hi = 0.0;
+  for (const Eigen::Vector2d& p : points) {
+    const double across = direction.x() * (p.y() - mean.y()) - direction.y() * (p.x() - mean.x());
+    lo = std::min(lo, across), hi = std::max(hi, across);
+  }
+  return {direction, 0.5 * (hi - lo)};
+}
+
+/// The circle through `points` by least squares (I. Kasa, "A circle fitting procedure and its
+/// error analysis", IEEE Trans. Instrum. Meas. 25, 1976: x^2 + y^2 + D x + E y + F = 0), grown to
+/// contain every point; nothing when the points are (nearly) collinear or not round (some point
+/// more than a fifth of the radius inside the circle).
+std::optional<Ellipse> enclosingCircleFit(const std::vector<Eigen::Vector2d>& points) {
+  // Centred on the mean for conditioning.
+  Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+  for (const Eigen::Vector2d& p : points) mean += p;
+  mean /= static_cast<double>(points.size());
+  Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d rhs = Eigen::Vector3d::Zero();
+  for (const Eigen::Vector2d& p : points) {
+    const Eigen::Vector2d q = p - mean;
+    const Eigen::Vector3d row(q.x(), q.y(), 1.0);
+    normal += row * row.transpose();
+    rhs -= row * q.squaredNorm();
+  }
+  const Eigen::Vector3d def = normal.ldlt().solve(rhs);
+  if (!def.allFinite()) return std::nullopt;
+  const Eigen::Vector2d centre = mean - 0.5 * def.head<2>();
+  double radius = 0.0, nearest = std::numeric_limits<double>::infinity();
+  for (const Eigen::Vector2d& p : points) {
+    const double distance = (p - centre).norm();
+    radius = std::max(radius, distance), nearest = std::min(nearest, distance);
+  }
+  // Round: every point within a fifth of the radius of the circle (a pillar's arc with noise;
+  // not a corner, whose middle lies far inside the circle through its ends).
+  if (!(radius - nearest <= 0.2 * radius)) return std::nullopt;
+  // A few ulps more, so that rounding leaves every point inside.
+  radius *= 1.0 + 1e-12;
+  if (!(radiusOk(radius) && coordinateOk(centre.x()) && coordinateOk(centre.y()))) {
+    return std::nullopt;
+  }
+  return Ellipse{centre, radius, radius, 0.0};
+}
+
+}  // namespace
+
+BeamReading readBeam(double r, double range_min, double range_max) {
+  // Written so that NaN ranges and NaN limits give Unknown.
+  if (!(r >= std::max(range_min, 0.0) && range_max >= range_min)) return BeamReading::Unknown;
+  if (r > range_max) return BeamReading::NoReturn;  // +inf too
+  return r <= kMaxCoordinate ? BeamReading::Return : BeamReading::Unknown;
+}
+
+SensorView scanView(const std::vector<float>& ranges, double angle_min, double angle_increment,
+                    double range_min, double range_max, double free_space_tolerance) {
+  SensorView view;
+  view.returns.reserve(ranges.size());
+  std::vector<FreeSegment> free;
+  free.reserve(ranges.size());
+  const double lowest = std::max(range_min, 0.0);
+  for (std::size_t i = 0; i < ranges.size(); ++i) {
+    const double angle = angle_min + static_cast<double>(i) * angle_increment;
+    if (!std::isfinite(angle)) continue;
+    const double r = ranges[i];
+    const Eigen::Vector2d direction(std::cos(angle), std::sin(angle));
+    switch (readBeam(r, range_min, range_max)) {
+      case BeamReading::Return:
+        view.returns.push_back({r * direction, i});
+        free.push_back({direction, lowest, r - free_space_tolerance});
+        break;
+      case BeamReading::NoReturn:
+        free.push_back({direction, lowest, std::min(range_max, kMaxCoordinate)});
+        break;
+      case BeamReading::Unknown:
+        break;
+    }
+  }
+  view.free_space = FreeSpace(std::move(free));
+  const double turn = std::abs(angle_increment) * static_cast<double>(ranges.size());
+  view.full_turn = std::abs(turn - 2.0 * kPi) <= 0.5 * std::abs(angle_increment);
+  return view;
+}
+
+SensorView cloudView(const std::vector<Eigen::Vector2d>& points, double free_space_tolerance) {
+  SensorView view;
+  view.returns.reserve(points.size());
+  std::vector<double> angles;
+  angles.reserve(points.size());
+  for (const Eigen::Vector2d& p : points) {
+    if (!(coordinateOk(p.x()) && coordinateOk(p.y()))) continue;
+    view.returns.push_back({p, 0});
+    angles.push_back(std::atan2(p.y(), p.x()));
+  }
+  // Sort by angle (then range, so that each bin's nearest point comes first).
+  std::vector<std::size_t> order(view.returns.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    if (angles[a] != angles[b]) return angles[a] < angles[b];
+    return view.returns[a].point.squaredNorm() < view.returns[b].point.squaredNorm();
+  });
+  std::vector<SensorReturn> sorted;
+  sorted.reserve(order.size());
+  std::vector<std::size_t> nearest(kCloudBins, order.size());
+  for (const std::size_t i : order) {
+    const Eigen::Vector2d p = view.returns[i].point;
+    // The same point again (a vertical surface seen by several rings) adds nothing.
+    if (!sorted.empty() && sorted.back().point == p) continue;
+    const std::size_t key = cloudBin(p);
+    if (nearest[key] == order.size() ||
+        p.squaredNorm() < sorted[nearest[key]].point.squaredNorm()) {
+      nearest[key] = sorted.size();
+    }
+    sorted.push_back({p, key});
+  }
+  std::vector<FreeSegment> free;
+  for (const std::size_t i : nearest) {
+    if (i == order.size()) continue;
+    const double r = sorted[i].point.norm();
+    if (!(r > 0.0)) continue;
+    free.push_back({sorted[i].point / r, 0.0, r - free_space_tolerance});
+  }
+  view.returns = std::move(sorted);
+  view.free_space = FreeSpace(std::move(free));
+  view.full_turn = true;
+  return view;
+}
+
+bool sameContour(const Eigen::Vector2d& p, const Eigen::Vector2d& q, double range_noise_sigma,
+                 double join_distance) {
+  const double gap = (p - q).norm();
+  if (gap < join_distance) return true;
+  const double dphi = angleBetween(p, q);
+  if (!(dphi < kBreakpointAngle)) return false;
+  return gap <= p.norm() * std::sin(dphi) / std::sin(kBreakpointAngle - dphi) +
+                    3.0 * range_noise_sigma;
+}
+
+std::vector<std::vector<SensorReturn>> breakContours(const SensorView& view,
+                                                     double range_noise_sigma,
+                                                     double join_distance,
+                                                     std::size_t min_points) {
+  std::vector<std::vector<SensorReturn>> contours;
+  const auto& returns = view.returns;
+  for (std::size_t i = 0; i < returns.size(); ++i) {
+    if (i == 0 || !sameContour(returns[i - 1].point, returns[i].point, range_noise_sigma,
+                               join_distance)) {
+      contours.emplace_back();
+    }
+    contours.back().push_back(returns[i]);
+  }
+  // Across the scan's start: the last contour continues into the first.
+  if (view.full_turn && contours.size() > 1 &&
+      sameContour(returns.back().point, returns.front().point, range_noise_sigma,
+                  join_distance)) {
+    contours.back().insert(contours.back().end(), contours.front().begin(),
+                           contours.front().end());
+    contours.erase(contours.begin());
+  }
+  const std::size_t minimum = std::max<std::size_t>(min_points, 1);
+  contours.erase(std::remove_if(contours.begin(), contours.end(),
+                                [&](const auto& c) { return c.size() < minimum; }),
+                 contours.end());
+  return contours;
+}
+
+std::vector<std::vector<SensorReturn>> cloudContours(const SensorView& view, double join_distance,
+                                                     std::size_t min_points) {
+  std::vector<Eigen::Vector2d> points;
+  points.reserve(view.returns.size());
+  for (const SensorReturn& r : view.returns) points.push_back(r.point);
+  std::vector<std::vector<SensorReturn>> contours;
+  for (const auto& cluster : clusterUnorderedPoints(points, join_distance, min_points)) {
+    contours.emplace_back();
+    contours.back().reserve(cluster.size());
+    for (const Eigen::Vector2d& p : cluster) contours.back().push_back({p, cloudBin(p)});
+  }
+  return contours;
+}
+
+ContourEllipses contourEllipses(const std::vector<std::vector<SensorReturn>>& contours,
+                                const FreeSpace& free_space, double min_radius) {
+  ContourEllipses result;
+  if (radiusViolation(min_radius)) {
+    // The same words as enclosingEllipseWithMinRadius(), which checks it the same way.
+    result.error = enclosingEllipseWithMinRadius({Eigen::Vector2d::Zero()}, min_radius).error;
+    return result;
+  }
+  std::vector<Eigen::Vector2d> points;
+  for (const auto& contour : contours) {
+    // Runs still to do, the next one on top: the output keeps contour order.
+    struct Run {
+      std::size_t begin, end;
+      bool peel_front, peel_back;  // may an end return still be split off alone
+    };
+    std::vector<Run> todo = {{0, contour.size(), true, true}};
+    while (!todo.empty()) {
+      const Run run = todo.back();
+      const std::size_t begin = run.begin, end = run.end, n = end - begin;
+      todo.pop_back();
+      // Two runs [begin, at) and [at, end), whose new ends may be peeled, the old ones as before.
+      const auto split = [&](std::size_t at) {
+        todo.push_back({at, end, true, run.peel_back});
+        todo.push_back({begin, at, run.peel_front, true});
+      };
+      if (n >= 3 && free_space.crossed(contour[begin].point, contour[end - 1].point)) {
+        split(splitIndex(contour, begin, end));
+        continue;
+      }
+      points.clear();
+      for (std::size_t i = begin; i < end; ++i) points.push_back(contour[i].point);
+      ContourEllipse out{Ellipse{}, contour[begin].key, n, false};
+      std::vector<Eigen::Vector2d> rays;  // the beams the candidates entered
+      // Takes `candidate` when it stays out of the free space.
+      const auto accepted = [&](const Ellipse& candidate, bool reduced) {
+        Eigen::Vector2d ray;
+        if (free_space.entered(candidate, &ray)) {
+          rays.push_back(ray);
+          return false;
+        }
+        out.ellipse = candidate;
+        out.radius_reduced = reduced;
+        result.ellipses.push_back(out);
+        return true;
+      };
+      // A thin run (a wall's returns) is one whose band fits within min_radius.
+      const auto [direction, half_width] = principalBand(points);
+      const bool thin = n >= 3 && std::sqrt(2.0) * half_width <= min_radius;
+      if (n >= 3) {
+        // 1. A round object's arc: the circle it lies on (not the huge one of a nearly straight
+        // run: at most the chord's length in radius). O(n).
+        const std::optional<Ellipse> circle = enclosingCircleFit(points);
+        const double chord = (points.back() - points.front()).norm();
+        if (circle && circle->radius_x >= min_radius && circle->radius_x <= chord && !thin) {
+          if (accepted(*circle, false)) continue;
+          // A round arc whose circle meets a beam (where the beams graze the object, its circle
+          // grown by the range noise reaches their free parts): every circle and every ellipse
+          // as round would, so the arc is split (Douglas-Peucker) with no costlier candidate
+          // tried, until its parts are thin enough for band ellipses.
+          split(splitIndex(contour, begin, end));
+          continue;
+        }
+      }
+      // 2. The enclosing ellipse; for a thin run the band's ellipse, O(n), about what the
+      // minimum-area optimiser would give at far more cost.
+      const EnclosingEllipse fit = thin ? bandEllipse(points, direction, min_radius)
+                                        : enclosingEllipseWithMinRadius(points, min_radius);
+      if (!fit.ok()) {
+        result.skipped.push_back("returns " + std::to_string(contour[begin].key) + " to " +
+                                 std::to_string(contour[end - 1].key) + ": " + fit.error);
+        continue;
+      }
+      if (accepted(fit.ellipse, false)) continue;
+      if (n >= 3 && !thin) {
+        // 3. A convex object bulges the enclosing ellipse out in front of it: enclose the run
+        // with its shadow (each return pushed back along its ray by the chord's length, space the
+        // sensor cannot see), which rounds the ellipse onto the object.
+        const double depth = (points.back() - points.front()).norm();
+        for (std::size_t i = 0; i < n; ++i) {
+          points.push_back(points[i] * (1.0 + depth / points[i].norm()));
+        }
+        const EnclosingEllipse shadowed = enclosingEllipseWithMinRadius(points, min_radius);
+        points.resize(n);
+        if (shadowed.ok() && accepted(shadowed.ellipse, false)) continue;
+      }
+      // 4. A thin run (a wall seen at a glancing angle, one or two returns) whose min_radius
+      // ellipse reaches into the free parts of its neighbouring beams: the smaller radius the
+      // free space leaves, half the smallest clearance of its returns.
+      if (inscribedRadius(fit.ellipse) <= min_radius * (1.0 + 1e-9)) {
+        double clearance = min_radius;
+        for (const Eigen::Vector2d& p : points) {
+          clearance = std::min(clearance, free_space.clearance(p, min_radius));
+        }
+        const double reduced = std::max(0.5 * clearance, kMinRadius);
+        const EnclosingEllipse thinner = thin ? bandEllipse(points, direction, reduced)
+                                              : enclosingEllipseWithMinRadius(points, reduced);
+        if (thinner.ok() && accepted(thinner.ellipse, true)) continue;
+        if (thinner.ok() && n == 1) {
+          // Another beam through the return itself: kept all the same, and said.
+          out.ellipse = thinner.ellipse;
+          out.radius_reduced = true;
+          result.ellipses.push_back(out);
+          result.skipped.push_back("return " + std::to_string(contour[begin].key) +
+                                   ": no circle around it stays out of the free space");
+          continue;
+        }
+      }
+      if (n == 1) {  // not even the reduced circle is a valid ellipse: kept, and said
+        out.ellipse = fit.ellipse;
+        result.ellipses.push_back(out);
+        result.skipped.push_back("return " + std::to_string(contour[begin].key) +
+                                 ": its circle of min_radius enters the free space");
+        continue;
+      }
+      if (n == 2) {
+        split(begin + 1);
+        continue;
+      }
+      // Where a candidate entered a beam beyond one end, that end's return goes alone (once per
+      // end: a face seen at a glancing angle would otherwise be peeled return by return); else
+      // the Douglas-Peucker split.
+      int side = 0;
+      for (const Eigen::Vector2d& ray : rays) {
+        const int s = sideOf(contour, begin, end, ray);
+        if ((s < 0 && run.peel_front) || (s > 0 && run.peel_back)) {
+          side = s;
+          break;
+        }
+      }
+      if (side < 0) {
+        todo.push_back({begin + 1, end, false, run.peel_back});
+        todo.push_back({begin, begin + 1, false, false});
+      } else if (side > 0) {
+        todo.push_back({end - 1, end, false, false});
+        todo.push_back({begin, end - 1, run.peel_front, false});
+      } else {
+        split(splitIndex(contour, begin, end));
+      }
+    }
+  }
+  return result;
+}
+
+}  // namespace ellipse_collision::core

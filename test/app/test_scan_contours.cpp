@@ -1,0 +1,364 @@
+// scan_obstacles' guarantees (issue 32) on ray-cast synthetic scenes (test/support/synthetic_scan.h),
+// each checked on every beam against this file's own oracle, computed apart from the code under
+// test: every valid return inside an ellipse (normalised form in long double); no ellipse
+// entering any beam's free part (the beam segment mapped into the ellipse's unit-circle frame and
+// its distance to the centre measured, not the quadratic the code solves); the sensor origin in
+// no ellipse; a 0.6 m disc through a 0.9 m doorway touching nothing (sampled rims); counts and
+// names.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "ellipse_collision/app/scan_obstacles.h"
+#include "ellipse_collision/core/scan_contours.h"
+#include "synthetic_scan.h"
+
+namespace ellipse_collision::app {
+namespace {
+
+using test::ScanFields;
+using test::World;
+
+/// A point mapped into the frame where `e` is the unit circle (long double).
+struct Unit {
+  long double u, v;
+};
+Unit toUnit(const EllipseSpec& e, double px, double py) {
+  const long double dx = static_cast<long double>(px) - e.x, dy = static_cast<long double>(py) - e.y;
+  const long double c = std::cos(static_cast<long double>(e.angle));
+  const long double s = std::sin(static_cast<long double>(e.angle));
+  return {(c * dx + s * dy) / e.radius_x, (-s * dx + c * dy) / e.radius_y};
+}
+
+bool contains(const EllipseSpec& e, double px, double py) {
+  const Unit p = toUnit(e, px, py);
+  return p.u * p.u + p.v * p.v <= 1.0L + 1e-12L;
+}
+
+/// Whether the open segment from `t0` to `t1` [m] along the unit direction (dx, dy) from the
+/// origin meets the open ellipse: its distance to the centre in the unit-circle frame is < 1.
+bool segmentEnters(const EllipseSpec& e, double dx, double dy, double t0, double t1) {
+  if (!(t1 > t0)) return false;
+  const Unit a = toUnit(e, t0 * dx, t0 * dy), b = toUnit(e, t1 * dx, t1 * dy);
+  const long double ex = b.u - a.u, ey = b.v - a.v, len2 = ex * ex + ey * ey;
+  long double s = len2 > 0 ? -(a.u * ex + a.v * ey) / len2 : 0;
+  s = std::min(1.0L, std::max(0.0L, s));
+  const long double nx = a.u + s * ex, ny = a.v + s * ey;
+  return nx * nx + ny * ny < 1.0L;
+}
+
+/// The smallest distance [m] from (px, py) to the ellipse, 0 inside; the rim sampled at 20,000
+/// points (so at most about 1e-3 of its perimeter too large).
+double distanceTo(const EllipseSpec& e, double px, double py) {
+  if (contains(e, px, py)) return 0.0;
+  double best = std::numeric_limits<double>::infinity();
+  const double c = std::cos(e.angle), s = std::sin(e.angle);
+  for (int k = 0; k < 20000; ++k) {
+    const double t = 2.0 * test::kScanPi * k / 20000;
+    const double lx = e.radius_x * std::cos(t), ly = e.radius_y * std::sin(t);
+    best = std::min(best, std::hypot(e.x + c * lx - s * ly - px, e.y + s * lx + c * ly - py));
+  }
+  return best;
+}
+
+/// Every guarantee on every beam; returns the number of violations (each reported once).
+int violations(const ScanFields& scan, const SensorObstacles& result,
+               const ScanObstacleSettings& settings) {
+  int bad = 0;
+  const auto report = [&bad](const std::string& what) {
+    if (++bad <= 10) ADD_FAILURE() << what;
+  };
+  for (const EllipseSpec& e : result.ellipses) {
+    if (contains(e, 0.0, 0.0)) report("the sensor origin is inside " + e.name);
+  }
+  for (std::size_t i = 0; i < scan.ranges.size(); ++i) {
+    const double r = scan.ranges[i], a = scan.angle(i);
+    const double dx = std::cos(a), dy = std::sin(a);
+    double free_to = -1.0;
+    if (std::isfinite(r) && r >= scan.range_min && r <= scan.range_max) {
+      free_to = r - settings.free_space_tolerance;
+      const bool covered = std::any_of(result.ellipses.begin(), result.ellipses.end(),
+                                       [&](const EllipseSpec& e) { return contains(e, r * dx, r * dy); });
+      if (!covered) report("beam " + std::to_string(i) + "'s return (r " + std::to_string(r) + ") is in no ellipse");
+    } else if (r > scan.range_max) {  // +inf too: no return
+      free_to = scan.range_max;
+    }
+    for (const EllipseSpec& e : result.ellipses) {
+      if (segmentEnters(e, dx, dy, scan.range_min, free_to)) {
+        report(e.name + " enters beam " + std::to_string(i) + "'s free part (to " +
+               std::to_string(free_to) + " m)");
+      }
+    }
+  }
+  return bad;
+}
+
+/// With SCAN_CONTOURS_DUMP set, prints the ellipses (to look at a scene's split by eye).
+void dump(const SensorObstacles& result) {
+  if (!std::getenv("SCAN_CONTOURS_DUMP")) return;
+  for (const EllipseSpec& e : result.ellipses) {
+    std::printf("  %s (%.3f, %.3f) %.3f x %.3f at %.3f\n", e.name.c_str(), e.x, e.y, e.radius_x,
+                e.radius_y, e.angle);
+  }
+}
+
+SensorObstacles run(const ScanFields& scan, const ScanObstacleSettings& settings = {}) {
+  return scanObstacles(scan.ranges, scan.angle_min, scan.angle_increment, scan.range_min,
+                       scan.range_max, "laser", settings);
+}
+
+TEST(ScanContours, RoomWithBoxPillarAndDoorwayKeepsEveryGuaranteeOnEveryBeam) {
+  const ScanFields scan = test::castScan(test::roomWorld());
+  const ScanObstacleSettings settings;
+  const SensorObstacles result = run(scan, settings);
+  EXPECT_EQ(violations(scan, result, settings), 0);
+  EXPECT_TRUE(result.skipped.empty());
+  std::printf("room, 720 beams: %zu ellipses\n", result.ellipses.size());
+  dump(result);
+  // Measured 10 (the README documents it): the pillar's circle, one per wall stretch (5, the
+  // two on either side of the doorway included; the left wall across the scan's start is one),
+  // the corridor wall seen through the doorway, 3 for the box's two visible faces (the glancing
+  // face's far return in a circle of its own).
+  EXPECT_LE(result.ellipses.size(), 12u);
+  EXPECT_GE(result.ellipses.size(), 8u);
+}
+
+TEST(ScanContours, DoorwayOf90CmLetsA60CmDiscThrough) {
+  const ScanFields scan = test::castScan(test::roomWorld());
+  const SensorObstacles result = run(scan);
+  // Through the middle of the doorway (x = -0.55), from inside the room into the corridor.
+  for (double y = 1.6; y <= 3.0; y += 0.02) {
+    for (const EllipseSpec& e : result.ellipses) {
+      EXPECT_GT(distanceTo(e, -0.55, y), 0.3 + 2e-3) << e.name << " blocks the doorway at y " << y;
+    }
+  }
+}
+
+TEST(ScanContours, NoisyRoomsKeepEveryGuarantee) {
+  for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+    const ScanFields scan = test::castScan(test::roomWorld(), 720, 10.0, 0.01, seed);
+    const ScanObstacleSettings settings;
+    const SensorObstacles result = run(scan, settings);
+    EXPECT_EQ(violations(scan, result, settings), 0) << "seed " << seed;
+    EXPECT_LE(result.ellipses.size(), 20u) << "seed " << seed;
+    std::printf("noisy room (sigma 0.01 m), seed %d: %zu ellipses\n", static_cast<int>(seed),
+                result.ellipses.size());
+  }
+}
+
+TEST(ScanContours, RoomWithTenRoundObjectsKeepsEveryGuarantee) {
+  ScanFields scan = test::castScan(test::objectRoomWorld(), 720, 30.0, 0.005, 40);
+  for (const int i : {5, 200, 400}) scan.ranges[i] = std::numeric_limits<float>::quiet_NaN();
+  const ScanObstacleSettings settings;
+  const SensorObstacles result = run(scan, settings);
+  EXPECT_EQ(violations(scan, result, settings), 0);
+  std::printf("8 m x 6 m room with ten round objects (bench_scan_obstacles' scan): %zu ellipses\n",
+              result.ellipses.size());
+  dump(result);
+}
+
+TEST(ScanContours, CorridorLongerThanTheRangeLeavesItsAxisFree) {
+  World world;
+  world.walls.push_back({{-50.0, 1.0}, {50.0, 1.0}});
+  world.walls.push_back({{-50.0, -1.0}, {50.0, -1.0}});
+  const ScanFields scan = test::castScan(world, 720, 10.0);
+  const ScanObstacleSettings settings;
+  const SensorObstacles result = run(scan, settings);
+  EXPECT_EQ(violations(scan, result, settings), 0);
+  std::printf("corridor 2 m wide, range_max 10 m: %zu ellipses\n", result.ellipses.size());
+  // Every return of the far, glancing stretches is kept (no noise drop): checked by violations().
+  for (const EllipseSpec& e : result.ellipses) {
+    EXPECT_GT(std::abs(e.y), 0.9) << e.name << " reaches the corridor's axis";
+  }
+}
+
+TEST(ScanContours, GlancingWallIsCoveredAndLeavesTheBeamsAlongItFree) {
+  World world;
+  world.walls.push_back({{0.5, 0.3}, {25.0, 0.3}});
+  const ScanFields scan = test::castScan(world, 1440, 30.0, 0.005, 3);
+  const ScanObstacleSettings settings;
+  const SensorObstacles result = run(scan, settings);
+  EXPECT_EQ(violations(scan, result, settings), 0);
+  std::printf("glancing wall 0.3 m off the sensor, 1440 beams: %zu ellipses\n",
+              result.ellipses.size());
+}
+
+TEST(ScanContours, RoundPillarsAreOneEllipseEachHuggingThePillar) {
+  World world;
+  world.pillars.push_back({{2.0, 0.0}, 0.3});
+  world.pillars.push_back({{-1.0, 1.5}, 0.1});
+  world.pillars.push_back({{0.0, -4.0}, 0.5});
+  const ScanFields scan = test::castScan(world, 720, 10.0);
+  const ScanObstacleSettings settings;
+  const SensorObstacles result = run(scan, settings);
+  EXPECT_EQ(violations(scan, result, settings), 0);
+  std::printf("3 round pillars: %zu ellipses\n", result.ellipses.size());
+  dump(result);
+  ASSERT_EQ(result.ellipses.size(), 3u);
+  for (std::size_t i = 0; i < 3; ++i) {
+    // In beam order from -pi: the pillar at -90 degrees, at 0, at 124 degrees.
+    const test::WorldCircle& pillar = world.pillars[(i + 2) % 3];
+    const EllipseSpec& e = result.ellipses[i];
+    // Within the pillar: its own circle, or the enclosing ellipse of the arc where that already
+    // keeps out of the free space (the small one).
+    EXPECT_LE(std::hypot(e.x - pillar.centre.x(), e.y - pillar.centre.y()), pillar.radius) << e.name;
+    EXPECT_LE(e.radius_x, pillar.radius + 1e-3) << e.name;
+  }
+}
+
+TEST(ScanContours, LoneFarPoleIsAnObstacleUnlessTheNoiseRuleSaysOtherwise) {
+  World world;
+  world.pillars.push_back({{8.0, 0.3}, 0.03});  // seen by one or two beams (7 cm apart there)
+  const ScanFields scan = test::castScan(world, 720, 10.0);
+  const int returns = static_cast<int>(std::count_if(scan.ranges.begin(), scan.ranges.end(),
+                                                     [](float r) { return std::isfinite(r); }));
+  ASSERT_GE(returns, 1);
+  ASSERT_LE(returns, 2);
+  ScanObstacleSettings settings;
+  const SensorObstacles result = run(scan, settings);
+  EXPECT_EQ(violations(scan, result, settings), 0);
+  EXPECT_EQ(result.ellipses.size(), 1u);
+  // The explicit noise rule: contours of fewer than min_cluster_points returns are dropped.
+  settings.min_cluster_points = returns + 1;
+  EXPECT_TRUE(run(scan, settings).ellipses.empty());
+}
+
+TEST(ScanContours, BeamsWithoutReturnAreFreeToRangeMaxAndNanBeamsAreUnknown) {
+  // Beam 0 hits at 2 m; beam 1 no return (inf); beam 2 NaN; beam 3 above range_max.
+  const std::vector<float> ranges = {2.0f, std::numeric_limits<float>::infinity(),
+                                     std::numeric_limits<float>::quiet_NaN(), 12.0f, 0.01f};
+  const core::SensorView view = core::scanView(ranges, 0.0, 0.1, 0.05, 10.0, 0.1);
+  ASSERT_EQ(view.returns.size(), 1u);
+  const auto& free = view.free_space.segments();
+  ASSERT_EQ(free.size(), 3u);  // beams 0, 1, 3; NaN and below range_min are unknown
+  EXPECT_DOUBLE_EQ(free[0].to, 2.0 - 0.1);
+  EXPECT_DOUBLE_EQ(free[1].to, 10.0);
+  EXPECT_DOUBLE_EQ(free[2].to, 10.0);
+  EXPECT_NEAR(std::atan2(free[2].direction.y(), free[2].direction.x()), 0.3, 1e-12);
+}
+
+TEST(ScanContours, RemovedReturnsAroundAPointShrinkItsCircleNotDropIt) {
+  // A return at 1 m between two no-return beams 0.5 degree apart: their free parts pass 9 mm
+  // from it, so a 5 cm circle would enter them; the point keeps a smaller circle.
+  const double inc = 0.5 * test::kScanPi / 180.0;
+  const std::vector<float> ranges = {std::numeric_limits<float>::infinity(), 1.0f,
+                                     std::numeric_limits<float>::infinity()};
+  ScanFields scan;
+  scan.ranges = ranges;
+  scan.angle_min = -inc;
+  scan.angle_increment = inc;
+  const ScanObstacleSettings settings;
+  const SensorObstacles result = run(scan, settings);
+  ASSERT_EQ(result.ellipses.size(), 1u);
+  EXPECT_EQ(violations(scan, result, settings), 0);
+  EXPECT_LT(result.ellipses[0].radius_x, settings.min_radius);
+  EXPECT_GT(result.ellipses[0].radius_x, 0.001);
+}
+
+TEST(ScanContours, ReturnsCloseAllAroundNeverPutTheSensorInsideAnEllipse) {
+  // Three quarters of a turn of returns 0.12 m away: within range_min + free_space_tolerance,
+  // so their beams have no free part, and only the origin rule keeps the sensor out of the
+  // ellipse around them (one enclosing ellipse of the arc would contain it).
+  ScanFields scan;
+  scan.ranges.assign(540, 0.12f);
+  const ScanObstacleSettings settings;
+  const SensorObstacles result = run(scan, settings);
+  EXPECT_EQ(violations(scan, result, settings), 0);
+  EXPECT_GE(result.ellipses.size(), 2u);
+}
+
+TEST(ScanContours, NamesAreStableAcrossIdenticalScansAndFollowTheFirstBeam) {
+  const ScanFields scan = test::castScan(test::roomWorld(), 720, 10.0, 0.01, 7);
+  const SensorObstacles first = run(scan), second = run(scan);
+  ASSERT_EQ(first.ellipses.size(), second.ellipses.size());
+  std::set<std::string> names;
+  for (std::size_t i = 0; i < first.ellipses.size(); ++i) {
+    EXPECT_EQ(first.ellipses[i].name, second.ellipses[i].name);
+    EXPECT_EQ(first.ellipses[i].x, second.ellipses[i].x);
+    names.insert(first.ellipses[i].name);
+  }
+  EXPECT_EQ(names.size(), first.ellipses.size()) << "names repeat";
+  // Removing the first contour's returns does not rename the others (index names would).
+  ScanFields cut = scan;
+  const std::string dropped = first.ellipses.front().name;
+  for (std::size_t i = 0; i < cut.ranges.size(); ++i) {
+    const double r = cut.ranges[i], a = cut.angle(i);
+    if (contains(first.ellipses.front(), r * std::cos(a), r * std::sin(a))) {
+      cut.ranges[i] = std::numeric_limits<float>::quiet_NaN();
+    }
+  }
+  std::set<std::string> after;
+  for (const EllipseSpec& e : run(cut).ellipses) after.insert(e.name);
+  EXPECT_EQ(after.count(dropped), 0u);
+  int kept = 0;
+  for (const std::string& name : names) kept += after.count(name) ? 1 : 0;
+  EXPECT_GE(kept, static_cast<int>(names.size()) - 3) << "most names survive a change elsewhere";
+}
+
+TEST(CloudContours, RoomCloudOf100000PointsKeepsEveryGuarantee) {
+  const World world = test::roomWorld();
+  const auto cloud = test::castCloud(world, 16, 6250);
+  EXPECT_GT(cloud.size(), 80000u);
+  // The default tolerance, and one below min_radius (walls seen head-on get thinner ellipses).
+  for (const double tolerance : {0.1, 0.03}) {
+    ScanObstacleSettings settings;
+    settings.z_min = -0.3;
+    settings.z_max = 1.5;
+    settings.free_space_tolerance = tolerance;
+    const SensorObstacles result = cloudObstacles(cloud, "lidar", settings);
+    std::printf("room cloud, %zu points, free_space_tolerance %g m: %zu ellipses\n", cloud.size(),
+                tolerance, result.ellipses.size());
+    dump(result);
+    int bad = 0;
+    for (const Eigen::Vector3f& p : cloud) {
+      if (!(p.z() >= settings.z_min && p.z() <= settings.z_max)) continue;
+      const bool covered = std::any_of(result.ellipses.begin(), result.ellipses.end(),
+                                       [&](const EllipseSpec& e) { return contains(e, p.x(), p.y()); });
+      if (!covered && ++bad <= 10) ADD_FAILURE() << "(" << p.x() << ", " << p.y() << ") in no ellipse";
+    }
+    // The world's rays: every azimuth's ray is free up to its wall (all surfaces are vertical),
+    // less the tolerance (the bins are finer than the columns: each column's ray is a bin's).
+    for (int c = 0; c < 6250; c += 3) {
+      const double a = -test::kScanPi + 2.0 * test::kScanPi * c / 6250;
+      const auto hit = test::rayCast(world, a);
+      if (!hit) continue;
+      for (const EllipseSpec& e : result.ellipses) {
+        if (contains(e, 0.0, 0.0)) ADD_FAILURE() << "origin inside " << e.name;
+        if (segmentEnters(e, std::cos(a), std::sin(a), 0.0, *hit - tolerance) && ++bad <= 10) {
+          ADD_FAILURE() << e.name << " enters the free ray at azimuth " << a;
+        }
+      }
+    }
+    EXPECT_EQ(bad, 0) << "free_space_tolerance " << tolerance;
+  }
+}
+
+TEST(ScanObstacleSettings, NewSettingsAreRefusedOutsideTheirRangeNamingTheKey) {
+  ScanObstacleSettings s;
+  EXPECT_FALSE(findInvalidSetting(s).has_value());
+  s.free_space_tolerance = 0.0;
+  ASSERT_TRUE(findInvalidSetting(s).has_value());
+  EXPECT_EQ(findInvalidSetting(s)->key, "free_space_tolerance");
+  s.free_space_tolerance = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_EQ(findInvalidSetting(s)->key, "free_space_tolerance");
+  s = {};
+  s.range_noise_sigma = -0.01;
+  ASSERT_TRUE(findInvalidSetting(s).has_value());
+  EXPECT_EQ(findInvalidSetting(s)->key, "range_noise_sigma");
+  EXPECT_EQ(findInvalidSetting(s)->actual, "-0.01");
+  s.range_noise_sigma = 0.0;  // a perfect sensor is allowed
+  EXPECT_FALSE(findInvalidSetting(s).has_value());
+}
+
+}  // namespace
+}  // namespace ellipse_collision::app
