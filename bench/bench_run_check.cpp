@@ -5,7 +5,7 @@
 //   cached        ten links and N obstacles, all in the fixed frame (as bench_service_roundtrip
 //                 stores them): nothing moves
 //   moving_links  the same with the links on a base that moves every check among the obstacles
-//   core_only     checkVouchedScene() alone on the placed scene of `cached`, streamed
+//   core_only     checkValidatedScene() alone on the placed scene of `cached`, streamed
 //   topic_message what the node does with one ~obstacles message of N obstacles that moved a few
 //                 millimetres since the last one (a perception stream): validateAttached() and
 //                 EllipseRegistry::replaceTopicObstacles(), the message already converted
@@ -152,7 +152,7 @@ void registerSize(int count) {
   benchmark::RegisterBenchmark(("run_check/core_only/" + size).c_str(),
                                [=](benchmark::State& state) {
                                  for (auto _ : state) {
-                                   benchmark::DoNotOptimize(core::checkVouchedScene(
+                                   benchmark::DoNotOptimize(core::checkValidatedScene(
                                        *placed, first_obstacle, check_settings->rules));
                                  }
                                })

@@ -13,7 +13,7 @@
 //   sort_and_sweep     the alternative broadphase: both sets sorted on min x and swept
 //   checkScene         the core's checkScene() on the named scene, as the node calls it: checks the
 //                      names, grids the links, streams the obstacles, sorts the answer
-//   checkScene_vouched checkVouchedScene(), as the node calls it: names, ellipses and the
+//   checkScene_vouched checkValidatedScene(), as the node calls it: names, ellipses and the
 //                      links-first order vouched for where they were made (registry, projection),
 //                      so no entry is tested again every cycle
 //   checkScene_warn    the same with a warning distance of 0.1 m (warning pairs via distance())
@@ -283,9 +283,9 @@ int main(int argc, char** argv) {
     // role in the name order of the node's registry (a std::map), as its placing order has them.
     static std::map<int, Scene> column_scenes;
     const Scene& columns = column_scenes[obstacles] = Scene(scene_test::inRegistryOrder(named));
-    const SceneCheckResult vouched = checkVouchedScene(columns, kLinks, SceneRules{});
+    const SceneCheckResult vouched = checkValidatedScene(columns, kLinks, SceneRules{});
     if (!vouched.ok() || static_cast<long>(vouched.collisions.size()) != collisions) {
-      std::fprintf(stderr, "checkVouchedScene finds %zu collisions with %d obstacles, brute force %ld %s\n",
+      std::fprintf(stderr, "checkValidatedScene finds %zu collisions with %d obstacles, brute force %ld %s\n",
                    vouched.collisions.size(), obstacles, collisions, vouched.error.c_str());
       return 1;
     }
@@ -293,7 +293,7 @@ int main(int argc, char** argv) {
         ("scene/checkScene_vouched/" + std::to_string(obstacles)).c_str(),
         [&columns, vouched](benchmark::State& state) {
           for (auto _ : state) {
-            benchmark::DoNotOptimize(checkVouchedScene(columns, kLinks, SceneRules{}));
+            benchmark::DoNotOptimize(checkValidatedScene(columns, kLinks, SceneRules{}));
           }
           state.counters["pair_tests"] = static_cast<double>(vouched.pair_tests);
           state.counters["collisions"] = static_cast<double>(vouched.collisions.size());

@@ -10,8 +10,8 @@
 //    distance, with its distance and points (brute force over all pairs, so a broadphase or bound
 //    that drops a pair is caught), in the documented order, the same bits whatever the input order;
 //  - checkMoversAgainst() with the obstacles in IndexedObstacles answers the same bits and tests
-//    the same number of pairs; so does checkVouchedScene() with the movers first;
-//  - checkVouchedScene() returns, with no sanitizer report, on any scene however broken its
+//    the same number of pairs; so does checkValidatedScene() with the movers first;
+//  - checkValidatedScene() returns, with no sanitizer report, on any scene however broken its
 //    promise (bad entries, obstacles before first_obstacle or links after): an answer, or a
 //    refusal naming the warning distance, first_obstacle or an entry;
 //  - nearestTo() answers what a brute force over all partners answers (colliding partner of the
@@ -128,11 +128,11 @@ void checkScenes(FuzzInput& input) {
   const std::size_t first_obstacle =
       static_cast<std::size_t>(input.integer(0, static_cast<int>(scene.size()) + 1));
   const core::SceneCheckResult broken =
-      core::checkVouchedScene(core::Scene(scene), first_obstacle, rules, only_names);
+      core::checkValidatedScene(core::Scene(scene), first_obstacle, rules, only_names);
   FUZZ_REQUIRE(broken.ok() || broken.error.rfind("ellipses[", 0) == 0 ||
                    broken.error.rfind("first_obstacle = ", 0) == 0 ||
                    broken.error.rfind("warning_distance = ", 0) == 0,
-               "checkVouchedScene: an unexpected refusal: " + broken.error);
+               "checkValidatedScene: an unexpected refusal: " + broken.error);
 
   const core::SceneCheckResult result = core::checkScene(scene, rules, only_names);
   const core::NearestResult nearest = core::nearestTo(scene, rules, nearest_name);
@@ -204,9 +204,9 @@ void checkScenes(FuzzInput& input) {
   std::vector<core::NamedEllipse> ordered = movers;
   ordered.insert(ordered.end(), indexed.obstacles().begin(), indexed.obstacles().end());
   const core::SceneCheckResult vouched =
-      core::checkVouchedScene(core::Scene(ordered), movers.size(), rules, only_names);
+      core::checkValidatedScene(core::Scene(ordered), movers.size(), rules, only_names);
   FUZZ_REQUIRE(sameResult(vouched, expected) && vouched.pair_tests == result.pair_tests,
-               "checkVouchedScene differs from checkScene");
+               "checkValidatedScene differs from checkScene");
 }
 
 void checkProjection(FuzzInput& input) {

@@ -227,7 +227,7 @@ CheckOutcome runCheck(const CheckRequest& request, const EllipseRegistry& regist
   };
   core::SceneCheckResult result =
       standing ? core::checkMoversAgainst(movers(), *standing, settings.rules, only_names)
-               : core::checkVouchedScene(scene, first_obstacle, settings.rules, only_names);
+               : core::checkValidatedScene(scene, first_obstacle, settings.rules, only_names);
   if (!result.ok()) {
     // Requests are validated before they get here, so this is a bug: say so.
     outcome.error_kind = ErrorKind::Internal;

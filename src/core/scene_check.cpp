@@ -365,7 +365,7 @@ __attribute__((noinline)) bool checkFoundPairs(const std::string& name, const El
 /// bounding-circle box meets (a mover always comes first in a pair with an obstacle). The box
 /// needs no trigonometry and no division, so it is safe to make for any values; the obstacle is
 /// prepared only if a pair needs it. Returns false, testing no pair, for an invalid obstacle that
-/// meets a mover's box (a vouched-for scene that broke its promise). `name_of()` gives its name,
+/// meets a mover's box (a scene vouched for as validated that broke its promise). `name_of()` gives its name,
 /// asked only when it meets a mover; `found` is scratch space.
 template <typename NameOf>
 inline bool checkObstacle(const NameOf& name_of, const Ellipse& ellipse, const BoxGrid& grid,
@@ -484,7 +484,7 @@ SceneCheckResult checkScene(const std::vector<NamedEllipse>& ellipses, const Sce
   return checkSceneWith(ellipses, rules, only_names, /*movers_first=*/true);
 }
 
-SceneCheckResult checkVouchedScene(const Scene& scene, std::size_t first_obstacle,
+SceneCheckResult checkValidatedScene(const Scene& scene, std::size_t first_obstacle,
                                    const SceneRules& rules,
                                    const std::set<std::string>& only_names) {
   SceneCheckResult result;

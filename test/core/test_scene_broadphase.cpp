@@ -40,14 +40,14 @@ SceneCheckResult checkIndexed(const std::vector<NamedEllipse>& scene, const Scen
 }
 
 /// The scene checked the node's way when its obstacles move: movers first, vouched for.
-SceneCheckResult checkVouched(const std::vector<NamedEllipse>& scene, const SceneRules& rules,
+SceneCheckResult checkValidated(const std::vector<NamedEllipse>& scene, const SceneRules& rules,
                               const std::set<std::string>& only_names) {
   std::vector<NamedEllipse> ordered = scene;
   const auto first_obstacle =
       std::stable_partition(ordered.begin(), ordered.end(), [](const NamedEllipse& entry) {
         return entry.role != EllipseRole::Obstacle;
       });
-  return checkVouchedScene(Scene(ordered),
+  return checkValidatedScene(Scene(ordered),
                            static_cast<std::size_t>(first_obstacle - ordered.begin()), rules,
                            only_names);
 }
@@ -170,11 +170,11 @@ TEST(SceneBroadphase, MatchesBruteForceOnRandomScenesWithRulesAndWarnings) {
     expectSame(actual, expected, "trial " + std::to_string(trial));
     if (HasFatalFailure()) return;
     // The entry point for scenes the node vouches for: the same bits.
-    const SceneCheckResult vouched = checkVouched(scene, rules, only_names);
-    expectSame(vouched, expected, "checkVouchedScene, trial " + std::to_string(trial));
+    const SceneCheckResult vouched = checkValidated(scene, rules, only_names);
+    expectSame(vouched, expected, "checkValidatedScene, trial " + std::to_string(trial));
     if (HasFatalFailure()) return;
-    expectSame(checkVouched(scene_test::inRegistryOrder(scene), rules, only_names), expected,
-               "checkVouchedScene in registry order, trial " + std::to_string(trial));
+    expectSame(checkValidated(scene_test::inRegistryOrder(scene), rules, only_names), expected,
+               "checkValidatedScene in registry order, trial " + std::to_string(trial));
     if (HasFatalFailure()) return;
     // The obstacles gridded instead of streamed: the same bits and the same pairs tested.
     const SceneCheckResult indexed = checkIndexed(scene, rules, only_names);
@@ -223,8 +223,8 @@ TEST(SceneBroadphase, WarningsAtTheWarningDistanceMatchBruteForce) {
     expectSame(checkScene(scene, rules), expected, "w = " + std::to_string(warning_distance));
     expectSame(checkIndexed(scene, rules, {}), expected,
                "checkMoversAgainst, w = " + std::to_string(warning_distance));
-    expectSame(checkVouched(scene, rules, {}), expected,
-               "checkVouchedScene, w = " + std::to_string(warning_distance));
+    expectSame(checkValidated(scene, rules, {}), expected,
+               "checkValidatedScene, w = " + std::to_string(warning_distance));
     // The gaps fall on either side of the warning distance.
     std::size_t placed = 0;
     for (const NearPair& pair : expected.warnings) {
@@ -301,7 +301,7 @@ TEST(SceneBroadphase, PairsAreInNameOrderWhateverTheNamesFirstBytes) {
   const SceneCheckResult expected = bruteForce(scene, rules, {});
   ASSERT_GT(expected.collisions.size(), 120u);
   expectSame(checkScene(scene, rules), expected, "checkScene");
-  expectSame(checkVouched(scene, rules, {}), expected, "checkVouchedScene");
+  expectSame(checkValidated(scene, rules, {}), expected, "checkValidatedScene");
   expectSame(checkIndexed(scene, rules, {}), expected, "checkMoversAgainst");
 }
 

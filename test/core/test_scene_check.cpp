@@ -115,44 +115,44 @@ TEST(SceneCheck, MatchesBruteForceOnRandomCircleScenes) {
   EXPECT_GT(total_collisions, 1000u);
 }
 
-/// checkVouchedScene() of the entries, stored by column.
-SceneCheckResult checkVouched(const std::vector<NamedEllipse>& entries, std::size_t first_obstacle,
+/// checkValidatedScene() of the entries, stored by column.
+SceneCheckResult checkValidated(const std::vector<NamedEllipse>& entries, std::size_t first_obstacle,
                               const SceneRules& rules) {
-  return checkVouchedScene(Scene(entries), first_obstacle, rules);
+  return checkValidatedScene(Scene(entries), first_obstacle, rules);
 }
 
-TEST(SceneCheck, VouchedEntryPointRefusesWhatCostsNothingPerObstacle) {
+TEST(SceneCheck, ValidatedEntryPointRefusesWhatCostsNothingPerObstacle) {
   const std::vector<NamedEllipse> scene = {circle("arm", EllipseRole::Link, 0, 0, 1),
                                            circle("rock", EllipseRole::Obstacle, 1.5, 0, 1)};
-  EXPECT_TRUE(checkVouched(scene, 1, SceneRules{}).ok());
-  EXPECT_EQ(checkVouched(scene, 1, SceneRules{}).collisions.size(), 1u);
+  EXPECT_TRUE(checkValidated(scene, 1, SceneRules{}).ok());
+  EXPECT_EQ(checkValidated(scene, 1, SceneRules{}).collisions.size(), 1u);
   SceneRules rules;
   rules.warning_distance = -1.0;
-  SceneCheckResult result = checkVouched(scene, 1, rules);
+  SceneCheckResult result = checkValidated(scene, 1, rules);
   EXPECT_NE(result.error.find("warning_distance = -1"), std::string::npos) << result.error;
-  result = checkVouched(scene, 3, SceneRules{});
+  result = checkValidated(scene, 3, SceneRules{});
   EXPECT_EQ(result.error, "first_obstacle = 3 is beyond the 2 ellipses");
-  result = checkVouched(scene, 2, SceneRules{});
+  result = checkValidated(scene, 2, SceneRules{});
   EXPECT_EQ(result.error, "ellipses[1] ('rock') is an obstacle before first_obstacle = 2");
 }
 
-TEST(SceneCheck, VouchedEntryPointRefusesInvalidMoversAndInvalidObstaclesNearThem) {
+TEST(SceneCheck, ValidatedEntryPointRefusesInvalidMoversAndInvalidObstaclesNearThem) {
   const double nan = std::nan(""), inf = std::numeric_limits<double>::infinity();
   const NamedEllipse arm = circle("arm", EllipseRole::Link, 0, 0, 1);
   const NamedEllipse stone = circle("stone", EllipseRole::Obstacle, 0.5, 0, 1);
-  SceneCheckResult result = checkVouched(
+  SceneCheckResult result = checkValidated(
       {arm, {"hand", EllipseRole::Link, {{nan, 0.0}, 1.0, 1.0, 0.0}}, stone}, 2, SceneRules{});
   EXPECT_EQ(result.error.rfind("ellipses[1] ('hand'): center.x", 0), 0u) << result.error;
   // A zero radius near the arm: refused before any pair work divides by it.
-  result = checkVouched({arm, stone, {"rock", EllipseRole::Obstacle, {{0.5, 0.0}, 1.0, 0.0, 0.0}}},
+  result = checkValidated({arm, stone, {"rock", EllipseRole::Obstacle, {{0.5, 0.0}, 1.0, 0.0, 0.0}}},
                              1, SceneRules{});
   EXPECT_EQ(result.error.rfind("ellipses[2] ('rock'): radius_y", 0), 0u) << result.error;
-  result = checkVouched({arm, {"rock", EllipseRole::Obstacle, {{0.5, 0.0}, inf, 1.0, 0.0}}},
+  result = checkValidated({arm, {"rock", EllipseRole::Obstacle, {{0.5, 0.0}, inf, 1.0, 0.0}}},
                              1, SceneRules{});
   EXPECT_EQ(result.error.rfind("ellipses[1] ('rock'): radius_x", 0), 0u) << result.error;
 }
 
-TEST(SceneCheck, VouchedEntryPointAnswersWithoutObstaclesItNeverMeets) {
+TEST(SceneCheck, ValidatedEntryPointAnswersWithoutObstaclesItNeverMeets) {
   // The rest of a broken promise: invalid obstacles far from every mover (or nowhere) are not
   // tested at all, so the answer is that of the scene without them.
   const double nan = std::nan("");
@@ -160,7 +160,7 @@ TEST(SceneCheck, VouchedEntryPointAnswersWithoutObstaclesItNeverMeets) {
   const NamedEllipse stone = circle("stone", EllipseRole::Obstacle, 0.5, 0, 1);
   const SceneCheckResult expected = checkScene({arm, stone}, SceneRules{});
   ASSERT_EQ(expected.collisions.size(), 1u);
-  const SceneCheckResult result = checkVouched(
+  const SceneCheckResult result = checkValidated(
       {arm, stone,
        {"far", EllipseRole::Obstacle, {{50.0, 0.0}, 0.0, -1.0, 0.0}},
        {"nowhere", EllipseRole::Obstacle, {{nan, nan}, 1.0, 1.0, nan}}},

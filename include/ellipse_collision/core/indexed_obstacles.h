@@ -18,7 +18,7 @@ class IndexedObstacles {
   /// No obstacles.
   IndexedObstacles();
   /// Validates every entry (role Obstacle and a valid ellipse; the names the caller vouches for,
-  /// as for checkVouchedScene()) and grids them. A refused set keeps no obstacle and says
+  /// as for checkValidatedScene()) and grids them. A refused set keeps no obstacle and says
   /// why in error(), naming the entry: "obstacles[3] ('rock'): radius_x = -1 must be > 0".
   explicit IndexedObstacles(std::vector<NamedEllipse> obstacles);
 
@@ -33,7 +33,7 @@ class IndexedObstacles {
   BoxGrid grid_;
 };
 
-/// checkVouchedScene() of the scene `movers` (queries and links) plus obstacles.obstacles(),
+/// checkValidatedScene() of the scene `movers` (queries and links) plus obstacles.obstacles(),
 /// the same answer bit for bit (pair_tests included), with each mover's candidate box looked up
 /// in the obstacles' grid instead of every obstacle streamed past the movers. The movers' names
 /// are vouched for; their ellipses are validated (they are few). Refused for an invalid mover

@@ -21,7 +21,7 @@ struct NamedEllipse {
 };
 
 /// Named ellipses stored by column: the ellipses in one packed array, the names and roles beside
-/// it. A pass over the geometry alone (checkVouchedScene() streaming 100,000 obstacles past the
+/// it. A pass over the geometry alone (checkValidatedScene() streaming 100,000 obstacles past the
 /// links, bandwidth-bound) then reads 48 bytes per entry, not the 96 of a NamedEllipse with its
 /// name. Entry i is (name(i), role(i), ellipse(i)).
 class Scene {

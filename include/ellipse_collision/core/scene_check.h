@@ -104,7 +104,7 @@ SceneCheckResult checkScene(const std::vector<NamedEllipse>& ellipses, const Sce
 /// the rest of the promise (an invalid obstacle far from every mover, a query or link after
 /// first_obstacle, duplicate names) gets an unspecified answer, with no undefined behaviour
 /// (fuzz_scene feeds it broken scenes under the sanitizers).
-SceneCheckResult checkVouchedScene(const Scene& scene, std::size_t first_obstacle,
+SceneCheckResult checkValidatedScene(const Scene& scene, std::size_t first_obstacle,
                                    const SceneRules& rules,
                                    const std::set<std::string>& only_names = {});
 
