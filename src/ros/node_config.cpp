@@ -418,6 +418,11 @@ NodeConfig parseNodeConfig(const XmlRpcValue& params, const UrdfLinkFitter& fit_
   return config;
 }
 
+std::vector<app::EllipseSpec> parseEllipseList(const XmlRpcValue& list, const std::string& key,
+                                               double global_padding) {
+  return readEllipseList(list, key, global_padding);
+}
+
 std::string defaultObstacleStore(const std::string& node_name) {
   const char* ros_home = std::getenv("ROS_HOME");
   const char* home = std::getenv("HOME");

@@ -89,6 +89,14 @@ using UrdfLinkFitter =
 NodeConfig parseNodeConfig(const XmlRpc::XmlRpcValue& params,
                            const UrdfLinkFitter& fit_urdf_links = {});
 
+/// Parses a list of ellipses as the node's `links` and `obstacles` are given: each entry a dict
+/// {name, frame, x, y, angle, radius_x, radius_y, padding (optional)} [m, rad], its fields checked
+/// with app::findInvalidPaddedField() and `global_padding` [m]. `key` names the list in messages
+/// (`key[i]`). Names are not checked against each other. Throws ConfigError naming the entry, the
+/// key, expected and actual value.
+std::vector<app::EllipseSpec> parseEllipseList(const XmlRpc::XmlRpcValue& list,
+                                               const std::string& key, double global_padding);
+
 /// $ROS_HOME (else ~/.ros)/ellipse_collision/<node name, '/' -> '_'>.obstacles.
 std::string defaultObstacleStore(const std::string& node_name);
 
