@@ -9,6 +9,7 @@ add_executable(demo_driver
   demo/src/demo_driver.cpp
   demo/src/demo_base_control.cpp
   demo/src/demo_scanner.cpp
+  demo/src/demo_world.cpp
   demo/src/demo_trajectory.cpp)
 target_include_directories(demo_driver PRIVATE
   demo/src ${sensor_msgs_INCLUDE_DIRS} ${std_srvs_INCLUDE_DIRS})

@@ -218,6 +218,7 @@ ellipse_collision_add_gtest(test_demo_units LIBRARIES ellipse_collision_core ${X
   test/demo/rviz_top_down_view.cpp
   test/demo/screen_image.cpp
   demo/src/demo_scanner.cpp
+  demo/src/demo_world.cpp
   demo/src/demo_base_control.cpp
   demo/src/demo_trajectory.cpp)
 target_include_directories(test_demo_units PRIVATE demo/src ${X11_INCLUDE_DIR})

@@ -13,8 +13,10 @@
 #include <vector>
 
 #include "ellipse_collision/core/number_format.h"
+#include "ellipse_collision/core/unique_names.h"
 #include "ellipse_collision/ros/conversions.h"
 #include "ellipse_collision/ros/messages.h"
+#include "ellipse_collision/ros/node_config.h"
 
 namespace ellipse_collision {
 namespace {
@@ -122,7 +124,7 @@ DemoDriver::DemoDriver(const ros::NodeHandle& nh, const ros::NodeHandle& private
   const ros::NodeHandle& p = private_nh_;
   dictKeys(p, "",
            {"rate", "odom_frame", "base_frame", "start", "route", "drive", "back_off", "joints",
-            "moving_obstacle", "scanner", "planned_path"});
+            "static_obstacles", "moving_obstacle", "scanner", "planned_path"});
   const double rate_hz = p.hasParam("rate") ? positive(p, "rate") : 30.0;
   odom_frame_ = frameOr(p, "odom_frame", "odom");
   base_frame_ = frameOr(p, "base_frame", "base_link");
@@ -163,16 +165,45 @@ DemoDriver::DemoDriver(const ros::NodeHandle& nh, const ros::NodeHandle& private
   dictKeys(
       p, o,
       {"name", "radius_x", "radius_y", "angle", "start_x", "start_y", "end_x", "end_y", "period"});
-  if (!p.getParam(o + "/name", obstacle_.name) || obstacle_.name.empty()) {
+  if (!p.getParam(o + "/name", moving_name_) || moving_name_.empty()) {
     throw DemoConfigError("parameter " + fullName(p, o + "/name") + ": expected a non-empty name");
   }
-  obstacle_.frame_id = odom_frame_;
-  obstacle_.radius_x = positive(p, o + "/radius_x");
-  obstacle_.radius_y = positive(p, o + "/radius_y");
-  obstacle_.angle = number(p, o + "/angle");
-  trajectory_.obstacle.start = {number(p, o + "/start_x"), number(p, o + "/start_y")};
-  trajectory_.obstacle.end = {number(p, o + "/end_x"), number(p, o + "/end_y")};
-  trajectory_.obstacle.period_s = positive(p, o + "/period");
+  world_.moving.radius_x = positive(p, o + "/radius_x");
+  world_.moving.radius_y = positive(p, o + "/radius_y");
+  world_.moving.angle = number(p, o + "/angle");
+  world_.shuttle.start = {number(p, o + "/start_x"), number(p, o + "/start_y")};
+  world_.shuttle.end = {number(p, o + "/end_x"), number(p, o + "/end_y")};
+  world_.shuttle.period_s = positive(p, o + "/period");
+
+  // The static obstacles, in the format of the collision node's `obstacles` (the same parser),
+  // fixed in the odom frame; their names and the moving obstacle's are distinct.
+  XmlRpc::XmlRpcValue static_list;
+  if (!p.getParam("static_obstacles", static_list)) {
+    throw DemoConfigError("parameter " + fullName(p, "static_obstacles") +
+                          ": expected a list of ellipses, got nothing");
+  }
+  std::vector<app::EllipseSpec> statics;
+  try {
+    statics = parseEllipseList(static_list, "static_obstacles", 0.0);
+  } catch (const ConfigError& error) {
+    throw DemoConfigError(std::string(error.what()) + " (in " + p.getNamespace() + ")");
+  }
+  std::vector<std::string> names;
+  for (std::size_t i = 0; i < statics.size(); ++i) {
+    const std::string where = fullName(p, "static_obstacles") + "[" + std::to_string(i) + "]";
+    if (statics[i].frame_id != odom_frame_) {
+      throw DemoConfigError("parameter " + where + "/frame: expected the odom frame '" +
+                            odom_frame_ + "', got '" + statics[i].frame_id + "'");
+    }
+    names.push_back(statics[i].name);
+    world_.static_obstacles.push_back(app::paddedEllipse(statics[i], 0.0));
+  }
+  names.push_back(moving_name_);
+  if (const auto problem = core::findNameProblem(names)) {
+    throw DemoConfigError("parameter " + fullName(p, "static_obstacles") + ": the name '" +
+                          names[problem->index] + "' is given twice (static_obstacles and " +
+                          o + "/name share one name space)");
+  }
 
   scanner_frame_ = "laser";
   if (p.hasParam("scanner")) {
@@ -230,7 +261,9 @@ DemoDriver::DemoDriver(const ros::NodeHandle& nh, const ros::NodeHandle& private
   ROS_INFO_STREAM("demo_driver: driving " << base_frame_ << " in " << odom_frame_
                                           << " through the gate (cmd_vel -> cmd_vel_gated), "
                                          << trajectory_.joints.size() << " joints and obstacle '"
-                                         << obstacle_.name << "' at " << rate_hz << " Hz");
+                                         << moving_name_ << "' among "
+                                         << world_.static_obstacles.size()
+                                         << " static obstacles at " << rate_hz << " Hz");
 }
 
 double DemoDriver::demoTime(const ros::Time& now) const {
@@ -291,16 +324,7 @@ void DemoDriver::onTimer(const ros::TimerEvent&) {
   }
   joint_states_pub_.publish(joints);
 
-  const core::Ellipse obstacle = app::paddedEllipse(
-      [&] {
-        app::EllipseSpec spec = obstacle_;
-        const Eigen::Vector2d position = trajectory_.obstacle.at(t);
-        spec.x = position.x();
-        spec.y = position.y();
-        return spec;
-      }(),
-      0.0);
-  publishScan(now, base, obstacle);
+  publishScan(now, base, world_.at(t));
 
   if (!paused_) {
     // The gate stopped the last command: it answered, with zero, a command that was not zero.
@@ -397,7 +421,7 @@ void DemoDriver::onPathCheckTimer(const ros::TimerEvent&) {
 }
 
 void DemoDriver::publishScan(const ros::Time& now, const Pose2D& base,
-                             const core::Ellipse& obstacle) {
+                             const std::vector<core::Ellipse>& world) {
   // Where the scanner sits on the base: a static transform from robot_state_publisher.
   geometry_msgs::TransformStamped mount;
   try {
@@ -430,7 +454,7 @@ void DemoDriver::publishScan(const ros::Time& now, const Pose2D& base,
   ScannerModel as_sent = scanner_;
   as_sent.angle_min = scan.angle_min;
   as_sent.angle_increment = scan.angle_increment;
-  scan.ranges = rayCastScan(sensor, {obstacle}, as_sent);
+  scan.ranges = rayCastScan(sensor, world, as_sent);
   scan_pub_.publish(scan);
 }
 

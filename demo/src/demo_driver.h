@@ -11,10 +11,12 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "demo_base_control.h"
 #include "demo_scanner.h"
 #include "demo_trajectory.h"
+#include "demo_world.h"
 #include "ellipse_collision/app/ellipse_spec.h"
 
 namespace ellipse_collision {
@@ -25,14 +27,15 @@ class DemoConfigError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// demo_driver: drives the demo robot through the collision node's velocity gate and moves one
-/// obstacle and the joints along DemoTrajectory. The base: every cycle BaseScript's command goes
+/// demo_driver: drives the demo robot through the collision node's velocity gate, moves the
+/// joints along DemoTrajectory and one obstacle of its DemoWorld along its shuttle. The base: every cycle BaseScript's command goes
 /// out on `cmd_vel` (the launch remaps it to the node's ~cmd_vel_in), and the base moves only by
 /// the gated command on `cmd_vel_gated` (the node's ~cmd_vel_out), integrated exactly as an arc
 /// from one cycle to the next; the odom -> base transform is that pose. Publishes joint_states
 /// (for robot_state_publisher), the odom -> base transform, and what a planar laser scanner at
-/// the scanner frame sees of the moving obstacle, as a sensor_msgs/LaserScan on `scan` (which
-/// scan_obstacles turns into the collision node's ~obstacles). The service ~pause
+/// the scanner frame sees of the whole world (the static obstacles and the moving one), as a
+/// sensor_msgs/LaserScan on `scan` (which scan_obstacles turns into the collision node's
+/// ~obstacles: the only way the node learns of them). The service ~pause
 /// (std_srvs/SetBool) stops and restarts the demo clock; while paused everything is still
 /// published, with fresh stamps, at the same pose, so tf stays current and the scene stays still;
 /// no command goes out (the gate's cmd_vel_timeout zeroes it) and the base stands.
@@ -44,14 +47,15 @@ class DemoConfigError : public std::runtime_error {
 /// (DELETE while the plan is clear).
 class DemoDriver {
  public:
-  /// Reads the private parameters (demo/config/demo.yaml, `demo_driver:`); throws DemoConfigError.
+  /// Reads the private parameters (demo/config/demo_driver.yaml); throws DemoConfigError.
   DemoDriver(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh);
 
  private:
   void onTimer(const ros::TimerEvent& event);
-  /// Publishes the scan of the obstacle at `obstacle` seen from the base at `base` (both in the
-  /// odom frame), once tf knows where the scanner sits on the base.
-  void publishScan(const ros::Time& now, const Pose2D& base, const core::Ellipse& obstacle);
+  /// Publishes the scan of the `world` ellipses seen from the base at `base` (both in the odom
+  /// frame), once tf knows where the scanner sits on the base.
+  void publishScan(const ros::Time& now, const Pose2D& base,
+                   const std::vector<core::Ellipse>& world);
   bool onPause(std_srvs::SetBool::Request& request, std_srvs::SetBool::Response& response);
   /// The next planned_horizon_s of `command` held from the base's pose, stamped from `now`.
   nav_msgs::Path plannedPath(const ros::Time& now, const core::Twist& command) const;
@@ -71,7 +75,8 @@ class DemoDriver {
   core::Twist gated_;           ///< the last gated command received; the base moves by it
   bool gated_since_command_{false};  ///< a gated command arrived since the last command
   ros::Time last_cycle_;        ///< when the base's pose was last advanced
-  app::EllipseSpec obstacle_;  ///< the moving obstacle's shape; x, y follow trajectory_.obstacle
+  DemoWorld world_;             ///< what the scanner sees, in the odom frame
+  std::string moving_name_;     ///< the moving obstacle's name (for the log)
   std::string scanner_frame_;
   ScannerModel scanner_;
 

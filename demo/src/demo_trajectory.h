@@ -34,12 +34,11 @@ struct NamedJointMotion {
   SineMotion motion;
 };
 
-/// What the demo driver moves by the clock, as a function of the demo's own clock (which stops
-/// while the driver is paused). The base is not here: it moves by the velocity gate's output
-/// (demo_base_control.h).
+/// The joints the demo driver moves by the clock, as a function of the demo's own clock (which
+/// stops while the driver is paused). The base is not here: it moves by the velocity gate's output
+/// (demo_base_control.h); nor the moving obstacle: it is part of the world (demo_world.h).
 struct DemoTrajectory {
   std::vector<NamedJointMotion> joints;
-  ShuttleMotion obstacle;
 };
 
 }  // namespace ellipse_collision

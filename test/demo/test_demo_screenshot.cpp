@@ -4,8 +4,8 @@
 // with a collision (and, if the demo offers one soon, a warning pair), grabs the screen and checks
 // that rviz draws every colliding ellipse red, every other one in a warning pair yellow and every
 // clear one green, at the pixels the view in demo/rviz/demo.rviz maps it to. The links come from
-// the URDF (as the node fits them), the moving obstacle only through the simulated scanner and
-// scan_obstacles (the ellipses on the node's ~obstacles).
+// the URDF (as the node fits them), the obstacles (the demo configures none in the node) only
+// through the simulated scanner and scan_obstacles (the ellipses on the node's ~obstacles).
 #include <std_srvs/SetBool.h>
 #include <tf2_ros/transform_listener.h>
 

@@ -13,6 +13,7 @@
 #include "demo_base_control.h"
 #include "demo_scanner.h"
 #include "demo_trajectory.h"
+#include "demo_world.h"
 #include "rviz_top_down_view.h"
 #include "screen_image.h"
 
@@ -60,6 +61,51 @@ TEST(DemoScanner, ScanSeesTheNearestEllipseInTheSensorsFrame) {
   EXPECT_NEAR(ranges[0], 0.75, 1e-6);  // the near one hides the far one
   EXPECT_TRUE(std::isinf(ranges[1]));
   EXPECT_TRUE(std::isinf(ranges[2]));
+}
+
+core::Ellipse ellipse(double x, double y, double angle, double radius_x, double radius_y) {
+  core::Ellipse e;
+  e.center = {x, y};
+  e.angle = angle;
+  e.radius_x = radius_x;
+  e.radius_y = radius_y;
+  return e;
+}
+
+// The demo's world (demo/config/demo_driver.yaml): the pillar, the crate and the wall, and the
+// cart shuttling from (-4, -0.3) to (-2.2, -0.3) every 12 s. A scanner at (-1.2, -0.3) looking
+// along x, four beams a quarter turn apart.
+TEST(DemoWorld, TheScanSeesTheStaticObstaclesAndTheMovingOne) {
+  DemoWorld world;
+  world.static_obstacles = {ellipse(0.0, 0.0, 0.0, 0.40, 0.40), ellipse(2.3, 1.7, 0.5, 0.45, 0.30),
+                            ellipse(-0.3, -2.1, 0.0, 1.30, 0.15)};
+  world.moving = ellipse(0.0, 0.0, 0.0, 0.35, 0.25);
+  world.shuttle.start = {-4.0, -0.3};
+  world.shuttle.end = {-2.2, -0.3};
+  world.shuttle.period_s = 12.0;
+  ASSERT_EQ(world.at(0.0).size(), 4u);
+  ScannerModel model;
+  model.beams = 4;
+  model.angle_min = 0.0;
+  model.angle_increment = 0.5 * M_PI;
+  Pose2D sensor;
+  sensor.position = {-1.2, -0.3};
+
+  const std::vector<float> start = rayCastScan(sensor, world.at(0.0), model);
+  ASSERT_EQ(start.size(), 4u);
+  // +x: the pillar's circle (radius 0.4) meets the line y = -0.3 at x = -sqrt(0.4^2 - 0.3^2).
+  EXPECT_NEAR(start[0], 1.2 - std::sqrt(0.16 - 0.09), 1e-6);
+  EXPECT_TRUE(std::isinf(start[1])) << start[1];  // +y: nothing (the crate is far to the right)
+  // -x: the cart at its start, its rim 0.35 this side of x = -4.
+  EXPECT_NEAR(start[2], 4.0 - 0.35 - 1.2, 1e-6);
+  // -y: the wall's upper rim at x = -1.2, 0.9 from its centre: y = -2.1 + 0.15 sqrt(1 - (0.9/1.3)^2).
+  EXPECT_NEAR(start[3], 2.1 - 0.15 * std::sqrt(1.0 - std::pow(0.9 / 1.3, 2)) - 0.3, 1e-6);
+
+  // Half a period on, the cart is at its end, (-2.2, -0.3); the static obstacles stay.
+  const std::vector<float> later = rayCastScan(sensor, world.at(6.0), model);
+  EXPECT_NEAR(later[2], 2.2 - 0.35 - 1.2, 1e-6);
+  EXPECT_EQ(later[0], start[0]);
+  EXPECT_EQ(later[3], start[3]);
 }
 
 TEST(DemoBase, ArcPoseMatchesSmallStepsOfTheCommandFromAnyPose) {
