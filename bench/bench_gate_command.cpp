@@ -41,20 +41,7 @@ std::vector<EllipseSpec> links() {
 
 /// `count` standing obstacles in map, a clearing of 1.5 m about the robot's track.
 std::vector<EllipseSpec> obstacles(int count, double half_side) {
-  std::vector<EllipseSpec> specs;
-  int i = 0;
-  for (const bench::FloorObstacle& o : bench::floorObstacles(count, half_side, 1.5, 11)) {
-    EllipseSpec spec;
-    spec.name = "obstacle_" + std::to_string(i++);
-    spec.frame_id = "map";
-    spec.x = o.x;
-    spec.y = o.y;
-    spec.angle = o.angle;
-    spec.radius_x = o.radius_x;
-    spec.radius_y = o.radius_y;
-    specs.push_back(spec);
-  }
-  return specs;
+  return bench::floorObstacleSpecs(count, half_side, 1.5, 11, "map");
 }
 
 /// base_link driving slowly about the origin: a new pose for every command.

@@ -56,20 +56,7 @@ std::vector<EllipseSpec> links(const std::string& frame) {
 
 // Obstacles as bench_service_roundtrip adds them: over a 20 m x 20 m floor about the links.
 std::vector<EllipseSpec> obstacles(int count) {
-  std::vector<EllipseSpec> specs;
-  int i = 0;
-  for (const bench::FloorObstacle& o : bench::floorObstacles(count, 10.0, 0.0, 11)) {
-    EllipseSpec spec;
-    spec.name = "obstacle_" + std::to_string(i++);
-    spec.frame_id = "map";
-    spec.x = o.x;
-    spec.y = o.y;
-    spec.angle = o.angle;
-    spec.radius_x = o.radius_x;
-    spec.radius_y = o.radius_y;
-    specs.push_back(spec);
-  }
-  return specs;
+  return bench::floorObstacleSpecs(count, 10.0, 0.0, 11, "map");
 }
 
 CheckSettings settings() {

@@ -8,7 +8,10 @@
 
 #include <cmath>
 #include <random>
+#include <string>
 #include <vector>
+
+#include "ellipse_collision/app/ellipse_spec.h"
 
 namespace ellipse_collision::bench {
 
@@ -35,6 +38,27 @@ inline std::vector<FloorObstacle> floorObstacles(int count, double half_side, do
     obstacles.push_back(o);
   }
   return obstacles;
+}
+
+/// floorObstacles() as the application layer stores them: named obstacle_0, obstacle_1, ... in
+/// `frame`.
+inline std::vector<app::EllipseSpec> floorObstacleSpecs(int count, double half_side,
+                                                        double clearing, unsigned seed,
+                                                        const std::string& frame) {
+  std::vector<app::EllipseSpec> specs;
+  int i = 0;
+  for (const FloorObstacle& o : floorObstacles(count, half_side, clearing, seed)) {
+    app::EllipseSpec spec;
+    spec.name = "obstacle_" + std::to_string(i++);
+    spec.frame_id = frame;
+    spec.x = o.x;
+    spec.y = o.y;
+    spec.angle = o.angle;
+    spec.radius_x = o.radius_x;
+    spec.radius_y = o.radius_y;
+    specs.push_back(spec);
+  }
+  return specs;
 }
 
 }  // namespace ellipse_collision::bench

@@ -43,7 +43,7 @@ ellipse_collision_add_benchmark(bench_first_contact bench/bench_first_contact.cp
 # The gate through ROS: command in to command out of the running node, beside a plain relay.
 add_executable(bench_gate_roundtrip bench/bench_gate_roundtrip.cpp)
 target_include_directories(bench_gate_roundtrip PRIVATE include bench ${catkin_INCLUDE_DIRS})
-target_link_libraries(bench_gate_roundtrip ${catkin_LIBRARIES})
+target_link_libraries(bench_gate_roundtrip ${catkin_LIBRARIES} Eigen3::Eigen)
 target_compile_options(bench_gate_roundtrip PRIVATE ${ELLIPSE_COLLISION_WARNINGS})
 add_dependencies(bench_gate_roundtrip ${PROJECT_NAME}_generate_messages_cpp)
 
