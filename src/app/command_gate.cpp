@@ -4,22 +4,8 @@
 #include <cmath>
 #include <utility>
 
-#include "ellipse_collision/core/number_format.h"
-
 namespace ellipse_collision::app {
 namespace {
-
-using core::formatNumber;
-
-std::optional<FieldError> outside(const std::string& key, double value, double min, double max,
-                                  bool min_open = false) {
-  const bool below = min_open ? !(value > min) : !(value >= min);
-  if (std::isfinite(value) && !below && value <= max) return std::nullopt;
-  return FieldError{key,
-                    std::string("a finite number within ") + (min_open ? "(" : "[") +
-                        formatNumber(min) + ", " + formatNumber(max) + "]",
-                    formatNumber(value)};
-}
 
 /// A 2D rigid motion: from the fixed frame's plane into the robot frame at t = 0, and back.
 struct PlaneTransform {
@@ -72,25 +58,28 @@ std::optional<FieldError> findInvalidGateSetting(const GateConfig& config) {
                       "'" + config.robot_frame + "'"};
   }
   const core::GateSettings& t = config.timing;
-  if (auto e = outside("gate/horizon", t.horizon, 0.0, kMaxGateHorizonS, true)) return e;
-  if (auto e = outside("gate/time_before_collision", t.time_before_collision, 0.0, t.horizon)) {
+  if (auto e = findOutsideRange("gate/horizon", t.horizon, 0.0, kMaxGateHorizonS, true)) return e;
+  if (auto e =
+          findOutsideRange("gate/time_before_collision", t.time_before_collision, 0.0, t.horizon)) {
     e->expected += " (at most gate/horizon)";
     return e;
   }
-  if (auto e = outside("gate/stop_time", t.stop_time, 0.0, t.time_before_collision)) {
+  if (auto e = findOutsideRange("gate/stop_time", t.stop_time, 0.0, t.time_before_collision)) {
     e->expected += " (at most gate/time_before_collision)";
     return e;
   }
-  if (auto e = outside("gate/margin", t.margin, 0.0, core::kMaxRadius)) return e;
-  if (auto e = outside("gate/resolution", t.resolution, kMinGateResolution, 1.0)) return e;
-  if (auto e = outside("gate/cmd_vel_timeout", config.cmd_vel_timeout_s, 0.0, kMaxGateHorizonS)) {
+  if (auto e = findOutsideRange("gate/margin", t.margin, 0.0, core::kMaxRadius)) return e;
+  if (auto e = findOutsideRange("gate/resolution", t.resolution, kMinGateResolution, 1.0)) return e;
+  if (auto e = findOutsideRange("gate/cmd_vel_timeout", config.cmd_vel_timeout_s, 0.0,
+                                kMaxGateHorizonS)) {
     return e;
   }
-  if (auto e = outside("gate/max_linear_speed", config.max_linear_speed, 0.0, kMaxGateSpeed, true)) {
+  if (auto e = findOutsideRange("gate/max_linear_speed", config.max_linear_speed, 0.0,
+                                kMaxGateSpeed, true)) {
     return e;
   }
-  if (auto e = outside("gate/max_angular_speed", config.max_angular_speed, 0.0, kMaxGateTurnRate,
-                       true)) {
+  if (auto e = findOutsideRange("gate/max_angular_speed", config.max_angular_speed, 0.0,
+                                kMaxGateTurnRate, true)) {
     return e;
   }
   return std::nullopt;
@@ -104,14 +93,14 @@ std::optional<FieldError> findInvalidCommand(const VelocityCommand& command,
                                              const GateConfig& config) {
   static const char* const kAxes[] = {"x", "y", "z"};
   for (int i = 0; i < 3; ++i) {
-    if (auto e = outside(std::string("linear.") + kAxes[i], command.linear[i],
-                         -config.max_linear_speed, config.max_linear_speed)) {
+    if (auto e = findOutsideRange(std::string("linear.") + kAxes[i], command.linear[i],
+                                  -config.max_linear_speed, config.max_linear_speed)) {
       return e;
     }
   }
   for (int i = 0; i < 3; ++i) {
-    if (auto e = outside(std::string("angular.") + kAxes[i], command.angular[i],
-                         -config.max_angular_speed, config.max_angular_speed)) {
+    if (auto e = findOutsideRange(std::string("angular.") + kAxes[i], command.angular[i],
+                                  -config.max_angular_speed, config.max_angular_speed)) {
       return e;
     }
   }

@@ -12,6 +12,16 @@ std::string describeFieldError(const std::string& entry, const FieldError& error
   return entry + "." + error.key + " = " + error.actual + ": expected " + error.expected;
 }
 
+std::optional<FieldError> findOutsideRange(const std::string& key, double value, double min,
+                                           double max, bool min_excluded) {
+  const bool above_min = min_excluded ? value > min : value >= min;
+  if (above_min && value <= max) return std::nullopt;
+  return FieldError{key,
+                    std::string("a number within ") + (min_excluded ? "(" : "[") +
+                        core::formatNumber(min) + ", " + core::formatNumber(max) + "]",
+                    core::formatNumber(value)};
+}
+
 FieldError fieldError(const std::string& key, const core::ValueViolation& violation) {
   using Rule = core::ValueViolation::Rule;
   std::string expected;

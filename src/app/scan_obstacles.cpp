@@ -9,13 +9,6 @@
 namespace ellipse_collision::app {
 namespace {
 
-std::optional<FieldError> outside(const std::string& key, double value, double min, double max) {
-  if (value >= min && value <= max) return std::nullopt;
-  return FieldError{key,
-                    "a number within [" + core::formatNumber(min) + ", " + core::formatNumber(max) + "]",
-                    core::formatNumber(value)};
-}
-
 SensorObstacles toSpecs(const core::ContourEllipses& fit, const std::string& frame_id,
                         const ScanObstacleSettings& settings) {
   SensorObstacles result;
@@ -43,8 +36,8 @@ SensorObstacles toSpecs(const core::ContourEllipses& fit, const std::string& fra
 }  // namespace
 
 std::optional<FieldError> findInvalidSetting(const ScanObstacleSettings& s) {
-  if (auto e = outside("cluster_distance", s.cluster_distance, kMinClusterDistance,
-                       kMaxClusterDistance)) {
+  if (auto e = findOutsideRange("cluster_distance", s.cluster_distance, kMinClusterDistance,
+                                kMaxClusterDistance)) {
     return e;
   }
   if (s.min_cluster_points < 1 || s.min_cluster_points > kMaxClusterPoints) {
@@ -52,10 +45,12 @@ std::optional<FieldError> findInvalidSetting(const ScanObstacleSettings& s) {
                       "an integer within [1, " + std::to_string(kMaxClusterPoints) + "]",
                       std::to_string(s.min_cluster_points)};
   }
-  if (auto e = outside("min_radius", s.min_radius, core::kMinRadius, core::kMaxRadius)) return e;
-  if (auto e = outside("range_noise_sigma", s.range_noise_sigma, 0.0, kMaxRangeNoiseSigma)) return e;
-  if (auto e = outside("free_space_tolerance", s.free_space_tolerance, kMinFreeSpaceTolerance,
-                       kMaxFreeSpaceTolerance)) {
+  if (auto e = findOutsideRange("min_radius", s.min_radius, core::kMinRadius, core::kMaxRadius))
+    return e;
+  if (auto e = findOutsideRange("range_noise_sigma", s.range_noise_sigma, 0.0, kMaxRangeNoiseSigma))
+    return e;
+  if (auto e = findOutsideRange("free_space_tolerance", s.free_space_tolerance,
+                                kMinFreeSpaceTolerance, kMaxFreeSpaceTolerance)) {
     return e;
   }
   if (!std::isfinite(s.z_min)) return FieldError{"z_min", "a finite number", core::formatNumber(s.z_min)};

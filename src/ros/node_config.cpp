@@ -86,11 +86,8 @@ double readInRange(const XmlRpcValue& value, const std::string& where, const std
                    double min, double max, bool zero_allowed = false) {
   const double number = readNonNegative(value, where, key);
   if (zero_allowed && number == 0.0) return number;
-  if (!(number >= min && number <= max)) {
-    fail(where, key,
-         std::string(zero_allowed ? "0 or " : "") + "a number within [" + core::formatNumber(min) + ", " +
-             core::formatNumber(max) + "]",
-         core::formatNumber(number));
+  if (const auto outside = app::findOutsideRange(key, number, min, max)) {
+    fail(where, key, std::string(zero_allowed ? "0 or " : "") + outside->expected, outside->actual);
   }
   return number;
 }

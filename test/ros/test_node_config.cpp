@@ -372,7 +372,7 @@ TEST(NodeConfig, TheGateIsOffByDefaultAndItsKeysAreReadAndRangeChecked) {
 
   p["gate"]["stop_time"] = 3.0;
   EXPECT_EQ(errorOf(p),
-            "parameter ~gate, key 'gate/stop_time': expected a finite number within [0, 2] (at "
+            "parameter ~gate, key 'gate/stop_time': expected a number within [0, 2] (at "
             "most gate/time_before_collision), got 3");
   p["gate"]["stop_time"] = 0.5;
   p["gate"]["on_incomplete"] = "maybe";

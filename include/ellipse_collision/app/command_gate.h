@@ -51,8 +51,7 @@ VelocityCommand scaledCommand(const VelocityCommand& command, double k);
 
 /// A command's own rule: every component finite, each linear one within +-max_linear_speed and
 /// each angular one within +-max_angular_speed. The violation names the field as in the message
-/// ("linear.x", "nan", "a finite number within [-5, 5]"; the caller names the message), or
-/// nothing.
+/// ("linear.x", "nan", "a number within [-5, 5]"; the caller names the message), or nothing.
 std::optional<FieldError> findInvalidCommand(const VelocityCommand& command,
                                              const GateConfig& config);
 

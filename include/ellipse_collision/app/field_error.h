@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <string>
 
 #include "ellipse_collision/core/ellipse.h"
@@ -21,6 +22,11 @@ std::string entryName(const std::string& field, std::size_t index);
 
 /// "obstacles[2].radius_x = -1: expected a finite number > 0".
 std::string describeFieldError(const std::string& entry, const FieldError& error);
+
+/// The range rule of a setting: `value` within [min, max] (within (min, max] when `min_excluded`);
+/// NaN is within no range. The violation reads "a number within [min, max]", or nothing.
+std::optional<FieldError> findOutsideRange(const std::string& key, double value, double min,
+                                           double max, bool min_excluded = false);
 
 /// The field error for a violation of one of the core's value rules (core/ellipse.h), in the
 /// words requests and configuration use.
