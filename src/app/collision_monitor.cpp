@@ -217,40 +217,27 @@ PathCheckOutcome CollisionMonitor::checkPath(
 
 ChangeAnswer CollisionMonitor::addObstacles(const std::vector<EllipseSpec>& specs,
                                             const TransformLookup& lookup) {
-  ChangeAnswer answer;
-  answer.message = validateAttached(specs, "obstacles", settings_.check, lookup);
-  if (answer.message.empty()) answer.message = registry_.addObstacles(specs, "obstacles");
-  if (!answer.message.empty()) {
-    answer.error_kind = ErrorKind::InvalidRequest;
-    return answer;
-  }
-  // Durable before success: a node killed right after the answer restores them.
-  const std::string store_error = persistServiceCall(/*removed_topic_obstacle=*/false);
-  if (!store_error.empty()) {
-    answer.error_kind = ErrorKind::NotPersisted;
-    answer.message = "added in memory but not persisted: " + store_error;
-    return answer;
-  }
-  answer.message = "added " + std::to_string(specs.size()) + " obstacle(s)";
-  return answer;
+  std::string error = validateAttached(specs, "obstacles", settings_.check, lookup);
+  if (error.empty()) error = registry_.addObstacles(specs, "obstacles");
+  if (!error.empty()) return {ErrorKind::InvalidRequest, error};
+  return durableAnswer("added", specs.size(), /*removed_topic_obstacle=*/false);
 }
 
 ChangeAnswer CollisionMonitor::removeObstacles(const std::vector<std::string>& names) {
-  ChangeAnswer answer;
   const bool removes_topic_obstacle = registry_.anyTopicObstacle(names);
-  answer.message = registry_.removeObstacles(names, "names");
-  if (!answer.message.empty()) {
-    answer.error_kind = ErrorKind::InvalidRequest;
-    return answer;
-  }
-  const std::string store_error = persistServiceCall(removes_topic_obstacle);
+  const std::string error = registry_.removeObstacles(names, "names");
+  if (!error.empty()) return {ErrorKind::InvalidRequest, error};
+  return durableAnswer("removed", names.size(), removes_topic_obstacle);
+}
+
+ChangeAnswer CollisionMonitor::durableAnswer(const std::string& done, std::size_t count,
+                                             bool removed_topic_obstacle) {
+  // Durable before success: a node killed right after the answer restores the change.
+  const std::string store_error = persistServiceCall(removed_topic_obstacle);
   if (!store_error.empty()) {
-    answer.error_kind = ErrorKind::NotPersisted;
-    answer.message = "removed in memory but not persisted: " + store_error;
-    return answer;
+    return {ErrorKind::NotPersisted, done + " in memory but not persisted: " + store_error};
   }
-  answer.message = "removed " + std::to_string(names.size()) + " obstacle(s)";
-  return answer;
+  return {ErrorKind::None, done + " " + std::to_string(count) + " obstacle(s)"};
 }
 
 std::string CollisionMonitor::replaceTopicObstacles(const std::vector<EllipseSpec>& specs,
@@ -275,13 +262,19 @@ GateDecision CollisionMonitor::gateCommand(const VelocityCommand& command, doubl
   last_command_s_ = now_s;
   timeout_sent_ = false;
   GateDecision decision = decideGate(command, now_s, latest, at);
+  recordGate(decision);
+  return decision;
+}
+
+void CollisionMonitor::recordGate(const GateDecision& decision) {
   last_gate_action_ = toString(decision.action);
   last_gate_reason_ = decision.reason;
-  if (decision.action == GateAction::Stop || decision.action == GateAction::Incomplete) {
+  const GateAction action = decision.action;
+  if (action == GateAction::Stop || action == GateAction::Incomplete ||
+      action == GateAction::Timeout) {
     ++gate_stops_;
   }
-  if (decision.action == GateAction::Slow) ++gate_slowdowns_;
-  return decision;
+  if (action == GateAction::Slow) ++gate_slowdowns_;
 }
 
 std::optional<GateDecision> CollisionMonitor::gateWatchdog(double now_s) {
@@ -298,9 +291,7 @@ std::optional<GateDecision> CollisionMonitor::gateWatchdog(double now_s) {
       GateAction::Timeout, VelocityCommand(),
       "stopped: no command on ~cmd_vel_in within cmd_vel_timeout " + core::formatNumber(timeout) +
           " s of the last one");
-  last_gate_action_ = toString(decision.action);
-  last_gate_reason_ = decision.reason;
-  ++gate_stops_;
+  recordGate(decision);
   return decision;
 }
 

@@ -190,6 +190,10 @@ class CollisionMonitor {
   void topicObstaclesChanged();
   /// After an accepted service call: "" or why the change is not durable.
   std::string persistServiceCall(bool removed_topic_obstacle);
+  /// The answer of an accepted service call once it is durable: "<done> N obstacle(s)", or
+  /// NotPersisted with why.
+  ChangeAnswer durableAnswer(const std::string& done, std::size_t count,
+                             bool removed_topic_obstacle);
   void reportStoreError(const std::string& error) const;
   /// Restores what `store` holds for this launch; returns the service_revision it counted and
   /// sets `refusal` when a file at its paths is not the store's.
@@ -220,6 +224,8 @@ class CollisionMonitor {
   // The velocity gate.
   GateDecision decideGate(const VelocityCommand& command, double now_s,
                           const TransformLookup& latest, const TransformAtLookup& at);
+  /// The gate's last action and reason, and its counts (STOP, INCOMPLETE and TIMEOUT stop).
+  void recordGate(const GateDecision& decision);
   bool gate_enabled_{false};
   bool gate_heard_{false};      ///< a command came, or the watchdog started counting
   double last_command_s_{0.0};  ///< when the last command came (or the watchdog started)
