@@ -6,6 +6,7 @@
 #include <unordered_set>
 
 #include "ellipse_collision/core/ellipse_polygon.h"
+#include "ellipse_collision/ros/blank_marker.h"
 
 namespace ellipse_collision {
 namespace {
@@ -189,13 +190,7 @@ void CollisionMarkers::recutCrowdedCells(Layer& layer, std::vector<char>& dirty)
 }
 
 Marker CollisionMarkers::emptyMarker(const std::string& ns, std::int32_t id) const {
-  Marker marker;
-  marker.header.frame_id = fixed_frame_;
-  marker.header.stamp = stamp_;
-  marker.ns = ns;
-  marker.id = id;
-  marker.pose.orientation.w = 1.0;
-  return marker;
+  return blankMarker(fixed_frame_, stamp_, ns, id);
 }
 
 std::vector<Marker> CollisionMarkers::fills(std::size_t layer,

@@ -1,8 +1,10 @@
 #include "ellipse_collision/ros/gate_markers.h"
 
 #include <array>
+#include <cstdint>
 
 #include "ellipse_collision/core/ellipse_polygon.h"
+#include "ellipse_collision/ros/blank_marker.h"
 
 namespace ellipse_collision {
 namespace {
@@ -25,17 +27,6 @@ std_msgs::ColorRGBA actionColour(app::GateAction action) {
       break;
   }
   return colour;
-}
-
-visualization_msgs::Marker marker(const std::string& ns, int id, const std::string& frame_id,
-                                  const ros::Time& stamp) {
-  visualization_msgs::Marker m;
-  m.header.frame_id = frame_id;
-  m.header.stamp = stamp;
-  m.ns = ns;
-  m.id = id;
-  m.pose.orientation.w = 1.0;
-  return m;
 }
 
 /// A closed outline of `ellipse` (its drawn polygon, first vertex repeated).
@@ -62,19 +53,21 @@ visualization_msgs::MarkerArray GateMarkers::update(const app::GateDecision& dec
   visualization_msgs::MarkerArray array;
   const std_msgs::ColorRGBA colour = actionColour(decision.action);
   for (std::size_t i = 0; i < decision.outline.size(); ++i) {
-    visualization_msgs::Marker m = marker("gate_outline", static_cast<int>(i), frame_id, stamp);
+    visualization_msgs::Marker m =
+        blankMarker(frame_id, stamp, "gate_outline", static_cast<std::int32_t>(i));
     outline(m, decision.outline[i].ellipse, 0.01, colour);
     array.markers.push_back(std::move(m));
   }
   for (std::size_t i = decision.outline.size(); i < outline_count_; ++i) {
-    visualization_msgs::Marker m = marker("gate_outline", static_cast<int>(i), frame_id, stamp);
+    visualization_msgs::Marker m =
+        blankMarker(frame_id, stamp, "gate_outline", static_cast<std::int32_t>(i));
     m.action = visualization_msgs::Marker::DELETE;
     array.markers.push_back(std::move(m));
   }
   outline_count_ = decision.outline.size();
 
-  visualization_msgs::Marker obstacle = marker("gate_obstacle", 0, frame_id, stamp);
-  visualization_msgs::Marker contact = marker("gate_contact", 0, frame_id, stamp);
+  visualization_msgs::Marker obstacle = blankMarker(frame_id, stamp, "gate_obstacle", 0);
+  visualization_msgs::Marker contact = blankMarker(frame_id, stamp, "gate_contact", 0);
   if (decision.contact_predicted && !decision.obstacle.empty()) {
     outline(obstacle, decision.obstacle_ellipse, 0.03, colour);
     contact.type = visualization_msgs::Marker::SPHERE;
