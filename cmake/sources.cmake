@@ -51,4 +51,5 @@ set(ELLIPSE_COLLISION_APP_SOURCES
   src/app/scene_placement.cpp
   src/app/placement_cache.cpp
   src/app/standing_obstacles.cpp
+  src/app/stored_placement.cpp
   src/app/transform_lookup.cpp)
