@@ -29,6 +29,8 @@ set(ELLIPSE_COLLISION_CORE_SOURCES
   src/core/relative_shape.cpp
   src/core/scene.cpp
   src/core/scene_check.cpp
+  src/core/scene_entry_ref.cpp
+  src/core/scene_nearest.cpp
   src/core/shape_outline.cpp
   src/core/unique_names.cpp
   src/core/velocity_gate.cpp)

@@ -1,6 +1,5 @@
 #include "ellipse_collision/core/enclosing_ellipse.h"
 
-#include <Eigen/Cholesky>
 #include <Eigen/LU>
 #include <algorithm>
 #include <cfloat>
@@ -11,37 +10,25 @@
 #include <utility>
 
 #include "ellipse_collision/core/number_format.h"
+#include "khachiyan_weights.h"
 
 namespace ellipse_collision::core {
 namespace {
 
+using detail::WeightSolver;
+
 using Vec2 = Eigen::Vector2d;
-using Vec3 = Eigen::Vector3d;
 using Mat2 = Eigen::Matrix2d;
-using Mat3 = Eigen::Matrix3d;
 
 constexpr double kPi = 3.14159265358979323846;
-
-// The lifted dimension of Khachiyan's algorithm: points (x, y, 1) in R^3.
-constexpr double kLifted = 3.0;
 
 // The first pass only has to find a frame in which the ellipse is round; the second pass, in that
 // frame, goes down to kEnclosingGapTolerance.
 constexpr double kCoarseGap = 1e-3;
 
-// Points added to the core set per round at most: the peaks of the violating runs, worst first,
-// so that a round settles several contact regions while the core stays small.
-constexpr std::size_t kCoreAdditions = 16;
-
-// Recompute the moment matrix from the weights this often, so that rounding in the rank-one
-// updates cannot accumulate.
-constexpr int kRefreshInterval = 32;
-
 // Rounds of the certification; each one grows the radii past the worst point, so one suffices
 // unless rounding conspires.
 constexpr int kCertificationRounds = 8;
-
-Vec3 lift(const Vec2& p) { return {p.x(), p.y(), 1.0}; }
 
 double cross(const Vec2& o, const Vec2& a, const Vec2& b) {
   return (a.x() - o.x()) * (b.y() - o.y()) - (a.y() - o.y()) * (b.x() - o.x());
@@ -106,243 +93,6 @@ struct Affine {
   Affine then(const Affine& inner) const {
     return {apply(inner.origin), linear * inner.linear, det * inner.det};
   }
-};
-
-/// The weights of Khachiyan's dual problem, max log det X(u), X(u) = sum u_i q_i q_i^T over the
-/// lifted points q_i = (p_i, 1), sum u_i = 1, u >= 0, restricted to a core set of indices.
-///
-/// On the core, Khachiyan's algorithm with Todd–Yildirim away steps runs first: cheap steps that
-/// converge fast on most sets. When the optimal weights are not unique (many points on the
-/// optimal ellipse, as on co-circular sets) its linear rate can be poor; then a dual interior-
-/// point method finishes: Newton steps on log det X(u) + mu sum log u_i subject to sum u_i = 1,
-/// with mu driven to gap / core size, each step a Cholesky solve of the k x k Hessian (k the
-/// core size, which stays small: the core only gains the peak violator of each region).
-class WeightSolver {
- public:
-  explicit WeightSolver(std::size_t size) : u_(size, 0.0), in_core_(size, 0) {}
-
-  void addToCore(std::size_t i) {
-    if (in_core_[i]) return;
-    in_core_[i] = 1;
-    core_.push_back(i);
-  }
-  void spreadUniformlyOverCore() {
-    for (const std::size_t i : core_) u_[i] = 1.0 / static_cast<double>(core_.size());
-  }
-  const std::vector<double>& weights() const { return u_; }
-
-  /// Runs until every point satisfies omega_i <= 3 (1 + gap) (or the step budget is spent);
-  /// returns the achieved max omega_i / 3 - 1 over all points. `points` are the vertices of a
-  /// convex polygon in order.
-  double solve(const std::vector<Vec2>& points, double gap) {
-    for (;;) {
-      if (!solveCoreByKhachiyan(points, gap)) solveCoreByInteriorPoint(points, gap);
-      const Mat3 inverse = moment(points).inverse();
-      omega_.resize(points.size());
-      double worst = 0.0;
-      for (std::size_t i = 0; i < points.size(); ++i) {
-        const Vec3 q = lift(points[i]);
-        omega_[i] = q.dot(inverse * q);
-        worst = std::max(worst, omega_[i]);
-      }
-      // The points are the hull's vertices in order, so the violators come in runs around each
-      // place where the ellipse is too small; only each run's peak joins the core (a dense
-      // polygon would otherwise fill the core with neighbours of one contact point).
-      std::vector<std::pair<double, std::size_t>> violators;
-      const std::size_t n = points.size();
-      for (std::size_t i = 0; i < n; ++i) {
-        const double before = omega_[(i + n - 1) % n], after = omega_[(i + 1) % n];
-        if (!in_core_[i] && omega_[i] > kLifted * (1.0 + gap) && omega_[i] > before &&
-            omega_[i] >= after) {
-          violators.emplace_back(omega_[i], i);
-        }
-      }
-      if (violators.empty()) {  // a run of equal values without a strict peak: take them all
-        for (std::size_t i = 0; i < n; ++i) {
-          if (!in_core_[i] && omega_[i] > kLifted * (1.0 + gap)) violators.emplace_back(omega_[i], i);
-        }
-      }
-      if (violators.empty() || steps_ >= kMaxOptimiserIterations) return worst / kLifted - 1.0;
-      const std::size_t count = std::min(kCoreAdditions, violators.size());
-      std::partial_sort(violators.begin(), violators.begin() + count, violators.end(),
-                        [](const auto& a, const auto& b) { return a.first > b.first; });
-      for (std::size_t k = 0; k < count; ++k) addToCore(violators[k].second);
-    }
-  }
-
- private:
-  Mat3 moment(const std::vector<Vec2>& points) const {
-    Mat3 x = Mat3::Zero();
-    for (const std::size_t i : core_) {
-      if (u_[i] > 0.0) {
-        const Vec3 q = lift(points[i]);
-        x.noalias() += u_[i] * q * q.transpose();
-      }
-    }
-    return x;
-  }
-
-  /// Todd–Yildirim: move weight towards the core point with the largest omega, or away from the
-  /// weighted one with the smallest, whichever is further from optimality, by the step that
-  /// maximises log det X exactly. True when the core is optimal to `gap` within
-  /// kKhachiyanSteps steps.
-  bool solveCoreByKhachiyan(const std::vector<Vec2>& points, double gap) {
-    Mat3 x = moment(points);
-    int since_refresh = 0;
-    for (int round = 0; round < kKhachiyanSteps && steps_ < kMaxOptimiserIterations; ++round) {
-      ++steps_;
-      const Mat3 inverse = x.inverse();
-      std::size_t up = core_.front(), down = core_.front();
-      double omega_up = -1.0, omega_down = std::numeric_limits<double>::infinity();
-      for (const std::size_t i : core_) {
-        const Vec3 q = lift(points[i]);
-        const double omega = q.dot(inverse * q);
-        if (omega > omega_up) omega_up = omega, up = i;
-        if (u_[i] > 0.0 && omega < omega_down) omega_down = omega, down = i;
-      }
-      const double gap_up = omega_up / kLifted - 1.0;
-      const double gap_down = 1.0 - omega_down / kLifted;
-      if (gap_up <= gap && gap_down <= gap) return true;
-
-      std::size_t index;
-      double step;  // u <- (1 - step) u + step e_index; negative for an away step
-      bool drop = false;
-      if (gap_up > gap_down) {
-        index = up;
-        step = (omega_up - kLifted) / (kLifted * (omega_up - 1.0));
-      } else {
-        index = down;
-        const double limit = -u_[down] / (1.0 - u_[down]);  // takes u_down to exactly 0
-        step = omega_down > 1.0 ? (omega_down - kLifted) / (kLifted * (omega_down - 1.0)) : limit;
-        if (step <= limit) step = limit, drop = true;
-      }
-      for (const std::size_t i : core_) u_[i] *= 1.0 - step;
-      u_[index] = drop ? 0.0 : u_[index] + step;
-      const Vec3 q = lift(points[index]);
-      x = (1.0 - step) * x + step * q * q.transpose();
-      if (drop || ++since_refresh == kRefreshInterval) {
-        normaliseWeights();
-        x = moment(points);
-        since_refresh = 0;
-      }
-    }
-    return false;
-  }
-
-  void normaliseWeights() {
-    double sum = 0.0;
-    for (const std::size_t i : core_) sum += u_[i];
-    for (const std::size_t i : core_) u_[i] /= sum;
-  }
-
-  /// log det X(v) + mu sum log v_i for core weights `v` (rows of `q` the lifted core points),
-  /// or -inf outside the domain.
-  static double barrier(const Eigen::MatrixXd& q, const Eigen::VectorXd& v, double mu) {
-    if (v.minCoeff() <= 0.0) return -std::numeric_limits<double>::infinity();
-    Mat3 x = Mat3::Zero();
-    for (Eigen::Index i = 0; i < q.rows(); ++i) {
-      x.noalias() += v[i] * q.row(i).transpose() * q.row(i);
-    }
-    const double det = x.determinant();
-    if (!(det > 0.0)) return -std::numeric_limits<double>::infinity();
-    return std::log(det) + mu * v.array().log().sum();
-  }
-
-  void solveCoreByInteriorPoint(const std::vector<Vec2>& points, double gap) {
-    const Eigen::Index k = static_cast<Eigen::Index>(core_.size());
-    const double size = static_cast<double>(k);
-    normaliseWeights();
-    Eigen::MatrixXd q(k, 3);
-    for (Eigen::Index i = 0; i < k; ++i) q.row(i) = lift(points[core_[i]]).transpose();
-    // Warm start: mu from the current gap (omega_i <= 3 + k mu on the central path), weights
-    // moved off the simplex's faces by about mu (where inactive weights sit on the path).
-    const Mat3 start_inverse = moment(points).inverse();
-    double worst = 0.0;
-    for (Eigen::Index i = 0; i < k; ++i) {
-      worst = std::max(worst, q.row(i).dot(start_inverse * q.row(i).transpose()));
-    }
-    // Stop at mu with k mu / 3 = gap / 10: the margin absorbs the inexact centring.
-    const double final_mu = 0.3 * gap / size;
-    double mu = std::clamp(3.0 * (worst / kLifted - 1.0) / size, final_mu, 1e-2 / size);
-    Eigen::VectorXd v(k);
-    for (Eigen::Index i = 0; i < k; ++i) v[i] = u_[core_[i]] + mu;
-    v /= v.sum();
-
-    // Newton on max f(v) = log det X(v) + mu sum log v_i subject to sum v_i = 1: with
-    // M = G o G + diag(mu / v^2) (G_ij = q_i^T X^-1 q_j, o the elementwise product), positive
-    // definite, the step is d = M^-1 grad - nu M^-1 1 with nu making sum d_i = 0.
-    Eigen::MatrixXd qi(3, k), g(k, k), m(k, k);
-    Eigen::VectorXd grad(k), a(k), b(k), d(k), md(k), trial(k);
-    const Eigen::VectorXd ones = Eigen::VectorXd::Ones(k);
-    Eigen::LLT<Eigen::MatrixXd> llt(k);
-    for (;; mu = std::max(mu * kMuReduction, final_mu)) {
-      for (int newton = 0; newton < kNewtonStepsPerStage && steps_ < kMaxOptimiserIterations;
-           ++newton) {
-        ++steps_;
-        Mat3 x = Mat3::Zero();
-        for (Eigen::Index i = 0; i < k; ++i) x.noalias() += v[i] * q.row(i).transpose() * q.row(i);
-        qi.noalias() = x.inverse() * q.transpose();
-        g.noalias() = q * qi;
-        m = g.cwiseAbs2();
-        m.diagonal().array() += mu / v.array().square();
-        grad = g.diagonal().array() + mu / v.array();
-        llt.compute(m);
-        if (llt.info() != Eigen::Success) break;
-        a = llt.solve(grad);
-        b = llt.solve(ones);
-        d = a - (a.sum() / b.sum()) * b;
-        md.noalias() = m * d;
-        const double ascent = d.dot(md);  // the squared Newton decrement, = grad . d
-        // Intermediate stages only need rough centring; the last one must bring the spread of
-        // omega well below the gap, which a decrement relative to mu does not ensure when every
-        // weight is large (then the barrier term hardly curves f).
-        const double tolerance = mu <= final_mu ? kFinalCentring * gap * gap : kCentringTolerance * mu;
-        if (!(ascent > tolerance)) break;
-        double alpha = 1.0;
-        for (Eigen::Index i = 0; i < k; ++i) {
-          if (d[i] < 0.0) alpha = std::min(alpha, -0.95 * v[i] / d[i]);
-        }
-        // -f / mu is self-concordant with Newton decrement^2 = ascent / mu: below 1/16 the full
-        // step is safe and converges quadratically, so no line search on f, whose changes there
-        // drown in its rounding.
-        if (ascent > kFullStepDecrement * mu) {
-          const double f0 = barrier(q, v, mu);
-          int halvings = 0;
-          for (;; alpha *= 0.5) {
-            trial = v + alpha * d;
-            if (barrier(q, trial, mu) >= f0 + 0.25 * alpha * ascent || ++halvings > kMaxHalvings) {
-              break;
-            }
-          }
-          if (halvings > kMaxHalvings) break;  // rounding floor
-        } else {
-          trial = v + alpha * d;
-        }
-        v = trial / trial.sum();
-      }
-      if (mu <= final_mu || steps_ >= kMaxOptimiserIterations) break;
-    }
-    for (Eigen::Index i = 0; i < k; ++i) u_[core_[i]] = v[i];
-  }
-
-  // Khachiyan steps per core round before the interior-point method takes over: enough for the
-  // sets where its linear rate is good, few enough not to waste time where it is not.
-  static constexpr int kKhachiyanSteps = 100;
-  static constexpr double kMuReduction = 0.1;
-  static constexpr int kNewtonStepsPerStage = 50;
-  // Newton stops when the decrement of f / mu is below this: centred far more closely than the
-  // stage's gap needs.
-  static constexpr double kCentringTolerance = 1e-3;
-  // ... and in the last stage below this times gap^2.
-  static constexpr double kFinalCentring = 1e-4;
-  static constexpr int kMaxHalvings = 60;
-  static constexpr double kFullStepDecrement = 1.0 / 16.0;
-
-  std::vector<double> u_;
-  std::vector<double> omega_;
-  std::vector<char> in_core_;
-  std::vector<std::size_t> core_;
-  int steps_{0};
 };
 
 /// Weighted centre and covariance of the points under `u`.

@@ -17,75 +17,24 @@
 #include "ellipse_collision/core/unique_names.h"
 #include "contact_scale_quartic.h"
 #include "scene_entry.h"
+#include "scene_entry_ref.h"
 
 namespace ellipse_collision::core {
 namespace {
 
-// distance() is accurate to about epsilon times the radii and the centre distance (distance.h),
-// the bound below to a few epsilon of the same: a margin of 1e-9 of them covers both many times
-// over, so a pair the bound rules out is one distance() could never have reported.
-constexpr double kBoundMargin = 1e-9;
-
-/// A lower bound on distance(a, b) [m]: each ellipse lies within its bounding circle.
-double distanceLowerBound(const Ellipse& a, const Ellipse& b) {
-  const double centres = (b.center - a.center).norm();
-  const double reach = boundingRadius(a) + boundingRadius(b);
-  return centres - reach - kBoundMargin * (centres + reach);
-}
+using detail::distanceLowerBound;
+using detail::EntryRef;
+using detail::entryProblem;
+using detail::nearPair;
+using detail::refOf;
+using detail::wanted;
+using detail::warningDistanceProblem;
 
 // Relative margin of the warning pad in candidateBox(): distance()'s absolute error (about
 // epsilon times the radii and the centre distance, distance.h) and the rounding of the padded
 // bounds are far smaller, so a pair the boxes rule out is one distance() never reports. The
 // obstacle's own size is covered by the margin of its boundingCircleBox().
 constexpr double kPadMargin = 1e-6;
-
-std::string warningDistanceProblem(const SceneRules& rules) {
-  if (!std::isfinite(rules.warning_distance) || rules.warning_distance < 0.0) {
-    return "warning_distance = " + formatNumber(rules.warning_distance) +
-           " must be finite and >= 0";
-  }
-  return {};
-}
-
-/// One entry of a scene wherever it is stored (a NamedEllipse, or a Scene's columns): what the
-/// pair rules, the pair tests and the answer read of it.
-struct EntryRef {
-  const std::string* name;
-  EllipseRole role;
-  const Ellipse* ellipse;
-};
-
-EntryRef refOf(const NamedEllipse& entry) { return {&entry.name, entry.role, &entry.ellipse}; }
-EntryRef refOf(const Scene& scene, std::size_t i) {
-  return {&scene.name(i), scene.role(i), &scene.ellipse(i)};
-}
-
-/// What is wrong with entry `i`, or "". `names` collects the names for the duplicate rule.
-std::string entryProblem(std::size_t i, const EntryRef& entry, detail::NameSet& names) {
-  // Built only for an error: per entry it would cost more than the whole check.
-  const auto where = [i] { return "ellipses[" + std::to_string(i) + "]"; };
-  if (entry.name->empty()) return where() + ".name is empty";
-  if (!names.insert(*entry.name)) return where() + ".name = '" + *entry.name + "' is a duplicate";
-  // The cheap test first: invalidReason() returns a string, called on every entry of every check.
-  if (isValid(*entry.ellipse)) return {};
-  return detail::invalidEntryReason("ellipses", i, {*entry.name, entry.role, *entry.ellipse});
-}
-
-std::string validate(const std::vector<EntryRef>& entries, const SceneRules& rules) {
-  std::string problem = warningDistanceProblem(rules);
-  if (!problem.empty()) return problem;
-  // One pass, entry by entry as a reader checks them (a second pass over 100,000 entries costs
-  // as much as the pair tests); the set of names is the one findNameProblem() uses.
-  detail::NameSet names(entries.size());
-  for (std::size_t i = 0; i < entries.size(); ++i) {
-    if (i + detail::NameSet::kPrefetchAhead < entries.size()) {
-      names.prefetch(*entries[i + detail::NameSet::kPrefetchAhead].name);
-    }
-    problem = entryProblem(i, entries[i], names);
-    if (!problem.empty()) return problem;
-  }
-  return {};
-}
 
 /// The box a mover's candidate partners must meet: its tight box grown by the warning distance
 /// and a margin, so that every pair distance() could report as closer than the warning distance
@@ -112,31 +61,6 @@ std::uint64_t roleAndPrefix(EllipseRole role, const std::string& name) {
     key = (key << 8) | byte;
   }
   return key;
-}
-
-/// Lower role first, then lower name: a pair reads the same whichever way round the loop met it.
-bool comesFirst(const EntryRef& a, const EntryRef& b) {
-  return a.role != b.role ? a.role < b.role : *a.name < *b.name;
-}
-
-NearPair nearPair(const std::string& a, const std::string& b, const Clearance& clearance) {
-  return {a, b, clearance.distance, clearance.point_a, clearance.point_b};
-}
-
-/// pairWanted() on entries wherever they are stored.
-bool wanted(const EntryRef& a, const EntryRef& b, const SceneRules& rules,
-            const std::set<std::string>& only_names) {
-  const bool a_query = a.role == EllipseRole::Query;
-  const bool b_query = b.role == EllipseRole::Query;
-  if (a_query && b_query) return false;
-  if (!a_query && !b_query) {
-    if (a.role == EllipseRole::Obstacle && b.role == EllipseRole::Obstacle) return false;
-    if (a.role == EllipseRole::Link && b.role == EllipseRole::Link && !rules.self_collision) {
-      return false;
-    }
-  }
-  if (rules.allowed.contains(*a.name, *b.name)) return false;
-  return only_names.empty() || only_names.count(*a.name) != 0 || only_names.count(*b.name) != 0;
 }
 
 }  // namespace
@@ -531,98 +455,6 @@ SceneCheckResult checkValidatedScene(const Scene& scene, std::size_t first_obsta
   }
   pairs.checkMoverPairs(grid, rules, only_names);
   return pairs.finish();
-}
-
-namespace {
-
-/// nearestTo() on entries wherever they are stored.
-NearestResult nearestAmong(const std::vector<EntryRef>& entries, const SceneRules& rules,
-                           const std::string& name) {
-  NearestResult result;
-  result.error = validate(entries, rules);
-  if (!result.error.empty()) return result;
-  const auto found = std::find_if(entries.begin(), entries.end(),
-                                  [&name](const EntryRef& e) { return *e.name == name; });
-  if (found == entries.end()) {
-    result.error = "name = '" + name + "' is not in the scene";
-    return result;
-  }
-  const EntryRef* target = &*found;
-
-  // Partners by increasing lower bound: once the bound reaches the best distance found, no later
-  // partner can be nearer. Ties in the bound keep CollidingPair order, which settles equal answers.
-  struct Partner {
-    const EntryRef* first;  // canonical order of the pair
-    const EntryRef* second;
-    double bound;
-  };
-  std::vector<Partner> partners;
-  for (const EntryRef& other : entries) {
-    if (&other == target) continue;
-    const bool target_first = comesFirst(*target, other);
-    const EntryRef& first = target_first ? *target : other;
-    const EntryRef& second = target_first ? other : *target;
-    if (!wanted(first, second, rules, {})) continue;
-    partners.push_back({&first, &second, distanceLowerBound(*first.ellipse, *second.ellipse)});
-  }
-  const auto before = [target](const Partner& x, const Partner& y) {
-    const EntryRef& x_other = x.first == target ? *x.second : *x.first;
-    const EntryRef& y_other = y.first == target ? *y.second : *y.first;
-    return comesFirst(x_other, y_other);
-  };
-  std::sort(partners.begin(), partners.end(), [&before](const Partner& x, const Partner& y) {
-    return x.bound != y.bound ? x.bound < y.bound : before(x, y);
-  });
-
-  const Partner* best = nullptr;
-  Clearance best_clearance;
-  double best_scale = 0.0;  // contact scale of the best colliding partner
-  for (const Partner& partner : partners) {
-    if (best && best_clearance.separated && partner.bound >= best_clearance.distance) break;
-    // An overlapping pair has a bound below 0, so the loop reaches every colliding partner.
-    if (best && !best_clearance.separated && partner.bound > 0.0) break;
-    const Clearance clearance = distance(*partner.first->ellipse, *partner.second->ellipse);
-    bool better = false;
-    if (!clearance.separated) {
-      const double scale = contactScale(*partner.first->ellipse, *partner.second->ellipse);
-      better = !best || best_clearance.separated || scale < best_scale ||
-               (scale == best_scale && before(partner, *best));
-      if (better) best_scale = scale;
-    } else if (!best || best_clearance.separated) {
-      better = !best || clearance.distance < best_clearance.distance ||
-               (clearance.distance == best_clearance.distance && before(partner, *best));
-    }
-    if (better) {
-      best = &partner;
-      best_clearance = clearance;
-    }
-  }
-  if (!best) return result;
-
-  result.found = true;
-  result.nearest = nearPair(*best->first->name, *best->second->name, best_clearance);
-  if (best->first != target) {
-    std::swap(result.nearest.name_a, result.nearest.name_b);
-    std::swap(result.nearest.point_a, result.nearest.point_b);
-  }
-  return result;
-}
-
-}  // namespace
-
-NearestResult nearestTo(const std::vector<NamedEllipse>& ellipses, const SceneRules& rules,
-                        const std::string& name) {
-  std::vector<EntryRef> entries;
-  entries.reserve(ellipses.size());
-  for (const NamedEllipse& entry : ellipses) entries.push_back(refOf(entry));
-  return nearestAmong(entries, rules, name);
-}
-
-NearestResult nearestTo(const Scene& scene, const SceneRules& rules, const std::string& name) {
-  std::vector<EntryRef> entries;
-  entries.reserve(scene.size());
-  for (std::size_t i = 0; i < scene.size(); ++i) entries.push_back(refOf(scene, i));
-  return nearestAmong(entries, rules, name);
 }
 
 }  // namespace ellipse_collision::core
