@@ -1,5 +1,6 @@
 #include "ellipse_collision/app/scan_obstacles.h"
 
+#include <algorithm>
 #include <cmath>
 #include <unordered_map>
 
@@ -10,8 +11,9 @@ namespace ellipse_collision::app {
 namespace {
 
 SensorObstacles toSpecs(const core::ContourEllipses& fit, const std::string& frame_id,
-                        const ScanObstacleSettings& settings) {
+                        const ScanObstacleSettings& settings, std::size_t key_ring) {
   SensorObstacles result;
+  result.key_ring = std::max<std::size_t>(key_ring, 1);
   result.skipped = fit.skipped;
   if (!fit.error.empty()) result.skipped.push_back(fit.error);
   result.ellipses.reserve(fit.ellipses.size());
@@ -29,6 +31,7 @@ SensorObstacles toSpecs(const core::ContourEllipses& fit, const std::string& fra
     spec.radius_x = e.radius_x;
     spec.radius_y = e.radius_y;
     result.ellipses.push_back(spec);
+    result.spans.push_back({contour.key, contour.last_key});
   }
   return result;
 }
@@ -72,7 +75,7 @@ SensorObstacles scanObstacles(const std::vector<float>& ranges, double angle_min
       core::breakContours(view, settings.range_noise_sigma, settings.cluster_distance,
                           static_cast<std::size_t>(settings.min_cluster_points));
   return toSpecs(core::contourEllipses(contours, view.free_space, settings.min_radius), frame_id,
-                 settings);
+                 settings, ranges.size());
 }
 
 SensorObstacles cloudObstacles(const std::vector<Eigen::Vector3f>& points,
@@ -87,7 +90,7 @@ SensorObstacles cloudObstacles(const std::vector<Eigen::Vector3f>& points,
   const auto contours = core::cloudContours(view, settings.cluster_distance,
                                             static_cast<std::size_t>(settings.min_cluster_points));
   return toSpecs(core::contourEllipses(contours, view.free_space, settings.min_radius), frame_id,
-                 settings);
+                 settings, core::kCloudBins);
 }
 
 }  // namespace ellipse_collision::app

@@ -13,7 +13,6 @@ namespace ellipse_collision::core {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr std::size_t kCloudBins = 16384;
 
 /// The bin of cloudView() holding the direction of `p`.
 std::size_t cloudBin(const Eigen::Vector2d& p) {
@@ -287,7 +286,7 @@ ContourEllipses contourEllipses(const std::vector<std::vector<SensorReturn>>& co
       }
       points.clear();
       for (std::size_t i = begin; i < end; ++i) points.push_back(contour[i].point);
-      ContourEllipse out{Ellipse{}, contour[begin].key, n, false};
+      ContourEllipse out{Ellipse{}, contour[begin].key, n, contour[end - 1].key, false};
       std::vector<Eigen::Vector2d> rays;  // the beams the candidates entered
       // Takes `candidate` when it stays out of the free space.
       const auto accepted = [&](const Ellipse& candidate, bool reduced) {

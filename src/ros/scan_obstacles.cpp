@@ -48,13 +48,17 @@ ScanObstaclesNode::ScanObstaclesNode(const ros::NodeHandle& nh, const ros::NodeH
 }
 
 void ScanObstaclesNode::onScan(const sensor_msgs::LaserScan::ConstPtr& scan) {
-  publish(scanObstacles(*scan, settings_), scan->header);
+  app::SensorObstacles obstacles = scanObstacles(*scan, settings_);
+  scan_names_.rename(obstacles);
+  publish(obstacles, scan->header);
 }
 
 void ScanObstaclesNode::onCloud(const sensor_msgs::PointCloud2::ConstPtr& cloud) {
   try {
-    publish(app::cloudObstacles(cloudPoints(*cloud), cloud->header.frame_id, settings_),
-            cloud->header);
+    app::SensorObstacles obstacles =
+        app::cloudObstacles(cloudPoints(*cloud), cloud->header.frame_id, settings_);
+    cloud_names_.rename(obstacles);
+    publish(obstacles, cloud->header);
   } catch (const std::runtime_error& error) {
     ROS_WARN_STREAM_THROTTLE(5.0, "scan_obstacles: refused a cloud: " << error.what());
   }

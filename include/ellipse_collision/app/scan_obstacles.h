@@ -49,6 +49,13 @@ constexpr double kMaxFreeSpaceTolerance = 10.0;    ///< [m]
 /// The first setting outside its range, naming its key, or nothing.
 std::optional<FieldError> findInvalidSetting(const ScanObstacleSettings& settings);
 
+/// The keys from `first` to `last` (the returns' keys: beams or angular bins) of one ellipse,
+/// going round a ring of keys: last < first when the run crosses the scan's start.
+struct KeySpan {
+  std::size_t first{0};
+  std::size_t last{0};
+};
+
 /// Obstacle ellipses of one sensor message, in the sensor's frame.
 struct SensorObstacles {
   /// Names: name_prefix + the key of the ellipse's first return (scans: its beam index, so a
@@ -56,6 +63,11 @@ struct SensorObstacles {
   /// ellipse starting in the same bin); frame_id = the sensor frame.
   std::vector<EllipseSpec> ellipses;
   std::vector<std::string> skipped;   ///< clusters that got no ellipse, and why
+  /// The keys each ellipse covers (same order as `ellipses`), on a ring of `key_ring` keys (a
+  /// full turn's scan may start a run near its last beam and end it near its first): what
+  /// ScanNameKeeper matches from one message to the next.
+  std::vector<KeySpan> spans;
+  std::size_t key_ring{1};  ///< scans: the number of beams; clouds: core::kCloudBins
 };
 
 /// A laser scan (sensor_msgs/LaserScan's fields, angles [rad], ranges [m]): its returns and

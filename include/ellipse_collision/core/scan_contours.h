@@ -41,9 +41,10 @@ struct SensorView {
 SensorView scanView(const std::vector<float>& ranges, double angle_min, double angle_increment,
                     double range_min, double range_max, double free_space_tolerance);
 
-/// The angular bin of cloudView() [rad]: 16384 bins a turn (0.022 degrees), finer than the
-/// columns of common 3D lidars, so that each bin's ray is one column's.
-constexpr double kCloudBinAngle = 2.0 * 3.14159265358979323846 / 16384.0;
+/// The angular bins of cloudView(): 16384 a turn (0.022 degrees each), finer than the columns of
+/// common 3D lidars, so that each bin's ray is one column's.
+constexpr std::size_t kCloudBins = 16384;
+constexpr double kCloudBinAngle = 2.0 * 3.14159265358979323846 / static_cast<double>(kCloudBins);
 
 /// Points of a cloud projected onto the sensor's plane [m] (any order; non-finite points and
 /// coordinates beyond kMaxCoordinate dropped) as a SensorView: the returns ordered by angle
@@ -82,6 +83,7 @@ struct ContourEllipse {
   Ellipse ellipse;
   std::size_t key{0};     ///< key of the run's first return: unique for a scan
   std::size_t points{0};  ///< returns in the run
+  std::size_t last_key{0};  ///< key of the run's last return
   /// The run's ellipse of min_radius would enter the free space: its smaller radius is what the
   /// free space leaves (half the smallest clearance of its returns), below min_radius.
   bool radius_reduced{false};

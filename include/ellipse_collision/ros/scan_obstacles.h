@@ -7,6 +7,7 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "ellipse_collision/app/scan_name_keeper.h"
 #include "ellipse_collision/app/scan_obstacles.h"
 #include "ellipse_collision/ros/messages.h"
 
@@ -42,6 +43,9 @@ class ScanObstaclesNode {
   ros::Publisher obstacles_pub_;
   ros::Subscriber scan_sub_;
   ros::Subscriber cloud_sub_;
+  // Names kept from message to message, one keeper per input.
+  app::ScanNameKeeper scan_names_;
+  app::ScanNameKeeper cloud_names_;
 };
 
 }  // namespace ellipse_collision
