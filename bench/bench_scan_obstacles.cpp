@@ -97,26 +97,42 @@ void setCounters(benchmark::State& state, std::size_t ellipses, double rate_hz) 
   state.counters["core_pct"] = benchmark::Counter(1.0 / (rate_hz * 100.0), kPerMessage);
 }
 
-template <bool kOld>
+enum class ScanPath {
+  Old,    ///< the clustering before contours
+  Alone,  ///< app::scanObstacles(), each scan on its own
+  New,    ///< the node's path (app::SensorObstacleSeries): each scan cut first where the last one
+          ///< was, names carried over; the same scan again and again is its costliest case, every
+          ///< cut a hint whose merge is tried
+};
+
+template <ScanPath kPath>
 void scanBenchmark(benchmark::State& state, const sensor_msgs::LaserScan& scan) {
   const ellipse_collision::app::ScanObstacleSettings settings;
+  ellipse_collision::app::SensorObstacleSeries series{settings};
   std::size_t ellipses = 0;
   for (auto _ : state) {
     const ellipse_collision::EllipseArray msg = ellipse_collision::toMsg(
-        kOld ? oldScanPath(scan) : ellipse_collision::scanObstacles(scan, settings), scan.header);
+        kPath == ScanPath::Old     ? oldScanPath(scan)
+        : kPath == ScanPath::Alone ? ellipse_collision::scanObstacles(scan, settings)
+                                   : ellipse_collision::scanObstacles(scan, series),
+        scan.header);
     ellipses = msg.ellipses.size();
     benchmark::DoNotOptimize(msg.ellipses.data());
   }
   setCounters(state, ellipses, 40.0);
 }
 
-void BM_Scan720ObjectRoom_Old(benchmark::State& state) { scanBenchmark<true>(state, objectRoomScan()); }
-void BM_Scan720ObjectRoom_New(benchmark::State& state) { scanBenchmark<false>(state, objectRoomScan()); }
-void BM_Scan720DoorwayRoom_Old(benchmark::State& state) { scanBenchmark<true>(state, doorwayRoomScan()); }
-void BM_Scan720DoorwayRoom_New(benchmark::State& state) { scanBenchmark<false>(state, doorwayRoomScan()); }
+void BM_Scan720ObjectRoom_Old(benchmark::State& state) { scanBenchmark<ScanPath::Old>(state, objectRoomScan()); }
+void BM_Scan720ObjectRoom_Alone(benchmark::State& state) { scanBenchmark<ScanPath::Alone>(state, objectRoomScan()); }
+void BM_Scan720ObjectRoom_New(benchmark::State& state) { scanBenchmark<ScanPath::New>(state, objectRoomScan()); }
+void BM_Scan720DoorwayRoom_Old(benchmark::State& state) { scanBenchmark<ScanPath::Old>(state, doorwayRoomScan()); }
+void BM_Scan720DoorwayRoom_Alone(benchmark::State& state) { scanBenchmark<ScanPath::Alone>(state, doorwayRoomScan()); }
+void BM_Scan720DoorwayRoom_New(benchmark::State& state) { scanBenchmark<ScanPath::New>(state, doorwayRoomScan()); }
 BENCHMARK(BM_Scan720ObjectRoom_Old)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_Scan720ObjectRoom_Alone)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Scan720ObjectRoom_New)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Scan720DoorwayRoom_Old)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_Scan720DoorwayRoom_Alone)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Scan720DoorwayRoom_New)->Unit(benchmark::kMicrosecond);
 
 template <bool kOld>
@@ -126,10 +142,10 @@ void cloudBenchmark(benchmark::State& state) {
   ellipse_collision::app::ScanObstacleSettings settings;
   settings.z_min = -0.3;
   settings.z_max = 1.5;
+  ellipse_collision::app::SensorObstacleSeries series{settings};  // the node's path
   std::size_t ellipses = 0;
   for (auto _ : state) {
-    const auto obstacles =
-        kOld ? oldCloudPath(cloud) : ellipse_collision::app::cloudObstacles(cloud, "lidar", settings);
+    const auto obstacles = kOld ? oldCloudPath(cloud) : series.cloud(cloud, "lidar");
     ellipses = obstacles.ellipses.size();
     benchmark::DoNotOptimize(obstacles.ellipses.data());
   }

@@ -51,6 +51,8 @@ set(ELLIPSE_COLLISION_APP_SOURCES
   src/app/path_request.cpp
   src/app/scan_name_keeper.cpp
   src/app/scan_obstacles.cpp
+  src/app/sensor_obstacle_series.cpp
+  src/app/split_memory.cpp
   src/app/scene_placement.cpp
   src/app/placement_cache.cpp
   src/app/standing_obstacles.cpp

@@ -10,11 +10,18 @@
 namespace ellipse_collision::app {
 namespace {
 
+// A hinted cut is let go only when the runs on either side fit one ellipse with this many range
+// noise sigmas to spare (core::contourEllipses()). Measured (test_scan_contours, 60 scans of the
+// room at 1 cm noise): with 1, 14 names new to their scan (309 without hints) and as many
+// ellipses as without; with 2, 6 new names but 11 % more ellipses, and more where the sensor moves.
+constexpr double kHintMarginSigmas = 1.0;
+
 SensorObstacles toSpecs(const core::ContourEllipses& fit, const std::string& frame_id,
                         const ScanObstacleSettings& settings, std::size_t key_ring) {
   SensorObstacles result;
   result.key_ring = std::max<std::size_t>(key_ring, 1);
   result.skipped = fit.skipped;
+  result.unneeded_hints = fit.unneeded_hints;
   if (!fit.error.empty()) result.skipped.push_back(fit.error);
   result.ellipses.reserve(fit.ellipses.size());
   std::unordered_map<std::size_t, std::size_t> starts;  // ellipses so far per key
@@ -68,18 +75,22 @@ std::optional<FieldError> findInvalidSetting(const ScanObstacleSettings& s) {
 
 SensorObstacles scanObstacles(const std::vector<float>& ranges, double angle_min,
                               double angle_increment, double range_min, double range_max,
-                              const std::string& frame_id, const ScanObstacleSettings& settings) {
+                              const std::string& frame_id, const ScanObstacleSettings& settings,
+                              const std::vector<std::size_t>& split_hints) {
   const core::SensorView view = core::scanView(ranges, angle_min, angle_increment, range_min,
                                                range_max, settings.free_space_tolerance);
   const auto contours =
       core::breakContours(view, settings.range_noise_sigma, settings.cluster_distance,
                           static_cast<std::size_t>(settings.min_cluster_points));
-  return toSpecs(core::contourEllipses(contours, view.free_space, settings.min_radius), frame_id,
-                 settings, ranges.size());
+  return toSpecs(
+      core::contourEllipses(contours, view.free_space, settings.min_radius, split_hints,
+                            kHintMarginSigmas * settings.range_noise_sigma),
+      frame_id, settings, ranges.size());
 }
 
 SensorObstacles cloudObstacles(const std::vector<Eigen::Vector3f>& points,
-                               const std::string& frame_id, const ScanObstacleSettings& settings) {
+                               const std::string& frame_id, const ScanObstacleSettings& settings,
+                              const std::vector<std::size_t>& split_hints) {
   std::vector<Eigen::Vector2d> band;
   band.reserve(points.size());
   for (const Eigen::Vector3f& p : points) {
@@ -89,8 +100,10 @@ SensorObstacles cloudObstacles(const std::vector<Eigen::Vector3f>& points,
   const core::SensorView view = core::cloudView(band, settings.free_space_tolerance);
   const auto contours = core::cloudContours(view, settings.cluster_distance,
                                             static_cast<std::size_t>(settings.min_cluster_points));
-  return toSpecs(core::contourEllipses(contours, view.free_space, settings.min_radius), frame_id,
-                 settings, core::kCloudBins);
+  return toSpecs(
+      core::contourEllipses(contours, view.free_space, settings.min_radius, split_hints,
+                            kHintMarginSigmas * settings.range_noise_sigma),
+      frame_id, settings, core::kCloudBins);
 }
 
 }  // namespace ellipse_collision::app

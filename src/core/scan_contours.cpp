@@ -255,8 +255,149 @@ std::vector<std::vector<SensorReturn>> cloudContours(const SensorView& view, dou
   return contours;
 }
 
+namespace {
+
+/// What the candidates of contourEllipses() make of one run of returns.
+struct RunFit {
+  enum class Outcome {
+    Accepted,     ///< `ellipse` stays out of the free space
+    KeptAnyway,   ///< a single return whose every circle enters it: `ellipse` kept, `note` says so
+    Failed,       ///< no ellipse could be made (`note`): the run is dropped, and said
+    SplitAtOnce,  ///< split at splitIndex() (its chord crosses free space; a round arc's circle
+                  ///< enters it), with no other candidate tried
+    Split,        ///< every candidate entered the free space (`rays`: the beams entered)
+  };
+  Outcome outcome{Outcome::Split};
+  ContourEllipse ellipse;
+  std::string note;
+  std::vector<Eigen::Vector2d> rays;
+};
+
+/// The candidates of contourEllipses(), in its order, for the run [begin, end) of `contour`.
+/// With a `margin` [m], a candidate is accepted only when it stays out of the free space with
+/// both radii grown by the margin. `points` is scratch space.
+RunFit fitRun(const std::vector<SensorReturn>& contour, std::size_t begin, std::size_t end,
+              const FreeSpace& free_space, double min_radius,
+              std::vector<Eigen::Vector2d>& points, double margin = 0.0) {
+  const std::size_t n = end - begin;
+  RunFit fit;
+  fit.ellipse = ContourEllipse{Ellipse{}, contour[begin].key, n, contour[end - 1].key, false};
+  if (n >= 3 && free_space.crossed(contour[begin].point, contour[end - 1].point)) {
+    fit.outcome = RunFit::Outcome::SplitAtOnce;
+    return fit;
+  }
+  points.clear();
+  for (std::size_t i = begin; i < end; ++i) points.push_back(contour[i].point);
+  // Takes `candidate` when it stays out of the free space.
+  const auto accepted = [&](const Ellipse& candidate, bool reduced) {
+    Eigen::Vector2d ray;
+    Ellipse grown = candidate;
+    grown.radius_x += margin;
+    grown.radius_y += margin;
+    if (free_space.entered(margin > 0.0 ? grown : candidate, &ray)) {
+      fit.rays.push_back(ray);
+      return false;
+    }
+    fit.ellipse.ellipse = candidate;
+    fit.ellipse.radius_reduced = reduced;
+    fit.outcome = RunFit::Outcome::Accepted;
+    return true;
+  };
+  // A thin run (a wall's returns) is one whose band fits within min_radius.
+  const auto [direction, half_width] = principalBand(points);
+  const bool thin = n >= 3 && std::sqrt(2.0) * half_width <= min_radius;
+  if (n >= 3) {
+    // 1. A round object's arc: the circle it lies on (not the huge one of a nearly straight
+    // run: at most the chord's length in radius). O(n).
+    const std::optional<Ellipse> circle = enclosingCircleFit(points);
+    const double chord = (points.back() - points.front()).norm();
+    if (circle && circle->radius_x >= min_radius && circle->radius_x <= chord && !thin) {
+      if (accepted(*circle, false)) return fit;
+      // A round arc whose circle meets a beam (where the beams graze the object, its circle
+      // grown by the range noise reaches their free parts): every circle and every ellipse
+      // as round would, so the arc is split (Douglas-Peucker) with no costlier candidate
+      // tried, until its parts are thin enough for band ellipses.
+      fit.outcome = RunFit::Outcome::SplitAtOnce;
+      return fit;
+    }
+  }
+  // 2. The enclosing ellipse; for a thin run the band's ellipse, O(n), about what the
+  // minimum-area optimiser would give at far more cost.
+  const EnclosingEllipse enclosing = thin ? bandEllipse(points, direction, min_radius)
+                                          : enclosingEllipseWithMinRadius(points, min_radius);
+  if (!enclosing.ok()) {
+    fit.outcome = RunFit::Outcome::Failed;
+    fit.note = "returns " + std::to_string(contour[begin].key) + " to " +
+               std::to_string(contour[end - 1].key) + ": " + enclosing.error;
+    return fit;
+  }
+  if (accepted(enclosing.ellipse, false)) return fit;
+  if (n >= 3 && !thin) {
+    // 3. A convex object bulges the enclosing ellipse out in front of it: enclose the run
+    // with its shadow (each return pushed back along its ray by the chord's length, space the
+    // sensor cannot see), which rounds the ellipse onto the object.
+    const double depth = (points.back() - points.front()).norm();
+    for (std::size_t i = 0; i < n; ++i) {
+      points.push_back(points[i] * (1.0 + depth / points[i].norm()));
+    }
+    const EnclosingEllipse shadowed = enclosingEllipseWithMinRadius(points, min_radius);
+    points.resize(n);
+    if (shadowed.ok() && accepted(shadowed.ellipse, false)) return fit;
+  }
+  // 4. A thin run (a wall seen at a glancing angle, one or two returns) whose min_radius
+  // ellipse reaches into the free parts of its neighbouring beams: the smaller radius the
+  // free space leaves, half the smallest clearance of its returns.
+  if (inscribedRadius(enclosing.ellipse) <= min_radius * (1.0 + 1e-9)) {
+    double clearance = min_radius;
+    for (const Eigen::Vector2d& p : points) {
+      clearance = std::min(clearance, free_space.clearance(p, min_radius));
+    }
+    const double reduced = std::max(0.5 * clearance, kMinRadius);
+    const EnclosingEllipse thinner = thin ? bandEllipse(points, direction, reduced)
+                                          : enclosingEllipseWithMinRadius(points, reduced);
+    if (thinner.ok() && accepted(thinner.ellipse, true)) return fit;
+    if (thinner.ok() && n == 1) {
+      // Another beam through the return itself: kept all the same, and said.
+      fit.ellipse.ellipse = thinner.ellipse;
+      fit.ellipse.radius_reduced = true;
+      fit.outcome = RunFit::Outcome::KeptAnyway;
+      fit.note = "return " + std::to_string(contour[begin].key) +
+                 ": no circle around it stays out of the free space";
+      return fit;
+    }
+  }
+  if (n == 1) {  // not even the reduced circle is a valid ellipse: kept, and said
+    fit.ellipse.ellipse = enclosing.ellipse;
+    fit.outcome = RunFit::Outcome::KeptAnyway;
+    fit.note = "return " + std::to_string(contour[begin].key) +
+               ": its circle of min_radius enters the free space";
+    return fit;
+  }
+  fit.outcome = RunFit::Outcome::Split;
+  return fit;
+}
+
+/// Where `contour` is cut before the split loop: before each return (not the first) whose key
+/// is in `hints` (sorted) and differs from the key before it. Returns the cut indices, ascending.
+std::vector<std::size_t> hintedCuts(const std::vector<SensorReturn>& contour,
+                                    const std::vector<std::size_t>& hints) {
+  std::vector<std::size_t> cuts;
+  if (hints.empty()) return cuts;
+  for (std::size_t i = 1; i < contour.size(); ++i) {
+    if (contour[i].key != contour[i - 1].key &&
+        std::binary_search(hints.begin(), hints.end(), contour[i].key)) {
+      cuts.push_back(i);
+    }
+  }
+  return cuts;
+}
+
+}  // namespace
+
 ContourEllipses contourEllipses(const std::vector<std::vector<SensorReturn>>& contours,
-                                const FreeSpace& free_space, double min_radius) {
+                                const FreeSpace& free_space, double min_radius,
+                                const std::vector<std::size_t>& split_hints,
+                                double hint_margin) {
   ContourEllipses result;
   if (radiusViolation(min_radius)) {
     // The same words as enclosingEllipseWithMinRadius(), which checks it the same way.
@@ -270,7 +411,13 @@ ContourEllipses contourEllipses(const std::vector<std::vector<SensorReturn>>& co
       std::size_t begin, end;
       bool peel_front, peel_back;  // may an end return still be split off alone
     };
-    std::vector<Run> todo = {{0, contour.size(), true, true}};
+    std::vector<Run> todo;
+    const std::vector<std::size_t> cuts = hintedCuts(contour, split_hints);
+    for (std::size_t k = cuts.size() + 1; k-- > 0;) {
+      todo.push_back({k == 0 ? 0 : cuts[k - 1], k == cuts.size() ? contour.size() : cuts[k],
+                      true, true});
+    }
+    std::vector<std::pair<std::size_t, std::size_t>> kept;  // [begin, end) of each ellipse
     while (!todo.empty()) {
       const Run run = todo.back();
       const std::size_t begin = run.begin, end = run.end, n = end - begin;
@@ -280,94 +427,25 @@ ContourEllipses contourEllipses(const std::vector<std::vector<SensorReturn>>& co
         todo.push_back({at, end, true, run.peel_back});
         todo.push_back({begin, at, run.peel_front, true});
       };
-      if (n >= 3 && free_space.crossed(contour[begin].point, contour[end - 1].point)) {
-        split(splitIndex(contour, begin, end));
-        continue;
-      }
-      points.clear();
-      for (std::size_t i = begin; i < end; ++i) points.push_back(contour[i].point);
-      ContourEllipse out{Ellipse{}, contour[begin].key, n, contour[end - 1].key, false};
-      std::vector<Eigen::Vector2d> rays;  // the beams the candidates entered
-      // Takes `candidate` when it stays out of the free space.
-      const auto accepted = [&](const Ellipse& candidate, bool reduced) {
-        Eigen::Vector2d ray;
-        if (free_space.entered(candidate, &ray)) {
-          rays.push_back(ray);
-          return false;
-        }
-        out.ellipse = candidate;
-        out.radius_reduced = reduced;
-        result.ellipses.push_back(out);
-        return true;
-      };
-      // A thin run (a wall's returns) is one whose band fits within min_radius.
-      const auto [direction, half_width] = principalBand(points);
-      const bool thin = n >= 3 && std::sqrt(2.0) * half_width <= min_radius;
-      if (n >= 3) {
-        // 1. A round object's arc: the circle it lies on (not the huge one of a nearly straight
-        // run: at most the chord's length in radius). O(n).
-        const std::optional<Ellipse> circle = enclosingCircleFit(points);
-        const double chord = (points.back() - points.front()).norm();
-        if (circle && circle->radius_x >= min_radius && circle->radius_x <= chord && !thin) {
-          if (accepted(*circle, false)) continue;
-          // A round arc whose circle meets a beam (where the beams graze the object, its circle
-          // grown by the range noise reaches their free parts): every circle and every ellipse
-          // as round would, so the arc is split (Douglas-Peucker) with no costlier candidate
-          // tried, until its parts are thin enough for band ellipses.
+      RunFit fit = fitRun(contour, begin, end, free_space, min_radius, points);
+      switch (fit.outcome) {
+        case RunFit::Outcome::Accepted:
+          result.ellipses.push_back(fit.ellipse);
+          kept.emplace_back(begin, end);
+          continue;
+        case RunFit::Outcome::KeptAnyway:
+          result.ellipses.push_back(fit.ellipse);
+          kept.emplace_back(begin, end);
+          result.skipped.push_back(std::move(fit.note));
+          continue;
+        case RunFit::Outcome::Failed:
+          result.skipped.push_back(std::move(fit.note));
+          continue;
+        case RunFit::Outcome::SplitAtOnce:
           split(splitIndex(contour, begin, end));
           continue;
-        }
-      }
-      // 2. The enclosing ellipse; for a thin run the band's ellipse, O(n), about what the
-      // minimum-area optimiser would give at far more cost.
-      const EnclosingEllipse fit = thin ? bandEllipse(points, direction, min_radius)
-                                        : enclosingEllipseWithMinRadius(points, min_radius);
-      if (!fit.ok()) {
-        result.skipped.push_back("returns " + std::to_string(contour[begin].key) + " to " +
-                                 std::to_string(contour[end - 1].key) + ": " + fit.error);
-        continue;
-      }
-      if (accepted(fit.ellipse, false)) continue;
-      if (n >= 3 && !thin) {
-        // 3. A convex object bulges the enclosing ellipse out in front of it: enclose the run
-        // with its shadow (each return pushed back along its ray by the chord's length, space the
-        // sensor cannot see), which rounds the ellipse onto the object.
-        const double depth = (points.back() - points.front()).norm();
-        for (std::size_t i = 0; i < n; ++i) {
-          points.push_back(points[i] * (1.0 + depth / points[i].norm()));
-        }
-        const EnclosingEllipse shadowed = enclosingEllipseWithMinRadius(points, min_radius);
-        points.resize(n);
-        if (shadowed.ok() && accepted(shadowed.ellipse, false)) continue;
-      }
-      // 4. A thin run (a wall seen at a glancing angle, one or two returns) whose min_radius
-      // ellipse reaches into the free parts of its neighbouring beams: the smaller radius the
-      // free space leaves, half the smallest clearance of its returns.
-      if (inscribedRadius(fit.ellipse) <= min_radius * (1.0 + 1e-9)) {
-        double clearance = min_radius;
-        for (const Eigen::Vector2d& p : points) {
-          clearance = std::min(clearance, free_space.clearance(p, min_radius));
-        }
-        const double reduced = std::max(0.5 * clearance, kMinRadius);
-        const EnclosingEllipse thinner = thin ? bandEllipse(points, direction, reduced)
-                                              : enclosingEllipseWithMinRadius(points, reduced);
-        if (thinner.ok() && accepted(thinner.ellipse, true)) continue;
-        if (thinner.ok() && n == 1) {
-          // Another beam through the return itself: kept all the same, and said.
-          out.ellipse = thinner.ellipse;
-          out.radius_reduced = true;
-          result.ellipses.push_back(out);
-          result.skipped.push_back("return " + std::to_string(contour[begin].key) +
-                                   ": no circle around it stays out of the free space");
-          continue;
-        }
-      }
-      if (n == 1) {  // not even the reduced circle is a valid ellipse: kept, and said
-        out.ellipse = fit.ellipse;
-        result.ellipses.push_back(out);
-        result.skipped.push_back("return " + std::to_string(contour[begin].key) +
-                                 ": its circle of min_radius enters the free space");
-        continue;
+        case RunFit::Outcome::Split:
+          break;
       }
       if (n == 2) {
         split(begin + 1);
@@ -377,7 +455,7 @@ ContourEllipses contourEllipses(const std::vector<std::vector<SensorReturn>>& co
       // end: a face seen at a glancing angle would otherwise be peeled return by return); else
       // the Douglas-Peucker split.
       int side = 0;
-      for (const Eigen::Vector2d& ray : rays) {
+      for (const Eigen::Vector2d& ray : fit.rays) {
         const int s = sideOf(contour, begin, end, ray);
         if ((s < 0 && run.peel_front) || (s > 0 && run.peel_back)) {
           side = s;
@@ -392,6 +470,18 @@ ContourEllipses contourEllipses(const std::vector<std::vector<SensorReturn>>& co
         todo.push_back({begin, end - 1, run.peel_front, false});
       } else {
         split(splitIndex(contour, begin, end));
+      }
+    }
+    // A hinted cut that two neighbouring runs would not need (their union is one ellipse that
+    // stays out of the free space by hint_margin) is reported, so that the caller can let it go
+    // (SplitMemory). The margin is the hysteresis: a cut noise needs now and then is kept.
+    for (std::size_t k = 0; k + 1 < kept.size(); ++k) {
+      const std::size_t at = kept[k].second;
+      if (kept[k + 1].first != at || !std::binary_search(cuts.begin(), cuts.end(), at)) continue;
+      if (fitRun(contour, kept[k].first, kept[k + 1].second, free_space, min_radius, points,
+                 hint_margin)
+              .outcome == RunFit::Outcome::Accepted) {
+        result.unneeded_hints.push_back(contour[at].key);
       }
     }
   }

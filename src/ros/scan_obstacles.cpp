@@ -33,32 +33,34 @@ app::SensorObstacles scanObstacles(const sensor_msgs::LaserScan& scan,
                             scan.range_max, scan.header.frame_id, settings);
 }
 
+app::SensorObstacles scanObstacles(const sensor_msgs::LaserScan& scan,
+                                   app::SensorObstacleSeries& series) {
+  return series.scan(scan.ranges, scan.angle_min, scan.angle_increment, scan.range_min,
+                     scan.range_max, scan.header.frame_id);
+}
+
 ScanObstaclesNode::ScanObstaclesNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
-    : nh_(nh), settings_(loadScanObstacleSettings(private_nh)) {
+    : nh_(nh), series_(loadScanObstacleSettings(private_nh)) {
   obstacles_pub_ = nh_.advertise<EllipseArray>("obstacles", 1);
   scan_sub_ = nh_.subscribe<sensor_msgs::LaserScan>("scan", 1, &ScanObstaclesNode::onScan, this);
   cloud_sub_ =
       nh_.subscribe<sensor_msgs::PointCloud2>("cloud", 1, &ScanObstaclesNode::onCloud, this);
-  ROS_INFO_STREAM("scan_obstacles: contours of >= " << settings_.min_cluster_points
-                  << " returns (breakpoints for range noise " << settings_.range_noise_sigma
-                  << " m, always joined closer than " << settings_.cluster_distance
-                  << " m), min_radius " << settings_.min_radius << " m, free space up to "
-                  << settings_.free_space_tolerance << " m before each return, cloud z within ["
-                  << settings_.z_min << ", " << settings_.z_max << "] m");
+  const app::ScanObstacleSettings& s = series_.settings();
+  ROS_INFO_STREAM("scan_obstacles: contours of >= "
+                  << s.min_cluster_points << " returns (breakpoints for range noise "
+                  << s.range_noise_sigma << " m, always joined closer than " << s.cluster_distance
+                  << " m), min_radius " << s.min_radius << " m, free space up to "
+                  << s.free_space_tolerance << " m before each return, cloud z within ["
+                  << s.z_min << ", " << s.z_max << "] m");
 }
 
 void ScanObstaclesNode::onScan(const sensor_msgs::LaserScan::ConstPtr& scan) {
-  app::SensorObstacles obstacles = scanObstacles(*scan, settings_);
-  scan_names_.rename(obstacles);
-  publish(obstacles, scan->header);
+  publish(scanObstacles(*scan, series_), scan->header);
 }
 
 void ScanObstaclesNode::onCloud(const sensor_msgs::PointCloud2::ConstPtr& cloud) {
   try {
-    app::SensorObstacles obstacles =
-        app::cloudObstacles(cloudPoints(*cloud), cloud->header.frame_id, settings_);
-    cloud_names_.rename(obstacles);
-    publish(obstacles, cloud->header);
+    publish(series_.cloud(cloudPoints(*cloud), cloud->header.frame_id), cloud->header);
   } catch (const std::runtime_error& error) {
     ROS_WARN_STREAM_THROTTLE(5.0, "scan_obstacles: refused a cloud: " << error.what());
   }

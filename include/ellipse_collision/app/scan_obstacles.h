@@ -68,21 +68,26 @@ struct SensorObstacles {
   /// ScanNameKeeper matches from one message to the next.
   std::vector<KeySpan> spans;
   std::size_t key_ring{1};  ///< scans: the number of beams; clouds: core::kCloudBins
+  /// The split hints this message did not need (core::ContourEllipses::unneeded_hints).
+  std::vector<std::size_t> unneeded_hints;
 };
 
 /// A laser scan (sensor_msgs/LaserScan's fields, angles [rad], ranges [m]): its returns and
 /// free beams (core::scanView()), cut into contours by the adaptive breakpoint rule
 /// (core::breakContours()), each contour split into as few ellipses as keep every return inside
-/// and the free space free (core::contourEllipses()). `settings` must pass findInvalidSetting().
+/// and the free space free (core::contourEllipses(), cut first where `split_hints` say:
+/// SplitMemory). `settings` must pass findInvalidSetting().
 SensorObstacles scanObstacles(const std::vector<float>& ranges, double angle_min,
                               double angle_increment, double range_min, double range_max,
-                              const std::string& frame_id, const ScanObstacleSettings& settings);
+                              const std::string& frame_id, const ScanObstacleSettings& settings,
+                              const std::vector<std::size_t>& split_hints = {});
 
 /// A point cloud's points [m] (x, y, z in the cloud's frame, any order): those with z within
 /// [z_min, z_max] projected onto the xy-plane (core::cloudView(): the rays from the frame's
 /// origin to each bin's nearest point are the free space), clustered by single linkage
 /// (core::cloudContours()) and split into ellipses like scanObstacles().
 SensorObstacles cloudObstacles(const std::vector<Eigen::Vector3f>& points,
-                               const std::string& frame_id, const ScanObstacleSettings& settings);
+                               const std::string& frame_id, const ScanObstacleSettings& settings,
+                               const std::vector<std::size_t>& split_hints = {});
 
 }  // namespace ellipse_collision::app

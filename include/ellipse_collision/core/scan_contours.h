@@ -93,6 +93,9 @@ struct ContourEllipses {
   std::vector<ContourEllipse> ellipses;  ///< in contour order, runs in return order
   std::vector<std::string> skipped;      ///< runs that got no ellipse, and why
   std::string error;                     ///< set, with no ellipses, when min_radius is invalid
+  /// The split hints that cut a contour where the two runs on either side would be one accepted
+  /// ellipse together: cuts the scene no longer needs (ascending within each contour).
+  std::vector<std::size_t> unneeded_hints;
 };
 
 /// Each contour split into as few runs of consecutive returns as the rules allow, one ellipse per
@@ -119,9 +122,20 @@ struct ContourEllipses {
 /// candidate entered a beam beyond one end of the run, that end's return is split off alone (at
 /// most once per end of each run). A single return is always kept: when even 4 enters the free
 /// space (another beam through the return itself), it is kept and reported in `skipped`.
+/// `split_hints` (keys, ascending): each contour is first cut before every return whose key is a
+/// hint (and differs from the key before it), then each part is split as above. A sensor's last
+/// cuts given as hints keep the split from flickering under range noise (a stretch cut in one scan
+/// and not in the next); the hints that are no longer needed are reported in unneeded_hints, so
+/// that a caller can let them go (SplitMemory in the application layer): those where the runs on
+/// either side would be one ellipse together that stays out of the free space even with both
+/// radii grown by `hint_margin` [m] (the hysteresis: a cut that noise needs now and then is not
+/// reported). The guarantees (every return in exactly one ellipse, none entering the free space)
+/// hold for any hints.
 /// Measured (test_scan_contours): a 720-beam 6 m x 4 m room with a box, a pillar and a doorway
 /// is 10 ellipses; a straight wall seen at steep angles is one, a corner seen from inside two.
 ContourEllipses contourEllipses(const std::vector<std::vector<SensorReturn>>& contours,
-                                const FreeSpace& free_space, double min_radius);
+                                const FreeSpace& free_space, double min_radius,
+                                const std::vector<std::size_t>& split_hints = {},
+                                double hint_margin = 0.0);
 
 }  // namespace ellipse_collision::core

@@ -7,8 +7,8 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "ellipse_collision/app/scan_name_keeper.h"
 #include "ellipse_collision/app/scan_obstacles.h"
+#include "ellipse_collision/app/sensor_obstacle_series.h"
 #include "ellipse_collision/ros/messages.h"
 
 namespace ellipse_collision {
@@ -23,6 +23,9 @@ EllipseArray toMsg(const app::SensorObstacles& obstacles, const std_msgs::Header
 /// The ellipses of one LaserScan (its header's frame).
 app::SensorObstacles scanObstacles(const sensor_msgs::LaserScan& scan,
                                    const app::ScanObstacleSettings& settings);
+/// The ellipses of the next LaserScan of `series` (its header's frame).
+app::SensorObstacles scanObstacles(const sensor_msgs::LaserScan& scan,
+                                   app::SensorObstacleSeries& series);
 
 /// scan_obstacles: turns `scan` (sensor_msgs/LaserScan) and `cloud` (sensor_msgs/PointCloud2,
 /// points within a z band) into obstacle ellipses on `obstacles` (EllipseArray, header = the
@@ -39,13 +42,10 @@ class ScanObstaclesNode {
   void publish(const app::SensorObstacles& obstacles, const std_msgs::Header& header);
 
   ros::NodeHandle nh_;
-  app::ScanObstacleSettings settings_;
+  app::SensorObstacleSeries series_;  ///< settings, and cuts and names kept from message to message
   ros::Publisher obstacles_pub_;
   ros::Subscriber scan_sub_;
   ros::Subscriber cloud_sub_;
-  // Names kept from message to message, one keeper per input.
-  app::ScanNameKeeper scan_names_;
-  app::ScanNameKeeper cloud_names_;
 };
 
 }  // namespace ellipse_collision

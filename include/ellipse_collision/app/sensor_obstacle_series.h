@@ -1,0 +1,40 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "ellipse_collision/app/scan_name_keeper.h"
+#include "ellipse_collision/app/scan_obstacles.h"
+#include "ellipse_collision/app/split_memory.h"
+
+namespace ellipse_collision::app {
+
+/// One sensor's messages in turn, as scan_obstacles handles them: each scan is cut first where
+/// the last scans cut it (SplitMemory), and names are carried over from message to message
+/// (ScanNameKeeper), so that a scene that stays keeps its ellipses and names under range noise.
+/// Clouds keep their names; their cuts are not carried over (a cloud's bins and clusters are not
+/// ordered beams).
+class SensorObstacleSeries {
+ public:
+  /// `settings` must pass findInvalidSetting().
+  explicit SensorObstacleSeries(ScanObstacleSettings settings) : settings_(std::move(settings)) {}
+
+  /// scanObstacles() of the next scan (sensor_msgs/LaserScan's fields).
+  SensorObstacles scan(const std::vector<float>& ranges, double angle_min,
+                       double angle_increment, double range_min, double range_max,
+                       const std::string& frame_id);
+
+  /// cloudObstacles() of the next cloud.
+  SensorObstacles cloud(const std::vector<Eigen::Vector3f>& points, const std::string& frame_id);
+
+  const ScanObstacleSettings& settings() const { return settings_; }
+
+ private:
+  ScanObstacleSettings settings_;
+  SplitMemory scan_splits_;
+  ScanNameKeeper scan_names_;
+  ScanNameKeeper cloud_names_;
+};
+
+}  // namespace ellipse_collision::app
