@@ -15,6 +15,7 @@
 #include <cstdlib>
 #include <limits>
 #include <map>
+#include <random>
 #include <set>
 #include <string>
 #include <vector>
@@ -363,6 +364,30 @@ TEST(ScanContinuity, NamesAndSplitsStayWhileANoisySensorSeesTheSameRoom) {
   EXPECT_LE(kept_churn * 50, total);
   EXPECT_LE(kept_vocabulary.size() * 3, raw_vocabulary.size());
   EXPECT_LE(total, raw_total * 3 / 2) << "the hints must not pile up cuts";
+}
+
+TEST(ScanContinuity, AnyHintsKeepEveryGuaranteeOnEveryBeam) {
+  // Hints are cuts at arbitrary beams: however many and wherever (every beam, none, random
+  // sets), every return is in an ellipse and no ellipse enters a beam's free part.
+  std::mt19937_64 random(32);
+  for (int trial = 0; trial < 40; ++trial) {
+    const ScanFields scan = test::castScan(test::roomWorld(), 720, 10.0, 0.01, 500 + trial);
+    std::vector<std::size_t> hints;
+    const double density =
+        trial == 0 ? 1.0 : std::uniform_real_distribution<double>(0.0, 0.3)(random);
+    for (std::size_t beam = 0; beam < scan.ranges.size(); ++beam) {
+      if (std::uniform_real_distribution<double>(0, 1)(random) < density) hints.push_back(beam);
+    }
+    const ScanObstacleSettings settings;
+    const SensorObstacles result =
+        scanObstacles(scan.ranges, scan.angle_min, scan.angle_increment, scan.range_min,
+                      scan.range_max, "laser", settings, hints);
+    EXPECT_EQ(violations(scan, result, settings), 0) << "trial " << trial;
+    // Every unneeded hint is a hint.
+    for (const std::size_t key : result.unneeded_hints) {
+      EXPECT_TRUE(std::binary_search(hints.begin(), hints.end(), key)) << key;
+    }
+  }
 }
 
 TEST(ScanContinuity, WhereTheSensorMovesTheScanIsSplitAfresh) {
