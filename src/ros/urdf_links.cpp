@@ -39,22 +39,38 @@ std::string extensionOf(const std::string& uri) {
   return uri.substr(dot + 1);
 }
 
-void collectVertices(const aiScene& scene, const aiNode& node, const aiMatrix4x4& parent,
+/// The root node's transform as rviz draws meshes: its scale and translation, not its rotation
+/// (rviz 1.14's mesh_loader.cpp, buildMesh(), the rviz Debian 12 ships; MoveIt's geometric_shapes
+/// drops that rotation too). assimp 5.2's Collada importer puts the file's <unit meter> into the
+/// root node as a scale and, for a Z_UP or X_UP file, a turn to Y-up: kept, it would lay a part
+/// authored Z_UP on its side. So <up_axis> is ignored and <unit> applied, as by rviz; Y_UP
+/// Collada, STL and OBJ have no root rotation and read as before.
+aiMatrix4x4 rootTransformAsRvizDrawsIt(const aiMatrix4x4& root) {
+  aiVector3D scaling;
+  aiVector3D position;
+  aiQuaternion rotation;
+  root.Decompose(scaling, rotation, position);
+  return aiMatrix4x4(scaling, aiQuaternion(), position);
+}
+
+/// Appends the vertices of `node` and its descendants, `mesh_from_node` being `node`'s transform
+/// into the mesh file's frame, each vertex scaled by `scale` (the URDF scale) afterwards.
+void collectVertices(const aiScene& scene, const aiNode& node, const aiMatrix4x4& mesh_from_node,
                      const Eigen::Vector3d& scale, std::vector<Eigen::Vector3d>& out) {
-  const aiMatrix4x4 transform = parent * node.mTransformation;
   for (unsigned m = 0; m < node.mNumMeshes; ++m) {
     const aiMesh& mesh = *scene.mMeshes[node.mMeshes[m]];
     for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
-      const aiVector3D p = transform * mesh.mVertices[v];
+      const aiVector3D p = mesh_from_node * mesh.mVertices[v];
       out.emplace_back(scale.x() * p.x, scale.y() * p.y, scale.z() * p.z);
     }
   }
   for (unsigned c = 0; c < node.mNumChildren; ++c) {
-    collectVertices(scene, *node.mChildren[c], transform, scale, out);
+    const aiNode& child = *node.mChildren[c];
+    collectVertices(scene, child, mesh_from_node * child.mTransformation, scale, out);
   }
 }
 
-/// The mesh's vertices in the shape frame [m], URDF scale applied.
+/// The mesh's vertices in the shape frame [m] where rviz draws them, URDF scale applied.
 std::vector<Eigen::Vector3d> loadMeshVertices(const urdf::Mesh& mesh, const std::string& where) {
   const std::string& uri = mesh.filename;
   resource_retriever::MemoryResource resource;
@@ -71,7 +87,8 @@ std::vector<Eigen::Vector3d> loadMeshVertices(const urdf::Mesh& mesh, const std:
     throw UrdfError(where + ": cannot load mesh '" + uri + "': " + importer.GetErrorString());
   }
   std::vector<Eigen::Vector3d> vertices;
-  collectVertices(*scene, *scene->mRootNode, aiMatrix4x4(),
+  collectVertices(*scene, *scene->mRootNode,
+                  rootTransformAsRvizDrawsIt(scene->mRootNode->mTransformation),
                   Eigen::Vector3d(mesh.scale.x, mesh.scale.y, mesh.scale.z), vertices);
   if (vertices.empty()) throw UrdfError(where + ": mesh '" + uri + "' has no vertices");
   return vertices;

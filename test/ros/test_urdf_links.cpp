@@ -1,14 +1,21 @@
 // URDF links to ellipses (ros/urdf_links.h, app/link_fitting.h) on test/fixtures/: every
 // geometry type with origin offsets and a mesh, checked for containment of the true geometry's
-// sampled points and for area against closed forms; the errors; the `links:` YAML of
-// fit_link_ellipses read back by the node's configuration parser; ~links_from_urdf. No master.
+// sampled points and for area against closed forms; mesh files (STL ASCII and binary, Collada
+// Z_UP / Y_UP / X_UP with units and node transforms) read where rviz draws them; the errors; the
+// `links:` YAML of fit_link_ellipses read back by the node's configuration parser;
+// ~links_from_urdf. No master.
 #include <gtest/gtest.h>
 #include <xmlrpcpp/XmlRpcValue.h>
 
+#include <Eigen/Core>
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <functional>
+#include <limits>
 #include <map>
 #include <string>
 #include <vector>
@@ -185,6 +192,186 @@ TEST(UrdfLinks, ErrorsNameTheFileParameterLinkAndUri) {
             "file 'r.urdf': links[1] = 'box_link': named twice");
 }
 
+// Mesh formats: test/fixtures/tall_box_meshes.urdf has one link per mesh file of one box, x
+// 0.254..0.3556, y 0.127..0.3302, z 0.0508..0.6604 m (4 x 8 x 24 in, 10 x 5 x 2 in from the
+// origin: exact in millimetres and inches), each read where rviz draws its file. Seen along z it is the 0.1016 x 0.2032 rectangle centred at (0.3048, 0.2286): the
+// minimum ellipse has its axes, radii 0.1016 / sqrt(2) and 0.2032 / sqrt(2), the long one along y.
+// A Z_UP Collada file fitted in assimp's Y-up frame would show the box's side: 0.1016 x 0.6096
+// about (0.3048, 0.3556).
+
+const std::string kTallBoxMeshes = kFixtures + "tall_box_meshes.urdf";
+
+struct AlignedBox {
+  Eigen::Vector3d min, max;  // [m]
+};
+
+const AlignedBox kTallBox{{0.254, 0.127, 0.0508}, {0.3556, 0.3302, 0.6604}};
+
+/// assimp reads vertices as float (ai_real) and transforms them in float: a few ulps of 0.66 m
+/// (6e-8 each; the fixtures' worst vertex is 4.7e-8 off, their worst fit 2.1e-8 off the STL's).
+constexpr double kVertexTolerance = 2e-7;
+
+std::vector<Eigen::Vector3d> cornersOf(const std::vector<AlignedBox>& boxes) {
+  std::vector<Eigen::Vector3d> corners;
+  for (const AlignedBox& box : boxes) {
+    for (int i = 0; i < 8; ++i) {
+      corners.emplace_back((i & 1) ? box.max.x() : box.min.x(), (i & 2) ? box.max.y() : box.min.y(),
+                           (i & 4) ? box.max.z() : box.min.z());
+    }
+  }
+  return corners;
+}
+
+/// Every vertex read is a corner of one of `boxes` and every corner is read (the fixtures'
+/// triangles use the corners only). One failure each, naming the farthest vertex.
+void expectVerticesAreTheCorners(const std::vector<Eigen::Vector3d>& vertices,
+                                 const std::vector<AlignedBox>& boxes) {
+  const std::vector<Eigen::Vector3d> corners = cornersOf(boxes);
+  std::vector<bool> read(corners.size(), false);
+  double worst = 0.0;
+  Eigen::Vector3d worst_vertex = Eigen::Vector3d::Zero();
+  for (const Eigen::Vector3d& vertex : vertices) {
+    double nearest = std::numeric_limits<double>::infinity();
+    for (std::size_t c = 0; c < corners.size(); ++c) {
+      const double distance = (vertex - corners[c]).norm();
+      nearest = std::min(nearest, distance);
+      if (distance <= kVertexTolerance) read[c] = true;  // boxes may share corners
+    }
+    if (nearest > worst) {
+      worst = nearest;
+      worst_vertex = vertex;
+    }
+  }
+  EXPECT_LE(worst, kVertexTolerance)
+      << "vertex (" << worst_vertex.transpose() << ") is no corner of the expected boxes";
+  std::size_t unread = 0;
+  for (std::size_t c = 0; c < corners.size(); ++c) unread += read[c] ? 0 : 1;
+  EXPECT_EQ(unread, 0u) << "corners not read, of " << corners.size();
+}
+
+/// The vertices of `link`'s single mesh in the model `urdf_xml`.
+std::vector<Eigen::Vector3d> meshVerticesOf(const std::string& urdf_xml, const std::string& link) {
+  const auto links = readUrdfLinks(urdf_xml, "test", {link});
+  if (links.size() != 1 || links[0].shapes.size() != 1) return {};
+  return links[0].shapes[0].mesh_vertices;
+}
+
+/// An ellipse as its long and short radius and the long axis' direction, which do not depend on
+/// which radius the fit calls x.
+struct EllipseAxes {
+  double major, minor, major_angle;
+};
+
+EllipseAxes axesOf(const app::EllipseSpec& e) {
+  const double major_angle = e.radius_x >= e.radius_y ? e.angle : e.angle + kPi / 2.0;
+  return {std::max(e.radius_x, e.radius_y), std::min(e.radius_x, e.radius_y), major_angle};
+}
+
+/// The angle between two axis directions: 0 for the same line, whatever the multiple of pi.
+double axisAngleBetween(double a, double b) { return std::abs(std::remainder(a - b, kPi)); }
+
+/// `e` is the tall box's ellipse: centre, radii and long axis (along y) from the closed form.
+void expectTallBoxEllipse(const app::EllipseSpec& e) {
+  SCOPED_TRACE(e.name);
+  EXPECT_NEAR(e.x, 0.3048, kVertexTolerance);
+  EXPECT_NEAR(e.y, 0.2286, kVertexTolerance);
+  const EllipseAxes axes = axesOf(e);
+  EXPECT_NEAR(axes.major, 0.2032 / std::sqrt(2.0), kVertexTolerance);
+  EXPECT_NEAR(axes.minor, 0.1016 / std::sqrt(2.0), kVertexTolerance);
+  EXPECT_LE(axisAngleBetween(axes.major_angle, kPi / 2.0), 1e-5);
+}
+
+/// `e` equals `reference` (the STL's fit) within the vertices' float rounding.
+void expectSameEllipse(const app::EllipseSpec& e, const app::EllipseSpec& reference) {
+  SCOPED_TRACE(e.name + " against " + reference.name);
+  EXPECT_NEAR(e.x, reference.x, kVertexTolerance);
+  EXPECT_NEAR(e.y, reference.y, kVertexTolerance);
+  const EllipseAxes axes = axesOf(e), expected = axesOf(reference);
+  EXPECT_NEAR(axes.major, expected.major, kVertexTolerance);
+  EXPECT_NEAR(axes.minor, expected.minor, kVertexTolerance);
+  EXPECT_LE(axisAngleBetween(axes.major_angle, expected.major_angle), 1e-5);
+}
+
+/// The Collada links of kTallBoxMeshes whose file holds the box as one mesh, and the one that
+/// builds it from two halves placed by node transforms.
+const std::vector<std::string> kColladaWholeBoxLinks = {"collada_z_up", "collada_z_up_millimetres",
+                                                        "collada_y_up_inches", "collada_x_up"};
+const std::string kColladaNodesLink = "collada_z_up_nodes";
+
+TEST(MeshFormats, EveryTallBoxMeshIsReadWhereRvizDrawsIt) {
+  const std::string xml = readUrdfFile(kTallBoxMeshes);
+  std::vector<std::string> whole_box_links = kColladaWholeBoxLinks;
+  whole_box_links.insert(whole_box_links.begin(), "stl");
+  for (const std::string& link : whole_box_links) {
+    SCOPED_TRACE(link);
+    expectVerticesAreTheCorners(meshVerticesOf(xml, link), {kTallBox});
+  }
+  // Two half boxes placed by node transforms (in millimetres, below the Z_UP root).
+  const AlignedBox lower{kTallBox.min, {kTallBox.max.x(), kTallBox.max.y(), 0.3556}};
+  const AlignedBox upper{{kTallBox.min.x(), kTallBox.min.y(), 0.3556}, kTallBox.max};
+  SCOPED_TRACE(kColladaNodesLink);
+  expectVerticesAreTheCorners(meshVerticesOf(xml, kColladaNodesLink), {lower, upper});
+}
+
+TEST(MeshFormats, EveryColladaTallBoxFitsTheEllipseOfTheStl) {
+  const auto fits = fitFile(kTallBoxMeshes);
+  const app::EllipseSpec& stl = fits.at("stl");
+  expectTallBoxEllipse(stl);
+  std::vector<std::string> collada_links = kColladaWholeBoxLinks;
+  collada_links.push_back(kColladaNodesLink);
+  for (const std::string& link : collada_links) {
+    expectTallBoxEllipse(fits.at(link));
+    expectSameEllipse(fits.at(link), stl);
+  }
+}
+
+/// `triangles` (corner indices into `corners`) as a binary STL file: 80-byte header, the
+/// little-endian uint32 triangle count, then per triangle its normal and three vertices as
+/// little-endian float32 and a uint16 attribute. The normals are left zero: only positions count.
+void writeBinaryStl(const std::string& path, const std::vector<Eigen::Vector3d>& corners,
+                    const std::vector<std::array<int, 3>>& triangles) {
+  static_assert(sizeof(float) == 4, "STL stores IEEE float32");
+  std::ofstream file(path, std::ios::binary);
+  const std::string header(80, ' ');
+  file.write(header.data(), 80);
+  auto putLittleEndian = [&file](std::uint32_t bits, int bytes) {
+    for (int b = 0; b < bytes; ++b) file.put(static_cast<char>((bits >> (8 * b)) & 0xFFu));
+  };
+  auto putFloat = [&](double value) {
+    const float single = static_cast<float>(value);
+    std::uint32_t bits = 0;
+    std::memcpy(&bits, &single, 4);
+    putLittleEndian(bits, 4);
+  };
+  putLittleEndian(static_cast<std::uint32_t>(triangles.size()), 4);
+  for (const auto& triangle : triangles) {
+    for (int i = 0; i < 3; ++i) putFloat(0.0);
+    for (const int corner : triangle) {
+      for (int i = 0; i < 3; ++i) putFloat(corners[corner][i]);
+    }
+    putLittleEndian(0, 2);
+  }
+}
+
+TEST(MeshFormats, BinaryStlTallBoxReadsAndFitsLikeTheAsciiOne) {
+  // The triangles of the fixtures: corner i has x, y, z at their maximum where bit 0, 1, 2 is set.
+  const std::vector<std::array<int, 3>> triangles = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6},
+                                                     {0, 1, 4}, {1, 5, 4}, {2, 6, 3}, {3, 6, 7},
+                                                     {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
+  const std::string path = testing::TempDir() + "tall_box_binary.stl";
+  writeBinaryStl(path, cornersOf({kTallBox}), triangles);
+  std::string xml = readUrdfFile(kTallBoxMeshes);
+  const std::string ascii_uri = "package://ellipse_collision/test/fixtures/tall_box.stl";
+  xml.replace(xml.find(ascii_uri), ascii_uri.size(), "file://" + path);
+  expectVerticesAreTheCorners(meshVerticesOf(xml, "stl"), {kTallBox});
+  app::LinkFitOptions options;
+  options.links = {"stl"};
+  const auto result = fitUrdfLinks(xml, "test", options);
+  ASSERT_EQ(result.links.size(), 1u);
+  expectTallBoxEllipse(result.links[0]);
+  expectSameEllipse(result.links[0], fitFile(kTallBoxMeshes).at("stl"));
+}
+
 std::string runCommand(const std::string& command) {
   std::string output;
   FILE* pipe = popen(command.c_str(), "r");
@@ -228,6 +415,14 @@ TEST(FitLinkEllipsesTool, PrintsALinksBlockTheNodeConfigurationReadsBackExactly)
     EXPECT_EQ(config.links[i].radius_y, expected[i].radius_y);
     EXPECT_EQ(config.links[i].padding, expected[i].padding);
   }
+}
+
+TEST(FitLinkEllipsesTool, PrintsTheUprightEllipseOfAZUpColladaMesh) {
+  const std::string yaml = runCommand(std::string(FIT_LINK_ELLIPSES_BIN) + " " + kTallBoxMeshes +
+                                      " --links collada_z_up 2>/dev/null");
+  const NodeConfig config = parseNodeConfig(asRosparamLoadsIt(yaml));
+  ASSERT_EQ(config.links.size(), 1u) << yaml;
+  expectTallBoxEllipse(config.links[0]);
 }
 
 TEST(FitLinkEllipsesTool, BadUrdfExitsOneNamingTheFile) {

@@ -30,7 +30,8 @@ std::string readUrdfParam(const std::string& param);
 /// Every link of the model in `urdf_xml` with its collision geometry in core types, for the links
 /// named in `names` (in that order; empty: every link, sorted by name): boxes, cylinders, spheres
 /// and meshes, each with its <origin>; meshes loaded through resource_retriever (package://,
-/// file://) and assimp, node transforms and the URDF scale applied. `source` ("file 'x.urdf'",
+/// file://) and assimp and placed where rviz draws them: node transforms, a Collada file's <unit>
+/// and the URDF scale applied, its <up_axis> ignored (no turn to Y-up). `source` ("file 'x.urdf'",
 /// "parameter 'robot_description'") starts every error. Throws UrdfError when the URDF does not
 /// parse, a name is not a link, or a mesh cannot be loaded (naming link and URI).
 std::vector<app::LinkGeometry> readUrdfLinks(const std::string& urdf_xml, const std::string& source,
