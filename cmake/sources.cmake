@@ -57,4 +57,5 @@ set(ELLIPSE_COLLISION_APP_SOURCES
   src/app/placement_cache.cpp
   src/app/standing_obstacles.cpp
   src/app/stored_placement.cpp
-  src/app/transform_lookup.cpp)
+  src/app/transform_lookup.cpp
+  src/app/tunable_settings.cpp)

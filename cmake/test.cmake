@@ -167,6 +167,10 @@ target_link_libraries(test_motion quadmath)
 add_rostest(test/ros/python_client.test
   DEPENDENCIES ellipse_collision_node ${PROJECT_NAME}_generate_messages)
 
+# dynamic_reconfigure through the real node, with Debian's dynamic_reconfigure client (Python).
+add_rostest(test/ros/reconfigure.test
+  DEPENDENCIES ellipse_collision_node ${PROJECT_NAME}_generate_messages ${PROJECT_NAME}_gencfg)
+
 # Every message and service type a user meets loads in Debian's Python (rosservice, rostopic,
 # rospy): catches a missing python3-*-msgs package in scripts/setup.sh.
 catkin_run_tests_target("python" "message_types" "python-message_types.xml"

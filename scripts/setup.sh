@@ -68,6 +68,10 @@ DEBIAN_PACKAGES=(
   # in (found by scripts/fresh_machine.sh: "No rule to make target .../libz.so")
   zlib1g-dev
   libresource-retriever-dev
+  # parameters changed while the node runs: the C++ server (cfg/*.cfg, generated at build time by
+  # its Python generator) and the Python client that rqt_reconfigure and the rostest use
+  libdynamic-reconfigure-config-init-mutex-dev
+  python3-dynamic-reconfigure
   # fuzzing: clang with libFuzzer and the sanitizer runtimes
   clang
   libclang-rt-14-dev
