@@ -139,9 +139,11 @@ FirstContact translationContact(const Ellipse& a, const Ellipse& b, const Eigen:
   const double slack = 4e-15 * p0.norm();
   const double outer = (boundingRadius(a) + boundingRadius(b)) * (1.0 + 1e-9) + slack;
   // The unit direction of w from w scaled by a power of two (exact), so that a tiny or subnormal
-  // relative velocity keeps its full precision.
-  const double w_max = std::max(std::fabs(w.x()), std::fabs(w.y()));
-  const Eigen::Vector2d d = (w * std::ldexp(1.0, -std::ilogb(w_max))).normalized();
+  // relative velocity keeps its full precision. Each component is scaled itself: for a subnormal
+  // w the factor 2^-ilogb alone overflows to inf (fuzzer finding).
+  const int exponent = std::ilogb(std::max(std::fabs(w.x()), std::fabs(w.y())));
+  const Eigen::Vector2d d =
+      Eigen::Vector2d(std::ldexp(w.x(), -exponent), std::ldexp(w.y(), -exponent)).normalized();
   const double x0 = p0.dot(d);
   const double sigma = d.x() * p0.y() - d.y() * p0.x();  // n . p0, n = (-d.y, d.x)
   if (std::fabs(sigma) > outer) return {};  // the line stays outside the circle of radius `outer`

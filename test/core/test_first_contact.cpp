@@ -492,6 +492,26 @@ TEST(FirstContact, TinyRelativeVelocityOverAHugeHorizon) {
   EXPECT_EQ(report.wrong, 0);
 }
 
+TEST(FirstContact, SubnormalRelativeVelocityKeepsItsDirection) {
+  // Fuzzer finding: w = 1e-316 m/s along x, b 5 m out on +x moving away; scaling w by 2^-ilogb(w)
+  // in one factor overflowed to inf, the direction became NaN and the pair was reported in
+  // contact. And the same speed towards a: contact after (5 - 1 - 1) / 1e-316 s, far beyond.
+  const Ellipse a{{0, 0}, 1, 0.2, 0};
+  const Ellipse b{{5, 0}, 1, 0.3, 1};
+  const Motion still{};
+  Report report("subnormal velocity");
+  for (double sign : {1.0, -1.0}) {
+    const Case c{a, b, still, {{sign * 1.0330219974504996e-316, 0}, 0.0}, 1000000.001};
+    EXPECT_FALSE(firstContact(c.a, c.ma, c.b, c.mb, c.horizon).contact) << describe(c);
+    check(c, report);
+  }
+  // Towards a, over a horizon long enough to arrive.
+  const Case arrive{a, b, still, {{-2.2e-308, 0}, 0.0}, 1.7e308};
+  EXPECT_TRUE(firstContact(arrive.a, arrive.ma, arrive.b, arrive.mb, arrive.horizon).contact);
+  check(arrive, report);
+  EXPECT_EQ(report.wrong, 0);
+}
+
 TEST(FirstContact, RefusesInvalidInputNamingTheField) {
   const Ellipse a{{0, 0}, 1, 1, 0};
   const Motion still{};
