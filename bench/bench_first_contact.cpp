@@ -1,10 +1,11 @@
 // First contact under translation on the same random pairs, side by side: firstContact() (the
 // entry of the path into the Minkowski sum), the secant method on the contact scale it replaced
 // (secantFirstContact(), reference_methods.h), FCL 0.7's continuousCollide on fcl::Ellipsoid (z
-// radius = the smaller radius, motion in the plane) and sampling overlap() at 100 steps. FCL's conservative advancement has no ellipsoid entry
-// in its function table (it prints "not supported" and reports no contact; checked once and reported), so
-// the FCL figure is its naive solver (collide() at num_max_iterations = 100 time steps), the only
-// FCL solver that accepts this pair. Every benchmark carries as counters its misclassifications
+// radius = the smaller radius, motion in the plane) and sampling overlap() at 100 steps. FCL's
+// conservative advancement has no ellipsoid entry in its function table (it prints "not
+// supported" and reports no contact; checked once and reported), so the FCL figure is its naive
+// solver (collide() at num_max_iterations = 100 time steps), the only FCL solver that accepts this
+// pair. Every benchmark carries as counters its misclassifications
 // and worst time error (relative to the horizon) against the quad-precision oracle
 // (first_contact_oracle.h), computed once before timing; a summary with the speed ratios is printed
 // at the end: CPU time per pair, the median of kSummaryRounds rounds in which every method runs
@@ -242,7 +243,7 @@ int main(int argc, char** argv) {
   auto fcl_naive = [](std::size_t i) { return fclContact(fcl_pairs[i], fcl::CCDC_NAIVE); };
   auto sampling = [](std::size_t i) { return sampled(cases[i]); };
   registerMethod("ours", cases, ours);
-  registerMethod("secant_before_issue_30", cases, secant);
+  registerMethod("secant_contact_scale", cases, secant);
   registerMethod("fcl_naive_100_steps", cases, fcl_naive);
   registerMethod("sampling_overlap_100_steps", cases, sampling);
 
@@ -268,7 +269,7 @@ int main(int argc, char** argv) {
   };
   const double ours_median = median(t_ours);
   line("ours", ours_median);
-  line("secant_before_issue_30", median(t_secant));
+  line("secant_contact_scale", median(t_secant));
   line("fcl_naive_100_steps", median(t_fcl));
   line("sampling_overlap_100_steps", median(t_sampling));
   std::printf("  speed ratio: secant / ours = %.1fx, FCL / ours = %.1fx, sampling / ours = %.1fx\n",

@@ -36,7 +36,7 @@ constexpr double kLearningRate = 1e-2;
 constexpr double kGradientTolerance = 1e-3;
 constexpr int kMaxIterations = 100;
 
-// ---- the secant method on the contact scale (firstContact() under translation until issue 30) --
+// ---- the secant method on the contact scale: firstContact()'s translation before the sum's entry
 // With both shapes fixed, b - a is the centred Minkowski sum K = A + B, and the pair overlaps at t
 // iff the gauge of K at the relative offset p(t) = p0 + w t is <= 1 (Perram & Wertheim 1985;
 // Gilitschenski & Hanebeck 2012: this gauge is the contact scale t*). A gauge is convex and p(t)

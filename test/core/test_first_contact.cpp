@@ -26,7 +26,7 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double kBand = 1e-9;
 // Translation: time error bound wherever the crossing is transversal [horizon].
 constexpr double kTranslationTimeTolerance = 1e-9;
-// The same for the families added with the Minkowski-sum entry (issue 30), away from grazing.
+// The same for the families added with the Minkowski-sum entry, away from grazing.
 constexpr double kTransversalTimeTolerance = 1e-11;
 // Rotation: never later than this after the true contact, never earlier than kEarly before [horizon].
 constexpr double kLate = 1e-9;
@@ -430,7 +430,8 @@ TEST(FirstContact, BenchmarkMixMatchesOracle) {
     auto ellipse = [&]() {
       const double major = r.logUniform(0.05, 2.0), minor = major / r.logUniform(1.0, 100.0);
       const bool x_major = r.coin();
-      return Ellipse{{0, 0}, x_major ? major : minor, x_major ? minor : major, r.uniform(-kPi, kPi)};
+      return Ellipse{{0, 0}, x_major ? major : minor, x_major ? minor : major,
+                     r.uniform(-kPi, kPi)};
     };
     Ellipse a = ellipse(), b = ellipse();
     a.center = {r.uniform(-5, 5), r.uniform(-5, 5)};
