@@ -66,7 +66,7 @@ else
   pair_args=(--pairs_per_mix=2000 --benchmark_min_time=0.3 "${repeat[@]}")
   scene_args=(--benchmark_min_time=0.3 "${repeat[@]}")
   distance_args=(--benchmark_min_time=0.3 "${repeat[@]}")
-  contact_args=(--pairs=2000 --benchmark_min_time=0.3 "${repeat[@]}")
+  contact_args=(--pairs=5000 --benchmark_min_time=0.3 "${repeat[@]}")
   scan_args=(--benchmark_min_time=0.5 "${repeat[@]}")
   path_args=(--benchmark_min_time=0.5 "${repeat[@]}")
   run_check_args=(--benchmark_min_time=0.3 "${repeat[@]}")
@@ -101,9 +101,9 @@ echo "Running bench_distance (ns per pair; max/median relative error against the
 run bench_distance "${distance_args[@]}"
 grep -E '^(Benchmark|BM_)' "${out}/bench_distance.txt" | grep -vE '_(mean|stddev|cv)( |$)' || true
 
-# ---- firstContact() beside FCL's continuousCollide and sampling, against the quad oracle --------
+# ---- firstContact() beside the secant method it replaced, FCL's continuousCollide and sampling --
 echo
-echo "Running bench_first_contact (us per pair; misclassifications and time errors against the oracle)"
+echo "Running bench_first_contact (us per pair, new beside old; misclassifications and time errors against the oracle)"
 run bench_first_contact "${contact_args[@]}"
 grep -vE '_(mean|stddev|cv)( |$)|^(Run on|CPU|  L[123]|Load Average|\*\*\*)' "${out}/bench_first_contact.txt" \
   | grep -v '^-*$' || true
