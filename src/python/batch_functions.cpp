@@ -1,0 +1,93 @@
+// The pair functions on N pairs at once: row i of `a` with row i of `b`, (N, 5) float64 arrays.
+// The loop runs in C++ with the GIL released, so a million pairs cost what the core costs (the
+// Python alternative pays an interpreter round trip per pair) and other Python threads run.
+#include "bindings.h"
+#include "ellipse_collision/core/distance.h"
+#include "ellipse_collision/core/eigenvalue_test.h"
+#include "ellipse_collision/core/overlap.h"
+#include "ellipse_rows.h"
+
+namespace ellipse_collision::python {
+
+namespace py = pybind11;
+
+namespace {
+
+/// Calls per_pair(i, a[i], b[i]) for every row, without the GIL, after checking both arrays'
+/// shape and dtype; rows are validated as they are read (isValid(): five comparisons) and the
+/// first invalid one is refused with ValueError naming its array, row, field and value.
+template <typename PerPair>
+void forEachPair(const py::array& a_array, const py::array& b_array, PerPair per_pair) {
+  const EllipseRows a(a_array, "a"), b(b_array, "b");
+  requireSameRows(a, b);
+  py::ssize_t invalid = -1;
+  {
+    py::gil_scoped_release release;
+    for (py::ssize_t i = 0; i < a.size(); ++i) {
+      const core::Ellipse ellipse_a = a[i], ellipse_b = b[i];
+      if (!core::isValid(ellipse_a) || !core::isValid(ellipse_b)) {
+        invalid = i;
+        break;
+      }
+      per_pair(i, ellipse_a, ellipse_b);
+    }
+  }
+  if (invalid >= 0) {
+    if (!core::isValid(a[invalid])) a.refuseRow(invalid);
+    b.refuseRow(invalid);
+  }
+}
+
+}  // namespace
+
+void bindBatchFunctions(py::module_& module) {
+  module.def(
+      "overlap_batch",
+      [](const py::array& a, const py::array& b) {
+        py::array_t<bool> result(a.ndim() > 0 ? a.shape(0) : 0);
+        bool* out = result.mutable_data();
+        forEachPair(a, b, [out](py::ssize_t i, const core::Ellipse& ea, const core::Ellipse& eb) {
+          out[i] = core::overlap(ea, eb);
+        });
+        return result;
+      },
+      py::arg("a"), py::arg("b"),
+      "overlap() of row i of a with row i of b: (N, 5) float64 arrays [x, y, radius_x, radius_y, "
+      "angle] in, an (N,) bool array out.");
+  module.def(
+      "contact_scale_batch",
+      [](const py::array& a, const py::array& b) {
+        py::array_t<double> result(a.ndim() > 0 ? a.shape(0) : 0);
+        double* out = result.mutable_data();
+        forEachPair(a, b, [out](py::ssize_t i, const core::Ellipse& ea, const core::Ellipse& eb) {
+          out[i] = core::contactScale(ea, eb);
+        });
+        return result;
+      },
+      py::arg("a"), py::arg("b"),
+      "contact_scale() of row i of a with row i of b: an (N,) float64 array out.");
+  module.def(
+      "distance_batch",
+      [](const py::array& a, const py::array& b) {
+        const py::ssize_t rows = a.ndim() > 0 ? a.shape(0) : 0;
+        py::array_t<double> distances(rows);
+        py::array_t<double> points_a({rows, py::ssize_t{2}}), points_b({rows, py::ssize_t{2}});
+        double* distance_out = distances.mutable_data();
+        double* a_out = points_a.mutable_data();
+        double* b_out = points_b.mutable_data();
+        forEachPair(a, b, [=](py::ssize_t i, const core::Ellipse& ea, const core::Ellipse& eb) {
+          const core::Clearance clearance = core::distance(ea, eb);
+          distance_out[i] = clearance.distance;
+          a_out[2 * i] = clearance.point_a.x();
+          a_out[2 * i + 1] = clearance.point_a.y();
+          b_out[2 * i] = clearance.point_b.x();
+          b_out[2 * i + 1] = clearance.point_b.y();
+        });
+        return py::make_tuple(distances, points_a, points_b);
+      },
+      py::arg("a"), py::arg("b"),
+      "distance() of row i of a with row i of b: (distances (N,), points_a (N, 2), points_b "
+      "(N, 2)); distance 0 and points at the origin where a pair overlaps.");
+}
+
+}  // namespace ellipse_collision::python
