@@ -38,18 +38,27 @@ void forEachPair(const py::array& a_array, const py::array& b_array, PerPair per
   }
 }
 
+/// An (N,) array of per_pair(a[i], b[i]): the batch form of a pair function with one answer.
+template <typename Result, typename PerPair>
+py::array_t<Result> batchOf(const py::array& a, const py::array& b, PerPair per_pair) {
+  py::array_t<Result> result(a.ndim() > 0 ? a.shape(0) : 0);
+  Result* out = result.mutable_data();
+  forEachPair(a, b,
+              [out, per_pair](py::ssize_t i, const core::Ellipse& ea, const core::Ellipse& eb) {
+                out[i] = per_pair(ea, eb);
+              });
+  return result;
+}
+
 }  // namespace
 
 void bindBatchFunctions(py::module_& module) {
   module.def(
       "overlap_batch",
       [](const py::array& a, const py::array& b) {
-        py::array_t<bool> result(a.ndim() > 0 ? a.shape(0) : 0);
-        bool* out = result.mutable_data();
-        forEachPair(a, b, [out](py::ssize_t i, const core::Ellipse& ea, const core::Ellipse& eb) {
-          out[i] = core::overlap(ea, eb);
+        return batchOf<bool>(a, b, [](const core::Ellipse& ea, const core::Ellipse& eb) {
+          return core::overlap(ea, eb);
         });
-        return result;
       },
       py::arg("a"), py::arg("b"),
       "overlap() of row i of a with row i of b: (N, 5) float64 arrays [x, y, radius_x, radius_y, "
@@ -57,12 +66,9 @@ void bindBatchFunctions(py::module_& module) {
   module.def(
       "contact_scale_batch",
       [](const py::array& a, const py::array& b) {
-        py::array_t<double> result(a.ndim() > 0 ? a.shape(0) : 0);
-        double* out = result.mutable_data();
-        forEachPair(a, b, [out](py::ssize_t i, const core::Ellipse& ea, const core::Ellipse& eb) {
-          out[i] = core::contactScale(ea, eb);
+        return batchOf<double>(a, b, [](const core::Ellipse& ea, const core::Ellipse& eb) {
+          return core::contactScale(ea, eb);
         });
-        return result;
       },
       py::arg("a"), py::arg("b"),
       "contact_scale() of row i of a with row i of b: an (N,) float64 array out.");
