@@ -239,6 +239,7 @@ add_rostest(test/docs/doc_static.test)
 add_rostest(test/docs/doc_node_reference.test
   DEPENDENCIES ellipse_collision_node ${PROJECT_NAME}_generate_messages)
 add_rostest(test/docs/doc_tools.test DEPENDENCIES check_ellipses fit_link_ellipses)
+add_rostest(test/docs/doc_python.test DEPENDENCIES ellipse_collision_python_core)
 set(_readme_test test/docs/doc_readme.test)
 catkin_run_tests_target("rostest" "test_docs_doc_readme.test" "rostest-test_docs_doc_readme.xml"
   COMMAND "xvfb-run -a -s \"-screen 0 1280x800x24\" ${PYTHON_EXECUTABLE} /usr/bin/rostest --pkgdir=${PROJECT_SOURCE_DIR} --package=${PROJECT_NAME} --results-filename test_docs_doc_readme.xml --results-base-dir \"${CATKIN_TEST_RESULTS_DIR}\" ${PROJECT_SOURCE_DIR}/${_readme_test}"
