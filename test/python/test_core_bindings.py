@@ -89,7 +89,7 @@ class AgreesWithTheCppTool(unittest.TestCase):
 
     def test_first_contact_matches_the_tools_motion_mode(self):
         generator = random.Random(11)
-        lines, cases = [], []
+        lines, cases, rows = [], [], ([], [], [], [])
         for _ in range(60):
             ra, rb = random_rows(generator, 2, spread=2.0)
             ma = [generator.uniform(-2, 2), generator.uniform(-2, 2),
@@ -99,6 +99,16 @@ class AgreesWithTheCppTool(unittest.TestCase):
             horizon = generator.uniform(0.5, 5.0)
             lines.append(" ".join([text(ra), text(ma), text(rb), text(mb), repr(horizon)]))
             cases.append((ellipse(ra), core.Motion(*ma), ellipse(rb), core.Motion(*mb), horizon))
+            for column, row in zip(rows, (ra, ma, rb, mb)):
+                column.append(row)
+        # The batch form, one horizon for all: the same bits as one pair at a time.
+        batch_contacts, batch_times = core.first_contact_batch(
+            *[numpy.array(column, dtype=float) for column in rows], 2.5)
+        for i, (ea, ma, eb, mb, _) in enumerate(cases):
+            single = core.first_contact(ea, ma, eb, mb, 2.5)
+            self.assertEqual((bool(batch_contacts[i]), batch_times[i]),
+                             (single.contact, single.time))
+        self.assertGreater(batch_contacts.sum(), 5)
         contacts = 0
         for case, answer in zip(cases, check_ellipses(lines, "--motion")):
             result = core.first_contact(*case)
@@ -272,6 +282,18 @@ class BadInputIsRefused(unittest.TestCase):
                            e, core.Motion(), -1.0)
         self.assertRefused("motion 2: angular_velocity = nan must be finite", core.first_contact,
                            e, core.Motion(), e, core.Motion(0, 0, math.nan), 1.0)
+        rows, motions = numpy.tile([[0.0, 0, 1, 1, 0]], (2, 1)), numpy.zeros((2, 3))
+        self.assertRefused("motion_b: shape (2, 2), expected (N, 3): rows [vx, vy, "
+                           "angular_velocity]", core.first_contact_batch, rows, motions, rows,
+                           motions[:, :2], 1.0)
+        self.assertRefused("motion_a has 1 rows and a 2: one motion per ellipse",
+                           core.first_contact_batch, rows, motions[:1], rows, motions, 1.0)
+        bad = motions.copy()
+        bad[1, 2] = math.nan
+        self.assertRefused("pair 1: motion 2: angular_velocity = nan must be finite",
+                           core.first_contact_batch, rows, motions, rows, bad, 1.0)
+        self.assertRefused("pair 0: horizon = -1 must be >= 0", core.first_contact_batch, rows,
+                           motions, rows, motions, -1.0)
         self.assertRefused("points[1].y = nan is not finite", core.minimum_area_ellipse,
                            numpy.array([[0, 0], [1, math.nan], [2, 0]]))
         self.assertRefused("points: shape (2, 3), expected (N, 2): rows [x, y]",
