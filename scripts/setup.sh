@@ -75,6 +75,17 @@ DEBIAN_PACKAGES=(
   # fuzzing: clang with libFuzzer and the sanitizer runtimes
   clang
   libclang-rt-14-dev
+  # Python bindings of the core (cmake/python.cmake, doc/python.md): pybind11 and the Python
+  # headers it compiles against (pybind11-dev does not pull them in), setuptools for setup.py;
+  # numpy for the batch functions, mpmath for the tests' 40-digit oracle, shapely for the
+  # benchmark's polygon comparison
+  pybind11-dev
+  python3-pybind11
+  python3-dev
+  python3-setuptools
+  python3-numpy
+  python3-mpmath
+  python3-shapely
   # libraries
   libeigen3-dev
   libgtest-dev
