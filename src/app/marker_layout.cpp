@@ -175,8 +175,11 @@ void MarkerLayout::appendFills(std::size_t layer, const std::vector<char>& wante
   for (std::size_t index = 0; index < wanted.size(); ++index) {
     if (!wanted[index] || l.members[index].empty()) continue;
     const MarkerState state = kMarkerStates[index / l.buckets].state;
-    FillChange fill{roleOf(layer), fillId(state, static_cast<std::uint32_t>(index % l.buckets)),
-                    Action::Show, state, {}};
+    FillChange fill{roleOf(layer),
+                    fillId(state, static_cast<std::uint32_t>(index % l.buckets)),
+                    Action::Show,
+                    state,
+                    {}};
     fill.ellipses.members_ = &l.members[index];
     out.push_back(fill);
   }
@@ -343,8 +346,7 @@ MarkerLayout::Changes MarkerLayout::update(const core::Scene& placed,
   std::map<std::string, std::int32_t> ids_now;
   for (const core::NearPair& pair : warnings) {
     const std::string key = pairKey(pair.name_a, pair.name_b);
-    const std::int32_t id =
-        lineId(key, preferredId(pair.name_a, pair.name_b), ids_now, lines_now);
+    const std::int32_t id = lineId(key, preferredId(pair.name_a, pair.name_b), ids_now, lines_now);
     ids_now[key] = id;
     lines_now[id] = {pair.point_a, pair.point_b};
   }
@@ -376,8 +378,8 @@ MarkerLayout::Changes MarkerLayout::refresh(
   // deleted lately (a shown id has no deletion number, so the two never share an id).
   constexpr std::size_t kParts = kLayers + 1;
   const auto firstAfter = [](const auto& ordered, std::int64_t after) -> std::int64_t {
-    const auto it = after < 0 ? ordered.begin()
-                              : ordered.upper_bound(static_cast<std::int32_t>(after));
+    const auto it =
+        after < 0 ? ordered.begin() : ordered.upper_bound(static_cast<std::int32_t>(after));
     if (it == ordered.end()) return -1;
     if constexpr (std::is_same_v<std::decay_t<decltype(ordered)>, std::set<std::int32_t>>) {
       return *it;

@@ -104,8 +104,8 @@ struct View {
 std::vector<core::NamedEllipse> row(std::size_t count) {
   std::vector<core::NamedEllipse> out;
   for (std::size_t i = 0; i < count; ++i) {
-    out.push_back(ellipse("o" + std::to_string(i), kObstacle, static_cast<double>(i), 0.0, 0.3,
-                          0.2));
+    out.push_back(
+        ellipse("o" + std::to_string(i), kObstacle, static_cast<double>(i), 0.0, 0.3, 0.2));
   }
   return out;
 }
@@ -147,8 +147,11 @@ TEST(MarkerLayout, BucketsDoubleAboveThirtyTwoEllipsesEachAndHalveBelowAQuarterO
   // B is kept while the count stays within [8 B, 32 B]; it is a power of two. Where B stays, the
   // fewer ellipses are spread over the row so that every cell cut before still holds some.
   const std::vector<std::pair<std::vector<core::NamedEllipse>, std::size_t>> steps = {
-      {row(32), 1}, {row(33), 2}, {row(65), 4}, {everyOther(row(64)), 4}, {row(31), 2},
-      {everyOther(row(32)), 2},  {row(15), 1}, {row(100), 4}, {row(1), 1}};
+      {row(32), 1}, {row(33), 2},
+      {row(65), 4}, {everyOther(row(64)), 4},
+      {row(31), 2}, {everyOther(row(32)), 2},
+      {row(15), 1}, {row(100), 4},
+      {row(1), 1}};
   for (const auto& [scene, buckets] : steps) {
     const std::size_t count = scene.size();
     view.apply(update(layout, scene));
@@ -341,8 +344,8 @@ TEST(MarkerLayout, TheSweepRemembersTheLastKSweptLineDeletionsAndForgetsOlderOne
   // The first 10 pairs go, then pair 10, then all the others: the 10 oldest deletions are
   // forgotten.
   for (const std::size_t first_kept : {10, 11}) {
-    view.apply(update(layout, scene, std::vector<core::NearPair>(warnings.begin() + first_kept,
-                                                                 warnings.end())));
+    view.apply(update(layout, scene,
+                      std::vector<core::NearPair>(warnings.begin() + first_kept, warnings.end())));
   }
   view.apply(update(layout, scene));
   EXPECT_TRUE(view.lines.empty());
