@@ -287,7 +287,8 @@ TEST(MarkerLayout, AClearanceLineWhosePreferredIdIsShownTakesTheNextFreeIdAndKee
   view.apply(update(layout, scene, {nearPair(a, "box", 0.0)}));
   EXPECT_EQ(view.lines.count(preferred), 1u);
 
-  Changes changes = update(layout, scene, {nearPair(a, "box", 0.0), nearPair(b, "box", 2.0)});
+  // b listed first: its preferred id is still a's, shown in the last update.
+  Changes changes = update(layout, scene, {nearPair(b, "box", 2.0), nearPair(a, "box", 0.0)});
   ASSERT_EQ(changes.lines.size(), 1u) << "a's line did not change";
   EXPECT_EQ(changes.lines[0].id, next);
   EXPECT_EQ(changes.lines[0].point_a, Eigen::Vector2d(2.0, 0.0));
