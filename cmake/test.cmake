@@ -86,6 +86,7 @@ ellipse_collision_add_gtest(test_app LIBRARIES ellipse_collision_app SOURCES
   test/app/test_obstacle_store_writer.cpp
   test/app/test_check_health.cpp
   test/app/test_link_fitting.cpp
+  test/app/test_marker_layout.cpp
   test/app/test_path_request.cpp)
 
 # scan_obstacles' guarantees on ray-cast scenes: coverage, free space, doorways, names, counts.
