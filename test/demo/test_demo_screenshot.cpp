@@ -19,6 +19,7 @@
 
 #include "ellipse_collision/app/scene_placement.h"
 #include "ellipse_collision/core/scene_check.h"
+#include "ellipse_collision/ros/collision_markers.h"
 #include "ellipse_collision/ros/conversions.h"
 #include "ellipse_collision/ros/node_config.h"
 #include "ellipse_collision/ros/tf_lookup.h"
@@ -95,9 +96,24 @@ struct HueCount {
 
 /// The hues of the screen pixels that show `target` and nothing else: inside it by at least the
 /// edge margin, outside every other ellipse by the same margin and away from tf axes.
+/// Distance [m] from `p` to the segment from `a` to `b`.
+double distanceToSegment(const Eigen::Vector2d& p, const Eigen::Vector2d& a,
+                         const Eigen::Vector2d& b) {
+  const Eigen::Vector2d ab = b - a;
+  const double length2 = ab.squaredNorm();
+  const double t = length2 > 0.0 ? std::clamp((p - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
+  return (p - (a + t * ab)).norm();
+}
+
+/// A clearance line of a warning pair, drawn over the ellipses between its witness points.
+struct Segment {
+  Eigen::Vector2d a, b;
+};
+
 HueCount countHues(const ScreenImage& image, const TopDownView& view, const PanelRect& panel,
                    const core::NamedEllipse& target, const std::vector<core::NamedEllipse>& all,
-                   const std::vector<Eigen::Vector2d>& frame_origins) {
+                   const std::vector<Eigen::Vector2d>& frame_origins,
+                   const std::vector<Segment>& clearance_lines) {
   const double margin_m = kEdgeMarginPx / view.scale_px_per_m;
   const double reach_m = core::boundingRadius(target.ellipse);
   const Eigen::Vector2d low =
@@ -120,6 +136,13 @@ HueCount countHues(const ScreenImage& image, const TopDownView& view, const Pane
       for (const Eigen::Vector2d& origin : frame_origins) {
         if ((point - origin).norm() < kAxesRadiusM) covered = true;
       }
+      // The clearance lines are drawn on top, in the warning colour, with anti-aliased edges.
+      for (const Segment& line : clearance_lines) {
+        if (distanceToSegment(point, line.a, line.b) <
+            0.5 * CollisionMarkers::kLineWidth + margin_m) {
+          covered = true;
+        }
+      }
       if (covered) continue;
       ++count.of[hueOf(image.at(x, y))];
     }
@@ -139,10 +162,11 @@ struct Verdict {
 Verdict judge(const ScreenImage& image, const TopDownView& view, const PanelRect& panel,
               const std::vector<core::NamedEllipse>& placed, const std::set<std::string>& colliding,
               const std::set<std::string>& warned,
-              const std::vector<Eigen::Vector2d>& frame_origins) {
+              const std::vector<Eigen::Vector2d>& frame_origins,
+              const std::vector<Segment>& clearance_lines) {
   Verdict verdict;
   for (const core::NamedEllipse& e : placed) {
-    const HueCount count = countHues(image, view, panel, e, placed, frame_origins);
+    const HueCount count = countHues(image, view, panel, e, placed, frame_origins, clearance_lines);
     const Hue expected = colliding.count(e.name) ? Hue::Red
                          : warned.count(e.name)  ? Hue::Yellow
                                                  : Hue::Green;
@@ -338,6 +362,16 @@ TEST(DemoInRviz, CollidingEllipsesAreRedNearOnesYellowAndClearOnesGreen) {
   for (const app::EllipseSpec& spec : config.obstacles) place(spec, core::EllipseRole::Obstacle);
   const std::vector<EllipseArray> streamed = topic_obstacles.all();
   ASSERT_FALSE(streamed.empty()) << "no message on " << nodeTopic("obstacles");
+  {
+    // The scanner's frame draws its axes too.
+    const geometry_msgs::TransformStamped t = tf_buffer.lookupTransform(
+        config.fixed_frame, streamed.back().header.frame_id, ros::Time(0));
+    frame_origins.emplace_back(t.transform.translation.x, t.transform.translation.y);
+  }
+  std::vector<Segment> clearance_lines;
+  for (const ClearancePair& pair : frozen.warnings) {
+    clearance_lines.push_back({{pair.point_a.x, pair.point_a.y}, {pair.point_b.x, pair.point_b.y}});
+  }
   for (const app::EllipseSpec& spec : fromMsg(streamed.back())) place(spec, core::EllipseRole::Obstacle);
   if (HasFatalFailure()) return;
   // The frozen state is about this geometry: checking it here finds the same colliding ellipses.
@@ -364,7 +398,7 @@ TEST(DemoInRviz, CollidingEllipsesAreRedNearOnesYellowAndClearOnesGreen) {
     panel = image.findArea({Rgb::value_type(bg[0]), Rgb::value_type(bg[1]), Rgb::value_type(bg[2])},
                            100);
     if (panel.width() < 200 || panel.height() < 200) continue;  // rviz not up yet
-    verdict = judge(image, view, panel, placed, colliding, warned, frame_origins);
+    verdict = judge(image, view, panel, placed, colliding, warned, frame_origins, clearance_lines);
     if (verdict.problems.empty() && verdict.count(Hue::Red) > 0 && verdict.count(Hue::Green) > 0) {
       break;
     }
