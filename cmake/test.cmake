@@ -156,6 +156,11 @@ ellipse_collision_add_rostest(test_bad_config test/ros/bad_config.test
 ellipse_collision_add_rostest(test_scan_obstacles test/ros/scan_obstacles.test
   test/ros/test_scan_obstacles.cpp)
 add_dependencies(test_scan_obstacles scan_obstacles)
+# The same client against launch/scan_pipeline_nodelets.launch: both nodes as nodelets in one
+# manager, and what the manager shows and refuses.
+ellipse_collision_add_rostest(test_scan_pipeline_nodelets test/ros/scan_pipeline_nodelets.test
+  test/ros/test_scan_obstacles.cpp test/ros/test_scan_pipeline_nodelets.cpp)
+add_dependencies(test_scan_pipeline_nodelets ellipse_collision_nodelets)
 
 # Issue 14: ~check_path and time to contact through the real node, against the quad oracle.
 ellipse_collision_add_rostest(test_motion test/ros/motion.test

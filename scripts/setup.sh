@@ -68,6 +68,12 @@ DEBIAN_PACKAGES=(
   # in (found by scripts/fresh_machine.sh: "No rule to make target .../libz.so")
   zlib1g-dev
   libresource-retriever-dev
+  # nodelets (launch/scan_pipeline_nodelets.launch): the Nodelet base class and its library, the
+  # load/list services, the plugin export macro, and the `nodelet` executable (manager and loader)
+  libnodeletlib-dev
+  libnodelet-dev
+  pluginlib-dev
+  libnodeletlib-tools
   # fuzzing: clang with libFuzzer and the sanitizer runtimes
   clang
   libclang-rt-14-dev
