@@ -69,11 +69,13 @@ DEBIAN_PACKAGES=(
   zlib1g-dev
   libresource-retriever-dev
   # nodelets (launch/scan_pipeline_nodelets.launch): the Nodelet base class and its library, the
-  # load/list services, the plugin export macro, and the `nodelet` executable (manager and loader)
+  # load/list services (C++ and, for rosservice, Python), the plugin export macro, and the
+  # `nodelet` executable (manager and loader)
   libnodeletlib-dev
   libnodelet-dev
   pluginlib-dev
   libnodeletlib-tools
+  python3-nodelet
   # fuzzing: clang with libFuzzer and the sanitizer runtimes
   clang
   libclang-rt-14-dev
