@@ -1,24 +1,27 @@
-// First contact under translation on the same random pairs, side by side: firstContact() vs FCL
-// 0.7's continuousCollide on fcl::Ellipsoid (z radius = the smaller radius, motion in the plane)
-// and vs sampling overlap() at 100 steps. FCL's conservative advancement has no ellipsoid entry
-// in its function table (it prints "not supported" and reports no contact; checked once and reported), so
-// the FCL figure is its naive solver (collide() at num_max_iterations = 100 time steps), the only
-// FCL solver that accepts this pair. Every benchmark carries as counters its misclassifications
+// First contact under translation on the same random pairs, side by side: firstContact() (the
+// entry of the path into the Minkowski sum), the secant method on the contact scale it replaced
+// (secantFirstContact(), reference_methods.h), FCL 0.7's continuousCollide on fcl::Ellipsoid (z
+// radius = the smaller radius, motion in the plane) and sampling overlap() at 100 steps. FCL's
+// conservative advancement has no ellipsoid entry in its function table (it prints "not
+// supported" and reports no contact; checked once and reported), so the FCL figure is its naive
+// solver (collide() at num_max_iterations = 100 time steps), the only FCL solver that accepts this
+// pair. Every benchmark carries as counters its misclassifications
 // and worst time error (relative to the horizon) against the quad-precision oracle
 // (first_contact_oracle.h), computed once before timing; a summary with the speed ratios is printed
-// at the end.
+// at the end: CPU time per pair, the median of kSummaryRounds rounds in which every method runs
+// once in turn, so that all share the machine's noise.
 //
-// Extra flag: --pairs=N (default 2000; --pairs=64 for a smoke run).
+// Extra flag: --pairs=N (default 5000; --pairs=64 for a smoke run).
 
 #include <benchmark/benchmark.h>
 #include <quadmath.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <ctime>
 #include <fcl/fcl.h>
 #include <map>
 #include <memory>
@@ -29,6 +32,7 @@
 #include "ellipse_collision/core/overlap.h"
 #include "first_contact_oracle.h"
 #include "random_source.h"
+#include "reference_methods.h"
 
 namespace ellipse_collision::core::bench {
 namespace {
@@ -37,6 +41,7 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double kHorizon = 1.0;  // [s]
 constexpr int kSteps = 100;       // sampling and FCL naive time steps
 constexpr double kBand = 1e-9;    // grazing band excluded from the misclassification count
+constexpr int kSummaryRounds = 5;
 
 struct Case {
   Ellipse a, b;
@@ -168,22 +173,28 @@ void registerMethod(const std::string& name, const std::vector<Case>& cases, Met
       ->Unit(benchmark::kMicrosecond);
 }
 
-/// Seconds per pair of `method` over all cases, measured directly for the summary.
+/// CPU seconds per pair of `method` over all cases, for the summary: whole passes over the cases
+/// for at least `min_seconds` of CPU time.
 template <typename Method>
-double secondsPerPair(const std::vector<Case>& cases, Method method) {
+double secondsPerPair(const std::vector<Case>& cases, Method method, double min_seconds) {
   int rounds = 0;
-  const auto start = std::chrono::steady_clock::now();
+  const std::clock_t start = std::clock();
   double elapsed = 0.0;
   do {
     for (std::size_t i = 0; i < cases.size(); ++i) benchmark::DoNotOptimize(method(i));
     ++rounds;
-    elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  } while (elapsed < 0.3);
+    elapsed = static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC;
+  } while (elapsed < min_seconds);
   return elapsed / (rounds * static_cast<double>(cases.size()));
 }
 
+double median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  return values[values.size() / 2];
+}
+
 int takePairsFlag(int* argc, char** argv) {
-  int pairs = 2000;
+  int pairs = 5000;
   int kept = 1;
   for (int i = 1; i < *argc; ++i) {
     if (std::strncmp(argv[i], "--pairs=", 8) == 0) {
@@ -224,30 +235,45 @@ int main(int argc, char** argv) {
     const FirstContact r = firstContact(c.a, c.ma, c.b, c.mb, kHorizon);
     return Verdict{r.contact, r.time};
   };
+  auto secant = [](std::size_t i) {
+    const Case& c = cases[i];
+    const FirstContact r = secantFirstContact(c.a, c.ma, c.b, c.mb, kHorizon);
+    return Verdict{r.contact, r.time};
+  };
   auto fcl_naive = [](std::size_t i) { return fclContact(fcl_pairs[i], fcl::CCDC_NAIVE); };
   auto sampling = [](std::size_t i) { return sampled(cases[i]); };
   registerMethod("ours", cases, ours);
+  registerMethod("secant_contact_scale", cases, secant);
   registerMethod("fcl_naive_100_steps", cases, fcl_naive);
   registerMethod("sampling_overlap_100_steps", cases, sampling);
 
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
 
-  const double t_ours = secondsPerPair(cases, ours);
-  const double t_fcl = secondsPerPair(cases, fcl_naive);
-  const double t_sampling = secondsPerPair(cases, sampling);
+  // A smoke run (few pairs) measures briefly.
+  const double min_seconds = cases.size() < 1000 ? 0.01 : 0.2;
+  std::vector<double> t_ours, t_secant, t_fcl, t_sampling;
+  for (int round = 0; round < kSummaryRounds; ++round) {
+    t_ours.push_back(secondsPerPair(cases, ours, min_seconds));
+    t_secant.push_back(secondsPerPair(cases, secant, min_seconds));
+    t_fcl.push_back(secondsPerPair(cases, fcl_naive, min_seconds));
+    t_sampling.push_back(secondsPerPair(cases, sampling, min_seconds));
+  }
   std::printf("\nSummary: %zu pairs under translation, horizon %g s, %d in contact per the oracle, "
-              "%d in the grazing band (excluded)\n",
-              cases.size(), kHorizon, contacts, in_band);
+              "%d in the grazing band (excluded); CPU time per pair, median of %d rounds\n",
+              cases.size(), kHorizon, contacts, in_band, kSummaryRounds);
   auto line = [&](const char* name, double seconds) {
     const Score& s = g_scores[name];
     std::printf("  %-28s %9.3f us/pair  misclassified %4d (missed %d, false %d)  worst |dt|/h %.3g\n",
                 name, seconds * 1e6, s.wrong, s.missed, s.false_alarms, s.worst_time_error);
   };
-  line("ours", t_ours);
-  line("fcl_naive_100_steps", t_fcl);
-  line("sampling_overlap_100_steps", t_sampling);
-  std::printf("  speed ratio: FCL / ours = %.1fx, sampling / ours = %.1fx\n", t_fcl / t_ours,
-              t_sampling / t_ours);
+  const double ours_median = median(t_ours);
+  line("ours", ours_median);
+  line("secant_contact_scale", median(t_secant));
+  line("fcl_naive_100_steps", median(t_fcl));
+  line("sampling_overlap_100_steps", median(t_sampling));
+  std::printf("  speed ratio: secant / ours = %.1fx, FCL / ours = %.1fx, sampling / ours = %.1fx\n",
+              median(t_secant) / ours_median, median(t_fcl) / ours_median,
+              median(t_sampling) / ours_median);
   return 0;
 }

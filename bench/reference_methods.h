@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "ellipse_collision/core/ellipse.h"
+#include "ellipse_collision/core/first_contact.h"
 
 namespace ellipse_collision::core::bench {
 
@@ -30,5 +31,13 @@ bool fclCollide(const FclEllipse& a, const FclEllipse& b);
 /// convex K(s) from s = 0.5 with a forward-difference gradient, a fixed learning rate and an
 /// iteration cap (the values of the demo's optimiser); collision iff min K >= 0.
 bool seedReadmeOverlap(const Ellipse& a, const Ellipse& b);
+
+/// firstContact() for a translating pair (angular velocities ignored) as the project computed it
+/// before the Minkowski-sum entry: overlap() at t = 0, then a secant iteration from the left on the
+/// convex contact scale g(t) = contactScale(a(t), b(t)), each step one contactScale() solve, with
+/// a golden-section search for g's minimum and a bisection where the secant stalls (grazing). Kept
+/// so that bench_first_contact times the old method beside the new one.
+FirstContact secantFirstContact(const Ellipse& a, const Motion& motion_a, const Ellipse& b,
+                                const Motion& motion_b, double horizon);
 
 }  // namespace ellipse_collision::core::bench

@@ -35,10 +35,10 @@ ellipse_collision_add_benchmark(bench_scene_check bench/bench_scene_check.cpp)
 # distance() beside FCL's distance query, accuracy against the quad rim oracle.
 ellipse_collision_add_benchmark(bench_distance bench/bench_distance.cpp LIBRARIES fcl)
 
-# First contact under translation beside FCL's continuousCollide and sampling overlap() at 100
-# steps, misclassifications and time errors against the quad oracle.
+# First contact under translation beside the secant method it replaced, FCL's continuousCollide
+# and sampling overlap() at 100 steps, misclassifications and time errors against the quad oracle.
 ellipse_collision_add_benchmark(bench_first_contact bench/bench_first_contact.cpp
-  test/support/first_contact_oracle.cpp LIBRARIES fcl)
+  bench/reference_methods.cpp test/support/first_contact_oracle.cpp LIBRARIES fcl)
 
 # The gate through ROS: command in to command out of the running node, beside a plain relay.
 add_executable(bench_gate_roundtrip bench/bench_gate_roundtrip.cpp)

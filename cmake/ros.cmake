@@ -7,6 +7,7 @@ add_library(ellipse_collision_ros
   src/ros/conversions.cpp
   src/ros/gate_markers.cpp
   src/ros/node_config.cpp
+  src/ros/reconfigure.cpp
   src/ros/scan_obstacles.cpp
   src/ros/tf_lookup.cpp
   src/ros/urdf_links.cpp)
@@ -15,7 +16,7 @@ target_link_libraries(ellipse_collision_ros PUBLIC ellipse_collision_app ${catki
   PRIVATE ${ASSIMP_LIBRARIES})
 target_compile_options(ellipse_collision_ros PRIVATE ${ELLIPSE_COLLISION_WARNINGS})
 add_dependencies(ellipse_collision_ros
-  ${PROJECT_NAME}_generate_messages_cpp ${catkin_EXPORTED_TARGETS})
+  ${PROJECT_NAME}_generate_messages_cpp ${PROJECT_NAME}_gencfg ${catkin_EXPORTED_TARGETS})
 
 add_executable(ellipse_collision_node src/nodes/ellipse_collision_node.cpp)
 target_link_libraries(ellipse_collision_node ellipse_collision_ros)

@@ -45,6 +45,7 @@ set(ELLIPSE_COLLISION_APP_SOURCES
   src/app/ellipse_spec.cpp
   src/app/field_error.cpp
   src/app/link_fitting.cpp
+  src/app/marker_layout.cpp
   src/app/obstacle_store.cpp
   src/app/obstacle_persistence.cpp
   src/app/obstacle_store_writer.cpp
@@ -57,4 +58,5 @@ set(ELLIPSE_COLLISION_APP_SOURCES
   src/app/placement_cache.cpp
   src/app/standing_obstacles.cpp
   src/app/stored_placement.cpp
-  src/app/transform_lookup.cpp)
+  src/app/transform_lookup.cpp
+  src/app/tunable_settings.cpp)

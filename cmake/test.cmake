@@ -86,6 +86,7 @@ ellipse_collision_add_gtest(test_app LIBRARIES ellipse_collision_app SOURCES
   test/app/test_obstacle_store_writer.cpp
   test/app/test_check_health.cpp
   test/app/test_link_fitting.cpp
+  test/app/test_marker_layout.cpp
   test/app/test_path_request.cpp)
 
 # scan_obstacles' guarantees on ray-cast scenes: coverage, free space, doorways, names, counts.
@@ -172,11 +173,22 @@ target_link_libraries(test_motion quadmath)
 add_rostest(test/ros/python_client.test
   DEPENDENCIES ellipse_collision_node ${PROJECT_NAME}_generate_messages)
 
+# dynamic_reconfigure through the real node, with Debian's dynamic_reconfigure client (Python).
+add_rostest(test/ros/reconfigure.test
+  DEPENDENCIES ellipse_collision_node ${PROJECT_NAME}_generate_messages ${PROJECT_NAME}_gencfg)
+
 # Every message and service type a user meets loads in Debian's Python (rosservice, rostopic,
 # rospy): catches a missing python3-*-msgs package in scripts/setup.sh.
 catkin_run_tests_target("python" "message_types" "python-message_types.xml"
   COMMAND "${PYTHON_EXECUTABLE} ${PROJECT_SOURCE_DIR}/test/python/check_message_types.py ${PROJECT_SOURCE_DIR} --junit ${CATKIN_TEST_RESULTS_DIR}/${PROJECT_NAME}/python-message_types.xml"
   DEPENDENCIES ${PROJECT_NAME}_generate_messages)
+
+# The Python bindings (ellipse_collision.core) against check_ellipses, closed forms and the
+# 40-digit contact scale oracle (test/support/contact_scale_oracle.py); run in the workspace's
+# environment, so `from ellipse_collision import core` finds the module in devel/.
+catkin_run_tests_target("python" "core_bindings" "python-core_bindings.xml"
+  COMMAND "${PYTHON_EXECUTABLE} ${PROJECT_SOURCE_DIR}/test/python/test_core_bindings.py ${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_BIN_DESTINATION}/check_ellipses --gtest_output=xml:${CATKIN_TEST_RESULTS_DIR}/${PROJECT_NAME}/python-core_bindings.xml"
+  DEPENDENCIES ellipse_collision_python_core check_ellipses)
 
 # ---- reliability (test/reliability): hostile requests to every service and the ~obstacles topic,
 # bad configuration files started through the launch file, the load test ----------------------
@@ -237,6 +249,7 @@ add_rostest(test/docs/doc_static.test)
 add_rostest(test/docs/doc_node_reference.test
   DEPENDENCIES ellipse_collision_node ${PROJECT_NAME}_generate_messages)
 add_rostest(test/docs/doc_tools.test DEPENDENCIES check_ellipses fit_link_ellipses)
+add_rostest(test/docs/doc_python.test DEPENDENCIES ellipse_collision_python_core)
 set(_readme_test test/docs/doc_readme.test)
 catkin_run_tests_target("rostest" "test_docs_doc_readme.test" "rostest-test_docs_doc_readme.xml"
   COMMAND "xvfb-run -a -s \"-screen 0 1280x800x24\" ${PYTHON_EXECUTABLE} /usr/bin/rostest --pkgdir=${PROJECT_SOURCE_DIR} --package=${PROJECT_NAME} --results-filename test_docs_doc_readme.xml --results-base-dir \"${CATKIN_TEST_RESULTS_DIR}\" ${PROJECT_SOURCE_DIR}/${_readme_test}"

@@ -5,7 +5,9 @@
 # polygonal iteration-cap study; then scene checks of 50 links against 100 to 100,000 obstacles
 # (us per cycle, pair tests done, growth with N); scan_obstacles' cost per 720-beam LaserScan;
 # continuous path checks of 10,000 poses x 1,000 obstacles x 20 links (issue 14, budget 100 ms);
-# one app::runCheck with the node's cache (the node's own work per call). Times are CPU times,
+# one app::runCheck with the node's cache (the node's own work per call); from Python, the
+# bindings' overlap_batch of 1,000,000 pairs beside shapely 64-gons (time and misclassifications
+# near tangency against a 40-digit oracle). Times are CPU times,
 # medians of repetitions interleaved at random, so that the methods share the machine's noise
 # within one run.
 # Last, the service round trip (issue 7): a roscore of its own on a free port, the node with
@@ -41,7 +43,7 @@ echo "Building the benchmarks (log: build/benchmark/build.txt)"
 if ! bash "${repo}/scripts/build.sh" --force-cmake -DELLIPSE_COLLISION_BENCHMARKS=ON bench_pair_tests \
     bench_scene_check bench_distance bench_first_contact bench_scan_obstacles \
     bench_service_roundtrip bench_check_path bench_run_check bench_velocity_gate \
-    bench_gate_command bench_gate_roundtrip ellipse_collision_node \
+    bench_gate_command bench_gate_roundtrip ellipse_collision_node ellipse_collision_python_core \
     > "${out}/build.txt" 2>&1; then
   cat "${out}/build.txt" >&2
   exit 1
@@ -61,19 +63,21 @@ if "${smoke}"; then
   gate_args=(--benchmark_min_time=0.01)
   roundtrip_calls=200
   gate_roundtrip_args=(--commands 100 --sizes 1000)
+  python_args=(--pairs 10000 --repetitions 1 --tangent-pairs 5)
 else
   repeat=(--benchmark_repetitions=5 --benchmark_enable_random_interleaving=true
           --benchmark_report_aggregates_only=true)
   pair_args=(--pairs_per_mix=2000 --benchmark_min_time=0.3 "${repeat[@]}")
   scene_args=(--benchmark_min_time=0.3 "${repeat[@]}")
   distance_args=(--benchmark_min_time=0.3 "${repeat[@]}")
-  contact_args=(--pairs=2000 --benchmark_min_time=0.3 "${repeat[@]}")
+  contact_args=(--pairs=5000 --benchmark_min_time=0.3 "${repeat[@]}")
   scan_args=(--benchmark_min_time=0.5 "${repeat[@]}")
   path_args=(--benchmark_min_time=0.5 "${repeat[@]}")
   run_check_args=(--benchmark_min_time=0.3 "${repeat[@]}")
   gate_args=(--benchmark_min_time=0.3 "${repeat[@]}")
   roundtrip_calls=10000
   gate_roundtrip_args=(--commands 2000 --sizes 1000,10000,100000)
+  python_args=(--pairs 1000000 --repetitions 5 --tangent-pairs 100)
 fi
 
 # Runs one benchmark program with its console output in build/benchmark/<name>.txt, shown only
@@ -102,12 +106,25 @@ echo "Running bench_distance (ns per pair; max/median relative error against the
 run bench_distance "${distance_args[@]}"
 grep -E '^(Benchmark|BM_)' "${out}/bench_distance.txt" | grep -vE '_(mean|stddev|cv)( |$)' || true
 
-# ---- firstContact() beside FCL's continuousCollide and sampling, against the quad oracle --------
+# ---- firstContact() beside the secant method it replaced, FCL's continuousCollide and sampling --
 echo
-echo "Running bench_first_contact (us per pair; misclassifications and time errors against the oracle)"
+echo "Running bench_first_contact (us per pair, new beside old; misclassifications and time errors against the oracle)"
 run bench_first_contact "${contact_args[@]}"
 grep -vE '_(mean|stddev|cv)( |$)|^(Run on|CPU|  L[123]|Load Average|\*\*\*)' "${out}/bench_first_contact.txt" \
   | grep -v '^-*$' || true
+
+# ---- Python: overlap_batch beside shapely polygons, against the 40-digit oracle near tangency ----
+echo
+echo "Running bench/bench_python_overlap.py (the Python bindings beside shapely 64-gons; a few minutes,"
+echo "about 4 GB for the million pairs' polygons)"
+# In the workspace's environment, where `from ellipse_collision import core` finds the module
+# (setup.bash reads unset variables: not under set -u).
+if ! (set +u; source "${repo}/build/ws/devel/setup.bash" &&
+      /usr/bin/python3 "${repo}/bench/bench_python_overlap.py" "${python_args[@]}") \
+    2>&1 | tee "${out}/bench_python_overlap.txt"; then
+  echo "bench_python_overlap.py failed" >&2
+  exit 1
+fi
 
 # ---- scan_obstacles: 720-beam LaserScans and a 100,000-point cloud, the old path beside the new --
 echo

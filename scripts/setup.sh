@@ -76,9 +76,24 @@ DEBIAN_PACKAGES=(
   pluginlib-dev
   libnodeletlib-tools
   python3-nodelet
+  # parameters changed while the node runs: the C++ server (cfg/*.cfg, generated at build time by
+  # its Python generator) and the Python client that rqt_reconfigure and the rostest use
+  libdynamic-reconfigure-config-init-mutex-dev
+  python3-dynamic-reconfigure
   # fuzzing: clang with libFuzzer and the sanitizer runtimes
   clang
   libclang-rt-14-dev
+  # Python bindings of the core (cmake/python.cmake, doc/python.md): pybind11 and the Python
+  # headers it compiles against (pybind11-dev does not pull them in), setuptools for setup.py;
+  # numpy for the batch functions, mpmath for the tests' 40-digit oracle, shapely for the
+  # benchmark's polygon comparison
+  pybind11-dev
+  python3-pybind11
+  python3-dev
+  python3-setuptools
+  python3-numpy
+  python3-mpmath
+  python3-shapely
   # libraries
   libeigen3-dev
   libgtest-dev

@@ -163,7 +163,7 @@ const CheckOutcome& CollisionMonitor::fullCheck(double now_s, const TransformLoo
   for (const std::string& frame : missing) missing_since_.emplace(frame, now_s);
   ++full_checks_;
   state_updated_ = true;
-  publishing_ = settings_.periodic ? publishing : StatePublishing::Always;
+  publishing_ = settings_.rate_hz > 0.0 ? publishing : StatePublishing::Always;
   return checked;
 }
 
@@ -416,6 +416,45 @@ CollisionMonitor::Health CollisionMonitor::health(double now_s) const {
   values.emplace_back("gate stops", std::to_string(gate_stops_));
   values.emplace_back("gate slow-downs", std::to_string(gate_slowdowns_));
   return report;
+}
+
+TunableSettings CollisionMonitor::tunable() const {
+  TunableSettings tunable;
+  tunable.rate_hz = settings_.rate_hz;
+  tunable.padding_m = settings_.check.global_padding_m;
+  tunable.warning_distance_m = settings_.check.rules.warning_distance;
+  tunable.prediction_horizon_s = settings_.prediction_horizon_s;
+  tunable.max_transform_age_s = settings_.check.max_transform_age_s;
+  tunable.obstacle_timeout_s = settings_.obstacle_timeout_s;
+  tunable.gate = settings_.gate;
+  tunable.gate.enabled = gate_enabled_;
+  return tunable;
+}
+
+std::optional<FieldError> CollisionMonitor::retune(const TunableSettings& tunable) {
+  if (auto invalid = findInvalidTunable(tunable)) return invalid;
+  if (tunable.gate.robot_frame != settings_.gate.robot_frame) {
+    return FieldError{"gate/robot_frame",
+                      "'" + settings_.gate.robot_frame + "' (set at start-up only)",
+                      "'" + tunable.gate.robot_frame + "'"};
+  }
+  for (const auto& [name, stored] : registry_.entries()) {
+    if (const auto invalid = findInvalidPaddedField(stored.spec, tunable.padding_m)) {
+      return FieldError{"padding",
+                        "a padding under which every stored ellipse stays valid (" +
+                            describeFieldError("'" + name + "'", *invalid) + ")",
+                        core::formatNumber(tunable.padding_m)};
+    }
+  }
+  settings_.rate_hz = tunable.rate_hz;
+  settings_.check.global_padding_m = tunable.padding_m;
+  settings_.check.rules.warning_distance = tunable.warning_distance_m;
+  settings_.prediction_horizon_s = tunable.prediction_horizon_s;
+  settings_.check.max_transform_age_s = tunable.max_transform_age_s;
+  settings_.obstacle_timeout_s = tunable.obstacle_timeout_s;
+  settings_.gate = tunable.gate;
+  gate_enabled_ = tunable.gate.enabled;
+  return std::nullopt;
 }
 
 }  // namespace ellipse_collision::app

@@ -49,6 +49,20 @@ GateAction fromCore(core::GateAction action) {
 
 }  // namespace
 
+const char* toString(OnIncomplete policy) {
+  return policy == OnIncomplete::Stop ? "stop" : "pass";
+}
+
+std::optional<FieldError> parseOnIncomplete(const std::string& text, OnIncomplete* policy) {
+  for (const OnIncomplete candidate : {OnIncomplete::Stop, OnIncomplete::Pass}) {
+    if (text == toString(candidate)) {
+      *policy = candidate;
+      return std::nullopt;
+    }
+  }
+  return FieldError{"gate/on_incomplete", "'stop' or 'pass'", "'" + text + "'"};
+}
+
 std::optional<FieldError> findInvalidGateSetting(const GateConfig& config) {
   if (config.robot_frame.empty()) {
     return FieldError{"gate/robot_frame", "a non-empty tf frame id", "''"};

@@ -8,37 +8,165 @@
 #include <utility>
 
 #include "ellipse_collision/core/distance.h"
-#include "ellipse_collision/core/eigenvalue_test.h"
 #include "ellipse_collision/core/number_format.h"
 #include "ellipse_collision/core/overlap.h"
 #include "conservative_advancement.h"
+#include "sin_cos.h"
 
 namespace ellipse_collision::core {
 namespace {
 
-// ---- translation ----------------------------------------------------------------------------
-// With both shapes fixed, b - a is the centred Minkowski sum K = A + B, and the pair overlaps at t
-// iff the gauge of K at the relative offset p(t) = p0 + w t is <= 1 (Perram & Wertheim 1985;
-// Gilitschenski & Hanebeck 2012: this gauge is the contact scale t*). A gauge is convex and p(t)
-// is affine, so g(t) = contactScale(t) is convex in t. For a convex g the line through two samples
-// t_{k-1} < t_k lies below g beyond t_k, so the secant step from two samples left of the first
-// root lands left of it again: the iteration approaches the root monotonically from the left
-// (never late), superlinearly for a transversal crossing. It starts where the bounding circles
-// first meet (no contact before) with one step the gauge's Lipschitz bound makes safe. A rise of g
-// beyond its rounding, or a secant root beyond the horizon, proves g > 1 on the rest of the
-// horizon (clear). Where the secant stalls (grazing: linear convergence; or differences within
-// rounding) a golden-section search for the minimum of the convex g and a bisection of the first
-// crossing decide, neither needing a slope.
-constexpr int kMaxSecantSteps = 60;
-constexpr int kMaxGoldenSteps = 90;
-constexpr int kMaxBisections = 80;
-// Relative error of contactScale() we allow for: ~1e-15 for round shapes, measured up to ~3e-13 for
-// thin ones near tangency (the tests only claim 1e-9). Differences of g below 4x this are noise.
-constexpr double kScaleRounding = 2.5e-12;
+// ---- translation: where the relative path enters the Minkowski sum --------------------------
+// With both shapes fixed, b - a moves on the line p(t) = p0 + w t and the pair overlaps at t iff
+// p(t) lies in the centred Minkowski sum K = A + B. K's support function is h_K = h_A + h_B with
+// h_E(u) = sqrt(u^T M_E u) (M_E = R diag(rx^2, ry^2) R^T), and its boundary point of outer normal
+// u is k(u) = s_A(u) + s_B(u), s_E(u) = M_E u / h_E(u). p(t) in K requires u . p(t) <= h_K(u)
+// for every u, so each u facing the motion (u . w < 0) bounds the entry time from below:
+//   t_in >= F(u) = (u . p0 - h_K(u)) / (-u . w),
+// the time the path crosses K's supporting line of normal u, with equality at the normal of the
+// entry point (ray casting against a Minkowski sum through support mappings: van den Bergen,
+// "Ray Casting against General Convex Objects", 2004). In the frame (d, n) of the path
+// (d = w / |w|, n = d turned +90 deg) take u(psi) = (-cos psi, sin psi), psi in [-pi/2, pi/2]:
+//   f(psi) = n . k(psi) - sigma,   sigma = n . p0,
+// rises monotonically from -h_K(n) - sigma to h_K(n) - sigma, with f'(psi) = cos psi (rho_A +
+// rho_B), rho_E = det M_E / h_E^3 the radius of curvature of E at normal u; F rises while f < 0
+// and falls after. So the line meets K iff |sigma| <= h_K(n) (closed form: the grazing decision),
+// and the entry normal is the one root of f. It is found by Newton's method safeguarded by
+// bisection (Numerical Recipes' rtsafe: bisect when the step leaves the bracket or fails to halve)
+// on s = tan(psi / 2) in [-1, 1], u taken unnormalised as (s^2 - 1, 2 s): no trigonometry in the
+// loop. The search stops when the entry is certified to `kEntryTolerance`: F at every normal
+// tried is a lower bound, and the chord between the boundary points of the bracket's ends, which
+// lies in K, crosses the path at an upper bound. The exit is the entry of the reversed path.
+constexpr int kMaxEntrySteps = 100;
+// Width of the certified interval [m] relative to |p0 . d| + h_K(n), about the rounding of F.
+constexpr double kEntryTolerance = 4.0 * std::numeric_limits<double>::epsilon();
+
+/// An ellipse in the frame (d, n) of the path: its own x axis is (c, s), its y axis (-s, c).
+struct AxesOnPath {
+  double c, s;
+  double rx2, ry2;
+};
+
+AxesOnPath axesOnPath(const Ellipse& e, const detail::SinCos& trig, const Eigen::Vector2d& d) {
+  return {trig.cos * d.x() + trig.sin * d.y(), trig.sin * d.x() - trig.cos * d.y(),
+          e.radius_x * e.radius_x, e.radius_y * e.radius_y};
+}
+
+/// For u = (ud, un) in the path frame, of any length L: h_E(u) (= L h_E(u / L)), the support point
+/// s_E(u) = (k_d, k_n), and det M_E / h_E(u)^3 (= rho_E / L^3). From the ellipse's own axes, so
+/// that a thin ellipse loses nothing to cancellation.
+struct SupportOnPath {
+  double h, k_d, k_n, curvature_radius_over_l3;
+};
+
+SupportOnPath supportOnPath(const AxesOnPath& e, double ud, double un) {
+  const double ax = ud * e.c + un * e.s;  // u . x axis
+  const double ay = un * e.c - ud * e.s;  // u . y axis
+  const double fx = e.rx2 * ax, fy = e.ry2 * ay;
+  const double h = std::sqrt(fx * ax + fy * ay);
+  const double inverse = 1.0 / h;
+  return {h, (fx * e.c - fy * e.s) * inverse, (fx * e.s + fy * e.c) * inverse,
+          e.rx2 * e.ry2 * (inverse * inverse * inverse)};
+}
+
+/// The pair in the path frame: p0 = (x0, sigma), both ellipses' axes.
+struct PathPair {
+  double x0, sigma;
+  AxesOnPath a, b;
+
+  PathPair reversed() const {
+    return {-x0, -sigma, {-a.c, -a.s, a.rx2, a.ry2}, {-b.c, -b.s, b.rx2, b.ry2}};
+  }
+  /// K's boundary point of normal u (any length).
+  Eigen::Vector2d boundaryPoint(double ud, double un) const {
+    const SupportOnPath sa = supportOnPath(a, ud, un), sb = supportOnPath(b, ud, un);
+    return {sa.k_d + sb.k_d, sa.k_n + sb.k_n};
+  }
+};
+
+/// The distance [m] along the path from p0 to where it enters K, certified to within
+/// kEntryTolerance (never more than the true one beyond rounding), or any value above `reach` [m]
+/// when the entry is beyond it. Precondition: the line meets K (|sigma| <= h_K(n)).
+double entryDistance(const PathPair& p, double reach) {
+  // The bracket's ends as normals (s) and boundary points; s = -1, 1 are the normals -n, n.
+  double lo = -1.0, hi = 1.0;
+  Eigen::Vector2d k_lo = p.boundaryPoint(0.0, -1.0), k_hi = p.boundaryPoint(0.0, 1.0);
+  // Start where the path enters the disc of K's half-width across it: exact for two circles.
+  const double width = k_hi.y();
+  const double sine = std::clamp(p.sigma / width, -1.0, 1.0);
+  // Strictly inside (-1, 1), where u . d < 0 and F is defined; the steps stay inside the bracket.
+  constexpr double kInside = 1.0 - std::numeric_limits<double>::epsilon();
+  double s = std::clamp(sine / (1.0 + std::sqrt((1.0 - sine) * (1.0 + sine))), -kInside, kInside);
+  const double tolerance = kEntryTolerance * (std::fabs(p.x0) + width);
+  double lower = -std::numeric_limits<double>::infinity();
+  double last_step = hi - lo;
+  for (int step = 0; step < kMaxEntrySteps; ++step) {
+    const double s2 = s * s;
+    const double cos_l = 1.0 - s2;  // -u . d = L cos psi, L = |u| = 1 + s^2
+    const double un = 2.0 * s;
+    const SupportOnPath sa = supportOnPath(p.a, -cos_l, un), sb = supportOnPath(p.b, -cos_l, un);
+    lower = std::max(lower, (un * p.sigma - cos_l * p.x0 - sa.h - sb.h) / cos_l);  // F |w|
+    if (lower > reach) break;
+    const Eigen::Vector2d k(sa.k_d + sb.k_d, sa.k_n + sb.k_n);
+    const double f = k.y() - p.sigma;
+    if (f == 0.0) return std::max(lower, k.x() - p.x0);  // k is the entry point
+    (f < 0.0 ? lo : hi) = s;
+    (f < 0.0 ? k_lo : k_hi) = k;
+    const double upper =
+        k_lo.x() + (p.sigma - k_lo.y()) * ((k_hi.x() - k_lo.x()) / (k_hi.y() - k_lo.y())) - p.x0;
+    if (upper - lower <= tolerance) break;
+    // df/ds = f'(psi) dpsi/ds = cos psi (rho_A + rho_B) 2 / L = 2 cos_l L (rho_A + rho_B) / L^3.
+    const double slope = 2.0 * cos_l * (1.0 + s2) *
+                         (sa.curvature_radius_over_l3 + sb.curvature_radius_over_l3);
+    double next = s - f / slope;
+    if (!(next > lo && next < hi) || std::fabs(next - s) > 0.5 * last_step) {
+      next = lo + 0.5 * (hi - lo);
+    }
+    if (!(next > lo && next < hi)) break;  // the bracket holds adjacent doubles
+    last_step = std::fabs(next - s);
+    s = next;
+  }
+  return lower;
+}
+
+FirstContact translationContact(const Ellipse& a, const Ellipse& b, const Eigen::Vector2d& w,
+                                double horizon) {
+  const double speed = std::hypot(w.x(), w.y());  // hypot: no underflow for tiny w
+  if (!(speed > 0.0)) return {};  // same velocity: the t = 0 answer holds throughout
+  // Bounding circles first: before the relative centre comes within R_a + R_b (enlarged against
+  // rounding) no contact is possible, and a path that never does is clear without trigonometry.
+  const Eigen::Vector2d p0 = b.center - a.center;
+  const double slack = 4e-15 * p0.norm();
+  const double outer = (boundingRadius(a) + boundingRadius(b)) * (1.0 + 1e-9) + slack;
+  // The unit direction of w from w scaled by a power of two (exact), so that a tiny or subnormal
+  // relative velocity keeps its full precision. Each component is scaled itself: for a subnormal
+  // w the factor 2^-ilogb alone overflows to inf (fuzzer finding).
+  const int exponent = std::ilogb(std::max(std::fabs(w.x()), std::fabs(w.y())));
+  const Eigen::Vector2d d =
+      Eigen::Vector2d(std::ldexp(w.x(), -exponent), std::ldexp(w.y(), -exponent)).normalized();
+  const double x0 = p0.dot(d);
+  const double sigma = d.x() * p0.y() - d.y() * p0.x();  // n . p0, n = (-d.y, d.x)
+  if (std::fabs(sigma) > outer) return {};  // the line stays outside the circle of radius `outer`
+  const double half_chord = std::sqrt((outer - std::fabs(sigma)) * (outer + std::fabs(sigma)));
+  if (x0 > half_chord + slack) return {};  // moving away
+  if ((-x0 - half_chord - slack) / speed > horizon) return {};
+  const detail::SinCosPair trig = detail::sinCosPair(a.angle, b.angle);
+  const PathPair path{x0, sigma, axesOnPath(a, trig.first, d), axesOnPath(b, trig.second, d)};
+  if (std::fabs(sigma) > path.boundaryPoint(0.0, 1.0).y()) return {};  // the line misses K
+  // A crossing within rounding of the horizon is at the horizon.
+  const double late = horizon * (1.0 + 4.0 * std::numeric_limits<double>::epsilon());
+  const double enter = entryDistance(path, late * speed) / speed;
+  if (enter > 0.0) {
+    if (enter > late) return {};
+    return {true, std::min(enter, horizon)};
+  }
+  // The path enters K at or before p0, yet overlap() said apart at t = 0: p0 is beyond the exit
+  // (moving away) or on the rim within rounding. The exit is the reversed path's entry.
+  if (-entryDistance(path.reversed(), std::numeric_limits<double>::infinity()) < 0.0) return {};
+  return {true, 0.0};  // touching "at 0": firstContact() moves it just after 0
+}
 
 // ---- rotation: conservative advancement (conservative_advancement.h) ----------------------
-// The translation case's first step is shrunk by the same factor.
-using detail::kStepShrink;
 
 // Everything in the frame of a's centre, so that centres 1e6 m out lose no precision.
 struct RelativePair {
@@ -59,101 +187,6 @@ struct RelativePair {
     return e;
   }
 };
-
-double scaleAt(const RelativePair& p, double t) { return contactScale(p.a, p.bAt(t)); }
-
-FirstContact contactAt(double t) { return {true, t}; }
-
-// First t in [lo, hi] with g(t) <= 1, given g(lo) > 1 and g(hi) <= 1; returns the right end of the
-// final bracket (g <= 1 there, within kScaleRounding-level of the crossing).
-double bisectCrossing(const RelativePair& p, double lo, double hi) {
-  for (int i = 0; i < kMaxBisections && hi - lo > 0.0; ++i) {
-    const double mid = lo + 0.5 * (hi - lo);
-    if (mid <= lo || mid >= hi) break;
-    (scaleAt(p, mid) <= 1.0 ? hi : lo) = mid;
-  }
-  return hi;
-}
-
-FirstContact translationContact(const RelativePair& p, double horizon) {
-  const double speed = std::hypot(p.w.x(), p.w.y());  // hypot: no underflow for tiny w
-  if (!(speed > 0.0)) return {};  // same velocity: the t = 0 answer holds throughout
-  // Bounding circles first: before the relative centre comes within R_a + R_b (enlarged against
-  // rounding) no contact is possible, and a path that never does is clear without any gauge.
-  // Distances along and across the path are formed from p0 directly (absolute rounding ~eps |p0|,
-  // covered by `slack`).
-  const Eigen::Vector2d& p0 = p.b.center;
-  const double slack = 4e-15 * p0.norm();
-  const double outer = (boundingRadius(p.a) + boundingRadius(p.b)) * (1.0 + 1e-9) + slack;
-  // The unit direction of w from w scaled by a power of two (exact), so that a tiny or subnormal
-  // relative velocity keeps its full precision.
-  const double w_max = std::max(std::fabs(p.w.x()), std::fabs(p.w.y()));
-  const Eigen::Vector2d dir = (p.w * std::ldexp(1.0, -std::ilogb(w_max))).normalized();
-  const double across = std::fabs(p0.x() * dir.y() - p0.y() * dir.x());
-  if (across > outer) return {};  // the line stays outside the circle of radius `outer`
-  const double along = -p0.dot(dir);  // [m] to the point of the line nearest the origin
-  const double half_chord = std::sqrt((outer - across) * (outer + across));
-  if ((along + half_chord + slack) / speed < 0.0) return {};  // moving away
-  const double enter = (along - half_chord - slack) / speed;  // [s], certified early
-  if (enter > horizon) return {};
-  double t_prev = std::max(0.0, enter);
-  double g_prev = scaleAt(p, t_prev);
-  if (g_prev <= 1.0) return contactAt(t_prev);  // at t = 0: overlap() and contactScale() disagree by rounding
-  // First step: the gauge of K is Lipschitz with constant 1 / (r_a + r_b) (K contains the disc of
-  // that radius), so g'(t) >= -speed / (r_a + r_b) and this step cannot pass the root.
-  const double inradius = inscribedRadius(p.a) + inscribedRadius(p.b);
-  double t = t_prev + (g_prev - 1.0) * (inradius / speed) * kStepShrink;
-  if (t > horizon) return {};
-  double g = scaleAt(p, t);
-  if (g <= 1.0) return contactAt(t);
-  for (int step = 0; step < kMaxSecantSteps; ++step) {
-    // Differences within the rounding of contactScale() prove nothing: then the search for the
-    // minimum below decides (it needs no slope).
-    const double noise = 4.0 * kScaleRounding * std::max(g, g_prev);
-    if (g - g_prev > noise) return {};  // g increasing from t on (convex): it stays > 1
-    if (g_prev - g <= noise) break;
-    // The secant of the true g through these two samples, each known to within `error`, is
-    // steepest when the fall is `error` larger at both ends, and its root is then nearest: a
-    // step to it stays left of the root even where g is nearly straight and the samples close
-    // (the plain secant overshot by 1.7e-6 of the time there: fuzzer finding).
-    const double error = kScaleRounding * std::max(g, g_prev);
-    const double fall = g_prev - g;
-    const double slope = -(fall + 2.0 * error) / (t - t_prev);
-    const double advance = std::max(0.0, g - 1.0 - error) / -slope;
-    const double next = t + advance;
-    if (next > horizon) return {};  // even the steepest secant (below g) stays > 1 to the horizon
-    if (advance <= 1e-15 * horizon || g - 1.0 <= kScaleRounding * g) return contactAt(next);
-    const double g_next = scaleAt(p, next);
-    if (g_next <= 1.0) return contactAt(next);  // landed on the root within rounding
-    t_prev = t, g_prev = g;
-    t = next, g = g_next;
-  }
-  // Grazing: golden section for the minimum of the convex g on [t, horizon]; all t' < t are
-  // certified clear already.
-  constexpr double kInvPhi = 0.6180339887498949;
-  double lo = t, hi = horizon;
-  double x1 = hi - kInvPhi * (hi - lo), x2 = lo + kInvPhi * (hi - lo);
-  double g1 = scaleAt(p, x1), g2 = scaleAt(p, x2);
-  for (int i = 0; i < kMaxGoldenSteps; ++i) {
-    if (g1 <= 1.0) return contactAt(bisectCrossing(p, lo, x1));
-    if (g2 <= 1.0) return contactAt(bisectCrossing(p, lo, x2));
-    if (g1 <= g2) {
-      hi = x2, x2 = x1, g2 = g1;
-      x1 = hi - kInvPhi * (hi - lo);
-      g1 = scaleAt(p, x1);
-    } else {
-      lo = x1, x1 = x2, g1 = g2;
-      x2 = lo + kInvPhi * (hi - lo);
-      g2 = scaleAt(p, x2);
-    }
-    if (!(hi - lo > 1e-15 * horizon)) break;
-  }
-  if (g1 <= 1.0) return contactAt(bisectCrossing(p, t, x1));
-  if (g2 <= 1.0) return contactAt(bisectCrossing(p, t, x2));
-  const double g_end = scaleAt(p, horizon);
-  if (g_end <= 1.0) return contactAt(bisectCrossing(p, t, horizon));
-  return {};
-}
 
 FirstContact rotationContact(const RelativePair& p, double horizon) {
   // Rounding of R - r is harmless: it is exact (Sterbenz) when r >= R / 2, and tiny against R.
@@ -244,20 +277,19 @@ FirstContact firstContact(const Ellipse& a, const Motion& motion_a, const Ellips
   if (orderKey(b, motion_b) < orderKey(a, motion_a)) {
     return firstContact(b, motion_b, a, motion_a, horizon);
   }
-  if (overlap(a, b)) return contactAt(0.0);
+  if (overlap(a, b)) return {true, 0.0};
   if (!(horizon > 0.0)) return {};
-  RelativePair p{a, b, motion_b.velocity - motion_a.velocity, motion_a.angular_velocity,
-                 motion_b.angular_velocity};
-  p.a.center = Eigen::Vector2d::Zero();
-  p.b.center = b.center - a.center;
   // A spinning circle sweeps nothing: such pairs translate, and the exact method applies.
-  const bool a_turns = p.wa != 0.0 && p.a.radius_x != p.a.radius_y;
-  const bool b_turns = p.wb != 0.0 && p.b.radius_x != p.b.radius_y;
+  const bool a_turns = motion_a.angular_velocity != 0.0 && a.radius_x != a.radius_y;
+  const bool b_turns = motion_b.angular_velocity != 0.0 && b.radius_x != b.radius_y;
   FirstContact contact;
   if (!a_turns && !b_turns) {
-    p.wa = p.wb = 0.0;
-    contact = translationContact(p, horizon);
+    contact = translationContact(a, b, motion_b.velocity - motion_a.velocity, horizon);
   } else {
+    RelativePair p{a, b, motion_b.velocity - motion_a.velocity, motion_a.angular_velocity,
+                   motion_b.angular_velocity};
+    p.a.center = Eigen::Vector2d::Zero();
+    p.b.center = b.center - a.center;
     contact = rotationContact(p, horizon);
   }
   // overlap() said they are apart at t = 0; a pair whose contact scale there is within rounding

@@ -1,9 +1,6 @@
 #include "ellipse_collision/ros/collision_markers.h"
 
-#include <algorithm>
-#include <optional>
-#include <type_traits>
-#include <unordered_set>
+#include <utility>
 
 #include "ellipse_collision/core/ellipse_polygon.h"
 #include "ellipse_collision/ros/blank_marker.h"
@@ -12,49 +9,12 @@ namespace ellipse_collision {
 namespace {
 
 using visualization_msgs::Marker;
+using Action = app::MarkerLayout::Action;
 
-constexpr std::uint32_t kIdMask = 0x7fffffffu;  // marker ids are int32; keep them >= 0
-constexpr std::size_t kStateCount = kMarkerStates.size();
-// B's ceiling: beyond 1024 x kEllipsesPerMarker = 32,768 ellipses the buckets grow instead.
-// rviz draws each marker with a draw call of its own, some 4-7 us of its one render thread per
-// marker and frame (scripts/rviz_fps.sh --synthetic: the same 4,096 triangles in 4,096 markers
-// took all of a core at 25-30 frames/s, in 1,024 markers 57-66 % at 31), so 4,096 markers of
-// 100,000 obstacles would cost it most of a frame at 30 Hz before any triangle was drawn; larger
-// buckets re-send more per change (at 100,000 obstacles, 24 against 17 MB/s).
-constexpr std::uint32_t kMaxBuckets = 1024;
-static_assert(kMaxBuckets <= static_cast<std::uint32_t>(CollisionMarkers::kIdsPerState));
-
-std::uint32_t fnv1a(const std::string& bytes) {
-  std::uint32_t hash = 2166136261u;
-  for (const char c : bytes) {
-    hash ^= static_cast<unsigned char>(c);
-    hash *= 16777619u;
-  }
-  return hash;
-}
-
-/// One string per ordered pair of names; the length first keeps ("ab", "c") and ("a", "bc") apart.
-std::string pairKey(const std::string& name_a, const std::string& name_b) {
-  return std::to_string(name_a.size()) + ":" + name_a + name_b;
-}
-
-std::size_t stateIndex(MarkerState state) { return static_cast<std::size_t>(state); }
-
-/// The inverse of CollisionMarkers::fillId() in a namespace of `buckets` buckets: the slot
-/// (state index * B + bucket) of fill marker `id`, or none if no current slot has that id.
-std::optional<std::size_t> slotOfFillId(std::int32_t id, std::uint32_t buckets) {
-  const std::int32_t code = id / CollisionMarkers::kIdsPerState;
-  const auto bucket = static_cast<std::uint32_t>(id % CollisionMarkers::kIdsPerState);
-  const auto row = std::find_if(kMarkerStates.begin(), kMarkerStates.end(),
-                                [code](const MarkerStateStyle& r) { return r.code == code; });
-  if (row == kMarkerStates.end() || bucket >= buckets) return std::nullopt;
-  return stateIndex(row->state) * buckets + bucket;
-}
-
-void setColour(Marker& marker, float r, float g, float b, float alpha) {
-  marker.color.r = r;
-  marker.color.g = g;
-  marker.color.b = b;
+void setColour(Marker& marker, const MarkerStateStyle& style, float alpha) {
+  marker.color.r = style.r;
+  marker.color.g = style.g;
+  marker.color.b = style.b;
   marker.color.a = alpha;
 }
 
@@ -66,470 +26,80 @@ geometry_msgs::Point point(const Eigen::Vector2d& xy, double z) {
   return p;
 }
 
-bool samePoints(const std::vector<geometry_msgs::Point>& a,
-                const std::vector<geometry_msgs::Point>& b) {
-  return std::equal(a.begin(), a.end(), b.begin(), b.end(),
-                    [](const geometry_msgs::Point& p, const geometry_msgs::Point& q) {
-                      return p.x == q.x && p.y == q.y && p.z == q.z;
-                    });
-}
-
-bool sameEllipse(const core::Ellipse& a, const core::Ellipse& b) {
-  return a.center == b.center && a.radius_x == b.radius_x && a.radius_y == b.radius_y &&
-         a.angle == b.angle;
-}
-
-/// B for `count` ellipses, starting from the current `buckets`: doubled while a bucket would hold
-/// more than kEllipsesPerMarker on average, halved while it would hold fewer than a quarter of
-/// that (the gap keeps a count near a threshold from re-bucketing every cycle).
-std::uint32_t bucketsFor(std::size_t count, std::uint32_t buckets) {
-  const std::size_t per = CollisionMarkers::kEllipsesPerMarker;
-  while (count > per * buckets && buckets < kMaxBuckets) buckets *= 2;
-  while (buckets > 1 && count < per / 4 * buckets) buckets /= 2;
-  return buckets;
-}
-
 }  // namespace
 
-const char* CollisionMarkers::nameSpace(core::EllipseRole role) {
-  return role == core::EllipseRole::Link ? "links" : "obstacles";
-}
-
-const MarkerStateStyle& CollisionMarkers::style(MarkerState state) {
-  return kMarkerStates[stateIndex(state)];
-}
-
-std::int32_t CollisionMarkers::fillId(MarkerState state, std::uint32_t bucket) {
-  return style(state).code * kIdsPerState + static_cast<std::int32_t>(bucket);
-}
-
-std::int32_t CollisionMarkers::preferredId(const std::string& name_a, const std::string& name_b) {
-  return static_cast<std::int32_t>(fnv1a(pairKey(name_a, name_b)) & kIdMask);
-}
-
-std::int32_t CollisionMarkers::lineId(const std::string& key, std::int32_t preferred,
-                                     const std::map<std::string, std::int32_t>& ids_now,
-                                     const std::map<std::int32_t, Marker>& lines_now) const {
-  const auto now = ids_now.find(key);
-  if (now != ids_now.end()) return now->second;
-  const auto shown = line_ids_.find(key);
-  if (shown != line_ids_.end()) return shown->second;
-  // A new line avoids every id shown in the last update (its pair may come later in this one)
-  // and every id taken in this one.
-  std::int32_t id = preferred;
-  while (lines_shown_.count(id) || lines_now.count(id)) {
-    id = static_cast<std::int32_t>((static_cast<std::uint32_t>(id) + 1) & kIdMask);
-  }
-  return id;
-}
-
-void CollisionMarkers::noteLineDeleted(std::int32_t id) {
-  const std::uint64_t number = ++line_deletions_;
-  line_deletion_number_[id] = number;
-  line_deleted_by_number_[number] = id;
-  if (line_deleted_by_number_.size() > kSweptLineDeletions) {
-    const auto oldest = line_deleted_by_number_.begin();
-    line_deletion_number_.erase(oldest->second);
-    line_deleted_by_number_.erase(oldest);
-  }
-}
-
-std::vector<std::size_t> CollisionMarkers::ellipsesPerCell(const Layer& layer) {
-  std::vector<std::size_t> in_cell(layer.buckets, 0);
-  for (std::size_t slot = 0; slot < layer.members.size(); ++slot) {
-    in_cell[slot % layer.buckets] += layer.members[slot].size();
-  }
-  return in_cell;
-}
-
-void CollisionMarkers::recutCrowdedCells(Layer& layer, std::vector<char>& dirty) {
-  const std::uint32_t buckets = layer.buckets;
-  const std::size_t normal = std::max(layer.largest_cell_when_cut, kEllipsesPerMarker);
-  std::vector<std::size_t> in_cell = ellipsesPerCell(layer);
-  for (std::uint32_t cell = 0; cell < buckets; ++cell) {
-    if (in_cell[cell] <= 2 * normal) continue;
-    // The smallest part of the tree around the cell whose ellipses fit its cells at the normal
-    // size (the whole plane at worst): the cells under one node, a power of two from `first`.
-    std::uint32_t first = cell, count = 1;
-    std::size_t total = in_cell[cell];
-    while (count < buckets && total > count * normal) {
-      count *= 2;
-      first = cell / count * count;
-      total = 0;
-      for (std::uint32_t c = first; c < first + count; ++c) total += in_cell[c];
+void CollisionMarkers::render(const app::MarkerLayout::Changes& changes,
+                              visualization_msgs::MarkerArray& array) const {
+  array.markers.reserve(array.markers.size() + changes.fills.size() + changes.lines.size());
+  for (const app::MarkerLayout::FillChange& fill : changes.fills) {
+    Marker marker = blankMarker(fixed_frame_, stamp_, nameSpace(fill.role), fill.id);
+    if (fill.action == Action::Delete) {
+      marker.action = Marker::DELETE;
+      array.markers.push_back(std::move(marker));
+      continue;
     }
-    std::vector<Entry*> moving;
-    std::vector<Eigen::Vector2d> centres;
-    moving.reserve(total);
-    centres.reserve(total);
-    for (std::size_t state = 0; state < kStateCount; ++state) {
-      for (std::uint32_t c = first; c < first + count; ++c) {
-        const std::size_t slot = state * buckets + c;
-        for (Entry* entry : layer.members[slot]) {
-          moving.push_back(entry);
-          centres.push_back(entry->ellipse.center);
-        }
-        layer.members[slot].clear();
-        dirty[slot] = 1;  // re-sent as it is now, or DELETEd if it ends empty
-      }
-    }
-    layer.partition.recut(first, count, std::move(centres));
-    std::size_t largest = 0;
-    for (std::uint32_t c = first; c < first + count; ++c) in_cell[c] = 0;
-    for (Entry* entry : moving) {
-      // Within the part: the cuts above it did not change.
-      entry->cell = layer.partition.cellOf(entry->ellipse.center);
-      layer.members[stateIndex(entry->state) * buckets + entry->cell].push_back(entry);
-      largest = std::max(largest, ++in_cell[entry->cell]);
-    }
-    // Ellipses no cut can part (many at one point) stay crowded: that is the size to beat now,
-    // or they would be cut again on every update.
-    if (largest > 2 * normal) layer.largest_cell_when_cut = largest;
-    cell = first + count - 1;
-  }
-}
-
-Marker CollisionMarkers::emptyMarker(const std::string& ns, std::int32_t id) const {
-  return blankMarker(fixed_frame_, stamp_, ns, id);
-}
-
-std::vector<Marker> CollisionMarkers::fills(std::size_t layer,
-                                            const std::vector<char>& wanted) const {
-  const Layer& l = layers_[layer];
-  const char* ns = nameSpace(layer == 0 ? core::EllipseRole::Link : core::EllipseRole::Obstacle);
-  std::vector<Marker> markers;
-  for (std::size_t index = 0; index < wanted.size(); ++index) {
-    if (!wanted[index] || l.members[index].empty()) continue;
-    const MarkerStateStyle& s = kMarkerStates[index / l.buckets];
-    Marker marker = emptyMarker(ns, fillId(s.state, static_cast<std::uint32_t>(index % l.buckets)));
     marker.type = Marker::TRIANGLE_LIST;
     marker.action = Marker::ADD;
     // rviz scales a triangle list's vertices by `scale`.
     marker.scale.x = marker.scale.y = marker.scale.z = 1.0;
-    setColour(marker, s.r, s.g, s.b, kEllipseAlpha);
+    setColour(marker, style(fill.state), kEllipseAlpha);
     // Sized once and written in place: growing it point by point (and a vector of triangles per
     // marker before that) was a tenth of a cycle when every obstacle moves.
     std::size_t points = 0;
-    for (const Entry* entry : l.members[index]) points += core::ellipseTrianglePoints(entry->ellipse);
+    for (std::size_t i = 0; i < fill.ellipses.size(); ++i) {
+      points += core::ellipseTrianglePoints(fill.ellipses[i]);
+    }
     marker.points.resize(points);
     geometry_msgs::Point* out = marker.points.data();
-    for (const Entry* entry : l.members[index]) {
-      core::forEachTrianglePoint(entry->ellipse,
+    for (std::size_t i = 0; i < fill.ellipses.size(); ++i) {
+      core::forEachTrianglePoint(fill.ellipses[i],
                                  [&out](const Eigen::Vector2d& p) { *out++ = point(p, 0.0); });
     }
-    markers.push_back(std::move(marker));
+    array.markers.push_back(std::move(marker));
   }
-  return markers;
-}
-
-visualization_msgs::MarkerArray CollisionMarkers::update(
-    const core::Scene& placed,
-    const std::vector<core::CollidingPair>& collisions, const std::vector<core::NearPair>& warnings,
-    const std::string& fixed_frame, const ros::Time& stamp,
-    const std::set<std::string>& predicted) {
-  ++generation_;
-  fixed_frame_ = fixed_frame;
-  stamp_ = stamp;
-  std::unordered_set<std::string> colliding;
-  for (const core::CollidingPair& pair : collisions) colliding.insert({pair.name_a, pair.name_b});
-  std::unordered_set<std::string> warned;
-  for (const core::NearPair& pair : warnings) warned.insert({pair.name_a, pair.name_b});
-  // The highest-ranked state the ellipse qualifies for.
-  const auto stateOf = [&](const std::string& name) {
-    if (colliding.count(name)) return MarkerState::Collision;
-    if (predicted.count(name)) return MarkerState::Predicted;
-    if (warned.count(name)) return MarkerState::Warning;
-    return MarkerState::Free;
-  };
-  const auto layerOf = [](core::EllipseRole role) {
-    return role == core::EllipseRole::Link ? 0u : 1u;
-  };
-
-  std::array<std::size_t, kLayers> counts{};
-  for (std::size_t i = 0; i < placed.size(); ++i) {
-    if (placed.role(i) != core::EllipseRole::Query) ++counts[layerOf(placed.role(i))];
-  }
-  std::array<bool, kLayers> regroup{};
-  std::array<std::vector<char>, kLayers> dirty;  // by state index * B + cell
-  for (std::size_t layer = 0; layer < kLayers; ++layer) {
-    Layer& l = layers_[layer];
-    const std::uint32_t buckets = bucketsFor(counts[layer], l.buckets);
-    // Every marker changes (or, at the first update, none exists yet): cut anew and send all,
-    // below, once the entries are where the scene has them now.
-    regroup[layer] = buckets != l.buckets || l.members.size() != kStateCount * buckets;
-    l.buckets = buckets;
-    dirty[layer].assign(kStateCount * buckets, regroup[layer] ? 1 : 0);
-  }
-  const auto indexOf = [&](std::size_t layer, MarkerState state, std::uint32_t cell) {
-    return stateIndex(state) * layers_[layer].buckets + cell;
-  };
-  // In a layer cut anew everything is sent and grouped below: nothing to mark or move.
-  const auto markDirty = [&](std::size_t layer, MarkerState state, std::uint32_t cell) {
-    if (!regroup[layer]) dirty[layer][indexOf(layer, state, cell)] = 1;
-  };
-  const auto join = [&](std::size_t layer, Entry* entry) {
-    if (regroup[layer]) return;
-    layers_[layer].members[indexOf(layer, entry->state, entry->cell)].push_back(entry);
-  };
-  const auto leave = [&](std::size_t layer, Entry* entry) {
-    if (regroup[layer]) return;
-    std::vector<Entry*>& members =
-        layers_[layer].members[indexOf(layer, entry->state, entry->cell)];
-    const auto it = std::find(members.begin(), members.end(), entry);
-    *it = members.back();
-    members.pop_back();
-  };
-  std::array<std::size_t, kLayers> seen{};  // distinct entries met in this update
-
-  std::array<std::vector<Entry*>, kLayers> positions;
-  for (std::size_t layer = 0; layer < kLayers; ++layer) positions[layer].reserve(counts[layer]);
-  for (std::size_t i = 0; i < placed.size(); ++i) {
-    const core::EllipseRole role = placed.role(i);
-    if (role == core::EllipseRole::Query) continue;
-    const std::string& name = placed.name(i);
-    const core::Ellipse& ellipse = placed.ellipse(i);
-    const std::size_t layer = layerOf(role);
-    Layer& l = layers_[layer];
-    const std::size_t position = positions[layer].size();
-    // Scenes mostly list the same names in the same order: try last cycle's entry at this place
-    // before the hash lookup.
-    Entry* entry = position < l.by_position.size() && l.by_position[position]->name == name
-                       ? l.by_position[position]
-                       : nullptr;
-    if (!entry) {
-      const auto found = l.entries.find(name);
-      if (found != l.entries.end()) entry = &found->second;
+  for (const app::MarkerLayout::LineChange& change : changes.lines) {
+    Marker line = blankMarker(fixed_frame_, stamp_, kClearanceNamespace, change.id);
+    if (change.action == Action::Delete) {
+      line.action = Marker::DELETE;
+      array.markers.push_back(std::move(line));
+      continue;
     }
-    const MarkerState state = stateOf(name);
-    if (!entry) {
-      entry = &l.entries[name];
-      entry->name = name;
-      entry->ellipse = ellipse;
-      entry->state = state;
-      if (!regroup[layer]) entry->cell = l.partition.cellOf(ellipse.center);
-      markDirty(layer, state, entry->cell);
-      join(layer, entry);
-    } else if (regroup[layer]) {
-      entry->ellipse = ellipse;
-      entry->state = state;
-    } else if (entry->state != state || !sameEllipse(entry->ellipse, ellipse)) {
-      // An ellipse that moved into another cell leaves its old marker for that cell's.
-      const std::uint32_t cell = entry->ellipse.center == ellipse.center
-                                     ? entry->cell
-                                     : l.partition.cellOf(ellipse.center);
-      markDirty(layer, entry->state, entry->cell);
-      markDirty(layer, state, cell);
-      if (entry->state != state || entry->cell != cell) {
-        leave(layer, entry);
-        entry->state = state;
-        entry->cell = cell;
-        join(layer, entry);
-      }
-      entry->ellipse = ellipse;
-    }
-    if (entry->generation != generation_) ++seen[layer];
-    entry->generation = generation_;
-    positions[layer].push_back(entry);
-  }
-
-  visualization_msgs::MarkerArray array;
-  for (std::size_t layer = 0; layer < kLayers; ++layer) {
-    Layer& l = layers_[layer];
-    // When every entry was met in this update nothing went away: no pass over the namespace.
-    for (auto it = l.entries.begin(); seen[layer] != l.entries.size() && it != l.entries.end();) {
-      if (it->second.generation == generation_) {
-        ++it;
-        continue;
-      }
-      markDirty(layer, it->second.state, it->second.cell);
-      leave(layer, &it->second);
-      it = l.entries.erase(it);
-    }
-    l.by_position = std::move(positions[layer]);
-    if (regroup[layer]) {
-      std::vector<Eigen::Vector2d> centres;
-      centres.reserve(l.entries.size());
-      for (const auto& [name, entry] : l.entries) centres.push_back(entry.ellipse.center);
-      l.partition = core::MedianPartition(std::move(centres), l.buckets);
-      l.members.assign(kStateCount * l.buckets, {});
-      for (auto& [name, entry] : l.entries) {
-        entry.cell = l.partition.cellOf(entry.ellipse.center);
-        l.members[indexOf(layer, entry.state, entry.cell)].push_back(&entry);
-      }
-      const std::vector<std::size_t> in_cell = ellipsesPerCell(l);
-      l.largest_cell_when_cut = *std::max_element(in_cell.begin(), in_cell.end());
-    } else {
-      recutCrowdedCells(l, dirty[layer]);
-    }
-
-    std::set<std::int32_t> sent;
-    for (Marker& marker : fills(layer, dirty[layer])) {
-      sent.insert(marker.id);
-      array.markers.push_back(std::move(marker));
-    }
-    const char* ns = nameSpace(layer == 0 ? core::EllipseRole::Link : core::EllipseRole::Obstacle);
-    for (auto it = l.shown.begin(); it != l.shown.end();) {
-      const std::optional<std::size_t> slot = slotOfFillId(*it, l.buckets);
-      const bool asked = regroup[layer] || !slot || dirty[layer][*slot];
-      if (!asked || sent.count(*it)) {
-        ++it;
-        continue;
-      }
-      Marker deletion = emptyMarker(ns, *it);
-      deletion.action = Marker::DELETE;
-      array.markers.push_back(deletion);
-      it = l.shown.erase(it);
-    }
-    l.shown.insert(sent.begin(), sent.end());
-    l.ever_sent.insert(sent.begin(), sent.end());
-  }
-
-  std::map<std::int32_t, Marker> lines_now;
-  std::map<std::string, std::int32_t> ids_now;
-  for (const core::NearPair& pair : warnings) {
-    const std::string key = pairKey(pair.name_a, pair.name_b);
-    const std::int32_t id =
-        lineId(key, preferredId(pair.name_a, pair.name_b), ids_now, lines_now);
-    ids_now[key] = id;
-    Marker line = emptyMarker(kClearanceNamespace, id);
     line.type = Marker::LINE_LIST;
     line.action = Marker::ADD;
     line.scale.x = kLineWidth;
     // Just above the filled ellipses, so the line is drawn over them.
-    line.points = {point(pair.point_a, kLineHeight), point(pair.point_b, kLineHeight)};
-    const MarkerStateStyle& s = style(MarkerState::Warning);
-    setColour(line, s.r, s.g, s.b, 1.0f);
-    lines_now[line.id] = line;
+    line.points = {point(change.point_a, kLineHeight), point(change.point_b, kLineHeight)};
+    setColour(line, style(MarkerState::Warning), 1.0f);
+    array.markers.push_back(std::move(line));
   }
-  for (const auto& [id, line] : lines_now) {
-    const auto old = lines_shown_.find(id);
-    if (old == lines_shown_.end() || !samePoints(old->second.points, line.points)) {
-      array.markers.push_back(line);
-    }
-    const auto deleted = line_deletion_number_.find(id);
-    if (deleted != line_deletion_number_.end()) {  // shown again
-      line_deleted_by_number_.erase(deleted->second);
-      line_deletion_number_.erase(deleted);
-    }
-  }
-  for (const auto& [id, line] : lines_shown_) {
-    if (lines_now.count(id)) continue;
-    Marker deletion = emptyMarker(kClearanceNamespace, id);
-    deletion.action = Marker::DELETE;
-    array.markers.push_back(deletion);
-    noteLineDeleted(id);
-  }
-  lines_shown_ = std::move(lines_now);
-  line_ids_ = std::move(ids_now);
+}
+
+visualization_msgs::MarkerArray CollisionMarkers::update(
+    const core::Scene& placed, const std::vector<core::CollidingPair>& collisions,
+    const std::vector<core::NearPair>& warnings, const std::string& fixed_frame,
+    const ros::Time& stamp, const std::set<std::string>& predicted) {
+  fixed_frame_ = fixed_frame;
+  stamp_ = stamp;
+  visualization_msgs::MarkerArray array;
+  render(layout_.update(placed, collisions, warnings, predicted), array);
   return array;
 }
 
 std::size_t CollisionMarkers::appendRefresh(visualization_msgs::MarkerArray& array,
                                             double fraction) {
-  // The sweep's parts: each layer's fill ids, then the clearance ids, those shown and those
-  // deleted lately (a shown id has no deletion number, so the two never share an id).
-  constexpr std::size_t kParts = kLayers + 1;
-  const auto firstAfter = [](const auto& ordered, std::int64_t after) -> std::int64_t {
-    const auto it = after < 0 ? ordered.begin()
-                              : ordered.upper_bound(static_cast<std::int32_t>(after));
-    if (it == ordered.end()) return -1;
-    if constexpr (std::is_same_v<std::decay_t<decltype(ordered)>, std::set<std::int32_t>>) {
-      return *it;
-    } else {
-      return it->first;
-    }
-  };
-  // The part's first id after `after` (-1: none; ids are >= 0).
-  const auto nextIn = [&](std::size_t part, std::int64_t after) -> std::int64_t {
-    if (part < kLayers) return firstAfter(layers_[part].ever_sent, after);
-    const std::int64_t shown = firstAfter(lines_shown_, after);
-    const std::int64_t deleted = firstAfter(line_deletion_number_, after);
-    if (shown < 0 || deleted < 0) return std::max(shown, deleted);
-    return std::min(shown, deleted);
-  };
-  const std::size_t total = layers_[0].ever_sent.size() + layers_[1].ever_sent.size() +
-                            lines_shown_.size() + line_deletion_number_.size();
-  if (total == 0 || !(fraction > 0.0)) return 0;
-  // A long gap owes one whole sweep, not several.
-  refresh_owed_ = std::min(refresh_owed_ + std::min(fraction, 1.0) * static_cast<double>(total),
-                           static_cast<double>(total));
-  std::size_t due = static_cast<std::size_t>(refresh_owed_);
-  refresh_owed_ -= static_cast<double>(due);
-
   std::set<std::pair<std::string, std::int32_t>> in_array;
   for (const Marker& marker : array.markers) in_array.emplace(marker.ns, marker.id);
-  const auto nameSpaceOf = [](std::size_t part) -> std::string {
-    if (part == kLayers) return kClearanceNamespace;
-    return nameSpace(part == 0 ? core::EllipseRole::Link : core::EllipseRole::Obstacle);
-  };
-  // Walk the sweep: ids in order within a part, the parts in turn. An id already in `array` counts
-  // as refreshed (it goes out now anyway).
-  std::array<std::vector<std::int32_t>, kParts> chosen;
-  for (std::size_t visited = 0; due > 0 && visited < total;) {
-    const std::int64_t next = nextIn(refresh_part_, refresh_after_);
-    if (next < 0) {
-      refresh_part_ = (refresh_part_ + 1) % kParts;
-      refresh_after_ = -1;
-      continue;
-    }
-    refresh_after_ = next;
-    ++visited;
-    --due;
-    const auto id = static_cast<std::int32_t>(next);
-    if (!in_array.count({nameSpaceOf(refresh_part_), id})) chosen[refresh_part_].push_back(id);
-  }
-
-  std::size_t appended = 0;
-  const auto appendDeletion = [&](const std::string& ns, std::int32_t id) {
-    Marker deletion = emptyMarker(ns, id);
-    deletion.action = Marker::DELETE;
-    array.markers.push_back(deletion);
-    ++appended;
-  };
-  for (std::size_t layer = 0; layer < kLayers; ++layer) {
-    const Layer& l = layers_[layer];
-    std::vector<char> wanted(kStateCount * l.buckets, 0);
-    for (const std::int32_t id : chosen[layer]) {
-      if (!l.shown.count(id)) {
-        appendDeletion(nameSpaceOf(layer), id);
-        continue;
-      }
-      // A shown id is always of a current bucket (a change of B deletes the rest).
-      if (const std::optional<std::size_t> slot = slotOfFillId(id, l.buckets)) wanted[*slot] = 1;
-    }
-    for (Marker& marker : fills(layer, wanted)) {
-      array.markers.push_back(std::move(marker));
-      ++appended;
-    }
-  }
-  for (const std::int32_t id : chosen[kLayers]) {
-    const auto shown = lines_shown_.find(id);
-    if (shown == lines_shown_.end()) {
-      appendDeletion(kClearanceNamespace, id);
-      continue;
-    }
-    Marker line = shown->second;
-    line.header.stamp = stamp_;
-    array.markers.push_back(std::move(line));
-    ++appended;
-  }
-  return appended;
+  const std::size_t before = array.markers.size();
+  render(layout_.refresh(fraction, in_array), array);
+  return array.markers.size() - before;
 }
 
 visualization_msgs::MarkerArray CollisionMarkers::fullArray() const {
   visualization_msgs::MarkerArray array;
-  Marker clear = emptyMarker("", 0);
+  Marker clear = blankMarker(fixed_frame_, stamp_, "", 0);
   clear.action = Marker::DELETEALL;
   array.markers.push_back(clear);
-  for (std::size_t layer = 0; layer < kLayers; ++layer) {
-    const std::vector<char> all(kStateCount * layers_[layer].buckets, 1);
-    for (Marker& marker : fills(layer, all)) array.markers.push_back(std::move(marker));
-  }
-  for (const auto& [id, line] : lines_shown_) {
-    Marker now = line;
-    now.header.stamp = stamp_;
-    array.markers.push_back(now);
-  }
+  render(layout_.full(), array);
   return array;
 }
 

@@ -23,7 +23,7 @@ app::MonitorSettings makeMonitorSettings(const NodeConfig& config) {
   check.max_transform_age_s = config.max_transform_age_s;
   for (const auto& pair : config.allowed_pairs) check.rules.allowed.add(pair.first, pair.second);
   settings.robot_frame = config.robot_frame;
-  settings.periodic = config.rate_hz > 0.0;
+  settings.rate_hz = config.rate_hz;
   settings.obstacle_timeout_s = config.obstacle_timeout_s;
   settings.prediction_horizon_s = config.prediction_horizon_s;
   settings.obstacle_store_period_s = config.obstacle_store_period_s;
@@ -97,7 +97,8 @@ CollisionNode::CollisionNode(const ros::NodeHandle& nh, const ros::NodeHandle& p
                                       << count << " obstacle(s) from ~obstacles: the last message is "
                                       << core::formatNumber(age_s)
                                       << " s old, older than obstacle_timeout "
-                                      << core::formatNumber(config_.obstacle_timeout_s) << " s");
+                                      << core::formatNumber(monitor_->settings().obstacle_timeout_s)
+                                      << " s");
   };
   hooks.store_failed = [](const std::string& error) {
     ROS_ERROR_STREAM_THROTTLE(5.0,
@@ -137,18 +138,22 @@ CollisionNode::CollisionNode(const ros::NodeHandle& nh, const ros::NodeHandle& p
       private_nh_.advertiseService("gate/set_enabled", &CollisionNode::onSetGateEnabled, this);
   cmd_vel_sub_ = private_nh_.subscribe("cmd_vel_in", 1, &CollisionNode::onCommand, this,
                                        ros::TransportHints().tcpNoDelay());
-  if (config_.gate.cmd_vel_timeout_s > 0.0) {
-    // Checked four times per timeout: the zero goes out at most a quarter timeout late.
-    gate_watchdog_timer_ = private_nh_.createTimer(
-        ros::Duration(config_.gate.cmd_vel_timeout_s / 4.0), &CollisionNode::onGateWatchdog, this);
-  }
-
-  if (config_.rate_hz > 0.0) {
-    check_timer_ = private_nh_.createTimer(ros::Duration(1.0 / config_.rate_hz),
-                                           &CollisionNode::onTimer, this);
-  }
+  scheduleTimers();
   diagnostics_timer_ =
       private_nh_.createTimer(ros::Duration(1.0), &CollisionNode::onDiagnosticsTimer, this);
+  // The servers start from the parameters just read (they read the same keys), so their first
+  // call changes nothing.
+  check_reconfigure_ =
+      std::make_unique<dynamic_reconfigure::Server<CheckParametersConfig>>(private_nh_);
+  check_reconfigure_->setCallback(
+      [this](CheckParametersConfig& config, std::uint32_t level) {
+        onCheckReconfigure(config, level);
+      });
+  gate_reconfigure_ = std::make_unique<dynamic_reconfigure::Server<GateParametersConfig>>(
+      ros::NodeHandle(private_nh_, "gate"));
+  gate_reconfigure_->setCallback([this](GateParametersConfig& config, std::uint32_t level) {
+    onGateReconfigure(config, level);
+  });
 
   for (const std::string& skipped : config_.urdf_links_skipped) {
     ROS_INFO_STREAM("ellipse_collision: links_from_urdf skipped " << skipped);
@@ -161,6 +166,63 @@ CollisionNode::CollisionNode(const ros::NodeHandle& nh, const ros::NodeHandle& p
                   << (config_.warning_distance_m > 0.0
                           ? ", warning within " + core::formatNumber(config_.warning_distance_m) + " m"
                           : std::string()));
+}
+
+void CollisionNode::scheduleTimers() {
+  const double rate_hz = monitor_->settings().rate_hz;
+  if (rate_hz > 0.0 && check_timer_.isValid()) {
+    check_timer_.setPeriod(ros::Duration(1.0 / rate_hz));
+    check_timer_.start();
+  } else if (rate_hz > 0.0) {
+    check_timer_ =
+        private_nh_.createTimer(ros::Duration(1.0 / rate_hz), &CollisionNode::onTimer, this);
+  } else {
+    check_timer_.stop();
+  }
+  // Checked four times per timeout: the zero goes out at most a quarter timeout late.
+  const double timeout_s = monitor_->settings().gate.cmd_vel_timeout_s;
+  if (timeout_s > 0.0 && gate_watchdog_timer_.isValid()) {
+    gate_watchdog_timer_.setPeriod(ros::Duration(timeout_s / 4.0));
+    gate_watchdog_timer_.start();
+  } else if (timeout_s > 0.0) {
+    gate_watchdog_timer_ = private_nh_.createTimer(ros::Duration(timeout_s / 4.0),
+                                                   &CollisionNode::onGateWatchdog, this);
+  } else {
+    gate_watchdog_timer_.stop();
+  }
+}
+
+void CollisionNode::onCheckReconfigure(CheckParametersConfig& config, std::uint32_t /*level*/) {
+  app::TunableSettings tunable = monitor_->tunable();
+  const std::optional<app::FieldError> bound = applyCheckParameters(config, &tunable);
+  retune(bound, tunable);
+  toCheckParameters(monitor_->tunable(), &config);
+}
+
+void CollisionNode::onGateReconfigure(GateParametersConfig& config, std::uint32_t /*level*/) {
+  app::TunableSettings tunable = monitor_->tunable();
+  const std::optional<app::FieldError> bound = applyGateParameters(config, &tunable);
+  retune(bound, tunable);
+  toGateParameters(monitor_->tunable(), &config);
+}
+
+void CollisionNode::retune(const std::optional<app::FieldError>& at_bound,
+                           const app::TunableSettings& tunable) {
+  const app::TunableSettings before = monitor_->tunable();
+  // The settings' own rule first: its words name what is accepted.
+  std::optional<app::FieldError> error = app::findInvalidTunable(tunable);
+  if (!error) error = at_bound;
+  if (!error) error = monitor_->retune(tunable);
+  if (error) {
+    ROS_ERROR_STREAM("ellipse_collision: reconfigure refused, nothing changed: "
+                     << describeConfigError("parameter ~" + error->key, *error)
+                     << "; kept: " << app::describeTunable(before));
+    return;
+  }
+  const std::string changes = app::describeTunableChanges(before, monitor_->tunable());
+  if (changes.empty()) return;
+  scheduleTimers();
+  ROS_INFO_STREAM("ellipse_collision: reconfigured: " << changes);
 }
 
 app::TransformLookup CollisionNode::lookup(const ros::Time& stamp,

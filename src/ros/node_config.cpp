@@ -47,7 +47,7 @@ std::string describeValue(const XmlRpcValue& value) {
 
 [[noreturn]] void fail(const std::string& where, const std::string& key,
                        const std::string& expected, const std::string& actual) {
-  throw ConfigError(where + ", key '" + key + "': expected " + expected + ", got " + actual);
+  throw ConfigError(describeConfigError(where, {key, expected, actual}));
 }
 
 /// A number, accepting ints where a double is expected (YAML `1` is an int).
@@ -72,23 +72,23 @@ bool readBool(const XmlRpcValue& value, const std::string& where, const std::str
   return static_cast<bool&>(copy);
 }
 
+/// Renders a violation of the application layer's setting rules as a configuration error.
+void failOn(const std::optional<app::FieldError>& error, const std::string& where) {
+  if (error) fail(where, error->key, error->expected, error->actual);
+}
+
 double readNonNegative(const XmlRpcValue& value, const std::string& where, const std::string& key) {
   const double number = readNumber(value, where, key);
-  if (!std::isfinite(number) || number < 0.0) {
-    fail(where, key, "a finite number >= 0", core::formatNumber(number));
-  }
+  failOn(app::findNegativeSetting(key, number), where);
   return number;
 }
 
-/// A finite number >= 0 within [min, max] (or exactly 0 when zero_allowed, for "off"). Refused,
-/// never clamped.
+/// A finite number >= 0 within [min, max] (or exactly 0 when zero_allowed, for "off"):
+/// app::findOutsideSettingRange(). Refused, never clamped.
 double readInRange(const XmlRpcValue& value, const std::string& where, const std::string& key,
                    double min, double max, bool zero_allowed = false) {
-  const double number = readNonNegative(value, where, key);
-  if (zero_allowed && number == 0.0) return number;
-  if (const auto outside = app::findOutsideRange(key, number, min, max)) {
-    fail(where, key, std::string(zero_allowed ? "0 or " : "") + outside->expected, outside->actual);
-  }
+  const double number = readNumber(value, where, key);
+  failOn(app::findOutsideSettingRange(key, number, min, max, zero_allowed), where);
   return number;
 }
 
@@ -271,10 +271,7 @@ app::GateConfig readGate(const XmlRpcValue& value) {
   }
   if (value.hasMember("on_incomplete")) {
     const std::string policy = readString(value["on_incomplete"], where, "gate/on_incomplete");
-    if (policy != "stop" && policy != "pass") {
-      fail(where, "gate/on_incomplete", "'stop' or 'pass'", "'" + policy + "'");
-    }
-    gate.on_incomplete = policy == "stop" ? app::OnIncomplete::Stop : app::OnIncomplete::Pass;
+    failOn(app::parseOnIncomplete(policy, &gate.on_incomplete), where);
   }
   if (const auto invalid = app::findInvalidGateSetting(gate)) {
     fail(where, invalid->key, invalid->expected, invalid->actual);
@@ -283,6 +280,10 @@ app::GateConfig readGate(const XmlRpcValue& value) {
 }
 
 }  // namespace
+
+std::string describeConfigError(const std::string& where, const app::FieldError& error) {
+  return where + ", key '" + error.key + "': expected " + error.expected + ", got " + error.actual;
+}
 
 NodeConfig parseNodeConfig(const XmlRpcValue& params, const UrdfLinkFitter& fit_urdf_links) {
   XmlRpcValue root = params;

@@ -3,6 +3,7 @@
 // typed errors, one transform lookup per frame per check) driven with transforms from a table.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <map>
 #include <string>
 #include <vector>
@@ -205,7 +206,7 @@ TEST(CollisionMonitor, OnlyAFullCheckIsRecordedAndItsPublishingFollowsTheRate) {
   FrameTable frames;
   for (const bool periodic : {true, false}) {
     MonitorSettings settings = mapSettings();
-    settings.periodic = periodic;
+    settings.rate_hz = periodic ? 10.0 : 0.0;
     CollisionMonitor monitor(settings, {circle("base", "map", 0.0, 0.0, 0.1)},
                              {circle("post", "map", 0.15, 0.0, 0.1)}, {}, {});
     monitor.periodicCheck(1.0, frames.latest(), frames.at());
@@ -229,6 +230,75 @@ TEST(CollisionMonitor, OnlyAFullCheckIsRecordedAndItsPublishingFollowsTheRate) {
               periodic ? StatePublishing::OnChange : StatePublishing::Always)
         << periodic;
   }
+}
+
+TEST(CollisionMonitor, RetunedSettingsPassTheStartUpRulesAndTakeEffectAtTheNextCheck) {
+  FrameTable frames;
+  // base and post 0.1 m apart (circles of 0.1 m at x = 0 and 0.3).
+  CollisionMonitor monitor(mapSettings(), {circle("base", "map", 0.0, 0.0, 0.1)},
+                           {circle("post", "map", 0.3, 0.0, 0.1)}, {}, {});
+  EXPECT_TRUE(monitor.periodicCheck(1.0, frames.latest(), frames.at()).warnings.empty());
+
+  TunableSettings tunable = monitor.tunable();
+  EXPECT_EQ(tunable.rate_hz, 10.0);
+  tunable.warning_distance_m = 0.15;
+  EXPECT_FALSE(monitor.retune(tunable));
+  const CheckOutcome& warned = monitor.periodicCheck(2.0, frames.latest(), frames.at());
+  ASSERT_EQ(warned.warnings.size(), 1u);
+  EXPECT_NEAR(warned.warnings[0].distance, 0.1, 1e-12);
+  tunable.padding_m = 0.06;  // 0.1 + 0.06 on each side: overlapping
+  EXPECT_FALSE(monitor.retune(tunable));
+  EXPECT_EQ(monitor.periodicCheck(3.0, frames.latest(), frames.at()).collisions.size(), 1u)
+      << "a new padding re-projects the ellipses the cache held";
+
+  // Refused whole, naming the key, as at start-up; nothing changes.
+  const TunableSettings kept = monitor.tunable();
+  const auto refuse = [&](TunableSettings bad, const std::string& key, const std::string& actual) {
+    const std::optional<FieldError> error = monitor.retune(bad);
+    ASSERT_TRUE(error) << key;
+    EXPECT_EQ(error->key, key);
+    EXPECT_EQ(error->actual, actual);
+    EXPECT_EQ(describeTunable(monitor.tunable()), describeTunable(kept));
+  };
+  TunableSettings bad = kept;
+  bad.rate_hz = -1.0;
+  bad.warning_distance_m = 0.2;  // a good change beside a bad one is not taken either
+  refuse(bad, "rate", "-1");
+  bad = kept;
+  bad.rate_hz = 5000.0;
+  refuse(bad, "rate", "5000");
+  bad = kept;
+  bad.prediction_horizon_s = std::nan("");
+  refuse(bad, "prediction_horizon", "nan");
+  bad = kept;
+  bad.gate.timing.stop_time = 2.0;  // above time_before_collision
+  refuse(bad, "gate/stop_time", "2");
+  bad = kept;
+  bad.gate.robot_frame = "odom";
+  refuse(bad, "gate/robot_frame", "'odom'");
+  bad = kept;
+  bad.padding_m = core::kMaxRadius;  // base's radius would leave the core's range
+  refuse(bad, "padding", "1e+09");
+
+  // The messages the node logs.
+  TunableSettings changed = kept;
+  changed.rate_hz = 2.0;
+  changed.gate.enabled = true;
+  EXPECT_EQ(describeTunableChanges(kept, changed), "rate 10 -> 2 Hz; gate/enabled false -> true");
+  EXPECT_EQ(describeTunableChanges(kept, kept), "");
+  EXPECT_FALSE(monitor.retune(changed));
+  EXPECT_TRUE(monitor.gateEnabled());
+  EXPECT_EQ(monitor.settings().rate_hz, 2.0);
+}
+
+TEST(TunableSettings, TheRangeRuleIsTheOneTheStartUpUses) {
+  EXPECT_FALSE(findOutsideSettingRange("rate", 0.0, kMinRateHz, kMaxRateHz, true));
+  EXPECT_EQ(findOutsideSettingRange("rate", 1e-4, kMinRateHz, kMaxRateHz, true)->expected,
+            "0 or a number within [0.001, 1000]");
+  EXPECT_EQ(findOutsideSettingRange("rate", -1.0, kMinRateHz, kMaxRateHz, true)->expected,
+            "a finite number >= 0");
+  EXPECT_EQ(findNegativeSetting("warning_distance", INFINITY)->actual, "inf");
+  EXPECT_FALSE(findInvalidTunable(TunableSettings{}));
 }
 
 TEST(CollisionMonitor, ATimeJumpBackIsPassedOnAndExpiredObstaclesDropped) {

@@ -385,8 +385,13 @@ TEST(Gate, ContactWithinStopTimeStopsAndNoContactWithinTimeBeforeCollisionPasses
   EXPECT_FALSE(stop.contact.found);  // the wall stands: nothing reaches the stopped robot
   EXPECT_NEAR(stop.limiting.time, 0.17, 1e-9);
   EXPECT_NE(stop.reason.find("within stop_time 0.3 s"), std::string::npos) << stop.reason;
-  // Mutation tried: a standing contact at exactly T_b (1.7 s) capping the scale -> fails.
-  const GateResult pass = gateCommand(robotAndWall(), {1.0, 0.0, 0.0}, settings(3.0, 1.7, 0.3));
+  // Mutation tried: a standing contact at exactly T_b capping the scale -> fails. The contact time
+  // has to be exact in doubles: robotAndWall()'s 2.05 - 0.05 - 0.3 is 1.69999999999999983, below
+  // the double 1.7 by half an ulp (an exact firstContact() rounds it to the double below 1.7).
+  // Here the distance and radii are dyadic: 2 - 0.0625 - 0.25 = 1.6875 exactly.
+  const PathScene dyadic = sceneOf({link("base", ellipse(0.0, 0.0, 0.25, 0.25))},
+                                   {obstacle("wall", ellipse(2.0, 0.0, 0.0625, 3.0))}, {Motion{}});
+  const GateResult pass = gateCommand(dyadic, {1.0, 0.0, 0.0}, settings(3.0, 1.6875, 0.3));
   EXPECT_EQ(pass.action, GateAction::Pass) << pass.reason;
   EXPECT_EQ(pass.scale, 1.0);
   const GateResult away = gateCommand(robotAndWall(), {-1.0, 0.0, 0.0}, settings(3.0, 1.5, 0.3));

@@ -113,7 +113,7 @@ def static_problems():
         for line, lang, marker, body in blocks(page):
             where = "%s:%d" % (page, line)
             is_transcript = any(l.startswith("$ ") for l in body)
-            if is_transcript or lang in ("text", "cpp", "yaml", "xml"):
+            if is_transcript or lang in ("text", "cpp", "python", "yaml", "xml"):
                 continue
             if lang != "sh":
                 problems.append("%s: a block without a language and without `$ ` lines" % where)

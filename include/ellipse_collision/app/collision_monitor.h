@@ -18,6 +18,7 @@
 #include "ellipse_collision/app/path_request.h"
 #include "ellipse_collision/app/placement_cache.h"
 #include "ellipse_collision/app/transform_lookup.h"
+#include "ellipse_collision/app/tunable_settings.h"
 
 namespace ellipse_collision::app {
 
@@ -25,9 +26,10 @@ namespace ellipse_collision::app {
 struct MonitorSettings {
   CheckSettings check;
   std::string robot_frame{"base_link"};  ///< ~check_path's moving frame when a request has none
-  /// A periodic check runs (rate > 0): it publishes the state every time, and a service call's
-  /// full check only when the state changed. Without one every full check publishes.
-  bool periodic{true};
+  /// Periodic full checks [Hz]; 0 = none. With them the periodic check publishes the state every
+  /// time, and a service call's full check only when the state changed; without them every full
+  /// check publishes.
+  double rate_hz{10.0};
   double obstacle_timeout_s{0.0};    ///< ~obstacles older than this are dropped [s]; 0 = never
   double prediction_horizon_s{0.0};  ///< time-to-contact prediction [s]; 0 = off
   /// Longest wait before a change from ~obstacles reaches the store [s]; 0 = after every message.
@@ -161,6 +163,17 @@ class CollisionMonitor {
   bool storeEnabled() const { return persistence_->enabled(); }
   /// Waits until every queued store write is on disk (tests).
   void flushStore() { persistence_->flush(); }
+
+  // ---- settings that change at run time ----------------------------------------------------
+  /// The parameters dynamic_reconfigure may change, as they are now.
+  TunableSettings tunable() const;
+  /// New values for them: they pass findInvalidTunable(), gate/robot_frame stays as it is (set
+  /// at start-up only), and every stored ellipse stays valid under the new padding
+  /// (findInvalidPaddedField()). Then every value takes effect from the next check (a new padding
+  /// re-projects every ellipse), and nothing is returned; else nothing changes and the violation
+  /// names the key and value. The same rules as at start-up, so a value the node would refuse to
+  /// start with is refused here too.
+  std::optional<FieldError> retune(const TunableSettings& tunable);
 
   // ---- what the node shows ----------------------------------------------------------------
   const MonitorState& state() const { return state_; }

@@ -14,6 +14,10 @@ namespace ellipse_collision::app {
 /// What the gate does when not every stored ellipse is placed from fresh data (a frame
 /// unavailable or stale, obstacles dropped by obstacle_timeout, the robot frame unknown).
 enum class OnIncomplete { Stop, Pass };
+/// "stop" or "pass", as the `gate/on_incomplete` key spells them.
+const char* toString(OnIncomplete policy);
+/// The policy `text` names ("stop", "pass"), or a FieldError of key `gate/on_incomplete`.
+std::optional<FieldError> parseOnIncomplete(const std::string& text, OnIncomplete* policy);
 
 /// The velocity gate's parameters (the node's `gate/` keys, config/ellipse_collision.yaml).
 struct GateConfig {

@@ -61,8 +61,10 @@ std::string invalidMotionReason(const Ellipse& ellipse, const Motion& motion, do
 /// The first time t in [0, horizon] [s] at which `a` and `b`, each moving rigidly by its motion,
 /// overlap (per overlap(): a shared boundary point or containment counts). Overlap at t = 0 gives
 /// {true, 0}.
-///  - Pure translation (both angular velocities 0): exact; the time is within ~1e-12 * horizon of
-///    the true crossing where it is transversal.
+///  - Pure translation (both angular velocities 0): exact, where the relative path enters the
+///    Minkowski sum of the two ellipses (one safeguarded root on the sum's normal angle, certified
+///    from both sides); the time is within ~1e-12 * horizon of the true crossing where it is
+///    transversal, never later than it beyond rounding.
 ///  - Rotation: certified, never late (conservative advancement with the exact distance()); never
 ///    `clear` for a pair that touches (outside a 1e-9 band around grazing). The work is capped
 ///    (20000 distance() calls, ~40 ms); at the cap it reports contact at the last certified-safe

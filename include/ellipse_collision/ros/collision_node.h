@@ -1,12 +1,15 @@
 #pragma once
 
+#include <dynamic_reconfigure/server.h>
 #include <geometry_msgs/Twist.h>
 #include <ros/ros.h>
 #include <std_srvs/SetBool.h>
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_listener.h>
 
+#include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,6 +18,7 @@
 #include "ellipse_collision/app/collision_monitor.h"
 #include "ellipse_collision/ros/messages.h"
 #include "ellipse_collision/ros/node_config.h"
+#include "ellipse_collision/ros/reconfigure.h"
 #include "ellipse_collision/core/scene_check.h"
 
 namespace ellipse_collision {
@@ -62,6 +66,17 @@ class CollisionNode {
   bool onSetGateEnabled(std_srvs::SetBool::Request& request, std_srvs::SetBool::Response& response);
   /// ~cmd_vel_out, ~gate_state and ~gate_markers for one decision.
   void publishGate(const app::GateDecision& decision, const ros::Time& stamp);
+  /// dynamic_reconfigure (~ and ~gate): the request passes the monitor's rules (retune()) or is
+  /// refused whole and logged; either way `config` is set to the values in force, which the
+  /// server then reports.
+  void onCheckReconfigure(CheckParametersConfig& config, std::uint32_t level);
+  void onGateReconfigure(GateParametersConfig& config, std::uint32_t level);
+  /// Takes `tunable` (unless a value was at a slider's bound: `at_bound`), or logs why not; the
+  /// timers follow the rate and cmd_vel_timeout in force.
+  void retune(const std::optional<app::FieldError>& at_bound, const app::TunableSettings& tunable);
+  /// The periodic check at the monitor's rate (none at 0), the gate's watchdog at a quarter of its
+  /// cmd_vel_timeout (none at 0).
+  void scheduleTimers();
 
   ros::NodeHandle nh_;
   ros::NodeHandle private_nh_;
@@ -88,6 +103,8 @@ class CollisionNode {
   ros::ServiceServer gate_enable_service_;
   ros::Timer gate_watchdog_timer_;
   GateMarkers gate_markers_;
+  std::unique_ptr<dynamic_reconfigure::Server<CheckParametersConfig>> check_reconfigure_;
+  std::unique_ptr<dynamic_reconfigure::Server<GateParametersConfig>> gate_reconfigure_;
   ros::WallTimer store_timer_;  ///< writes the store when ~obstacles changed it (wall time: a
                                 ///< paused simulation clock does not hold back durability)
 

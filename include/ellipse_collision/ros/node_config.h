@@ -15,6 +15,7 @@
 #include "ellipse_collision/app/ellipse_spec.h"
 #include "ellipse_collision/app/link_fitting.h"
 #include "ellipse_collision/app/scan_obstacles.h"
+#include "ellipse_collision/app/tunable_settings.h"
 
 namespace ellipse_collision {
 
@@ -24,20 +25,12 @@ class ConfigError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// Accepted ranges of the scalar parameters (documented in config/ellipse_collision.yaml). They
-/// keep the timer period 1 / rate and the tf timeout well inside ros::Duration (+-2^31 s, 1 ns
-/// resolution), and the global padding within the core's radius range.
-constexpr double kMinRateHz = 1e-3;        ///< rate is 0 or within [kMinRateHz, kMaxRateHz]
-constexpr double kMaxRateHz = 1e3;         ///< [Hz]
-/// The one bound of every duration parameter: tf_timeout, max_transform_age, obstacle_timeout,
-/// obstacle_store_period and marker_refresh_period lie within [0, kMaxDurationS] [s] (an hour:
-/// longer is a typo, and keeps ros::Duration far from its range).
-constexpr double kMaxDurationS = 3600.0;
-
-/// prediction_horizon within [0, kMaxPredictionHorizonS] [s]: a minute ahead is far beyond what
-/// constant velocities predict well, and keeps |angular_velocity| * horizon within the core's turn
-/// limit for any turn rate a robot has.
-constexpr double kMaxPredictionHorizonS = 60.0;
+// The scalar parameters' ranges live with their rule in the application layer (the same at
+// start-up and when reconfigured).
+using app::kMaxDurationS;
+using app::kMaxPredictionHorizonS;
+using app::kMaxRateHz;
+using app::kMinRateHz;
 
 constexpr double kMaxObstaclesLimit = 1e7;   ///< max_obstacles within [1, kMaxObstaclesLimit]
 constexpr double kMaxNameLengthLimit = 1e6;  ///< max_name_length within [1, kMaxNameLengthLimit]
@@ -72,6 +65,10 @@ struct NodeConfig {
   std::vector<std::pair<std::string, std::string>> allowed_pairs;
   app::GateConfig gate;  ///< `gate/`: the velocity gate on ~cmd_vel_in (off by default)
 };
+
+/// How a configuration error reads, at start-up and when reconfigured: "<where>, key '<key>':
+/// expected <expected>, got <actual>" (where: "parameter ~rate", "links[2]").
+std::string describeConfigError(const std::string& where, const app::FieldError& error);
 
 /// Fits the link ellipses of `links_from_urdf`: the URDF in parameter `param`, the links and
 /// padding of `options`. Throws a std::runtime_error naming the parameter (or link, mesh URI) on
