@@ -55,9 +55,10 @@ std::string overlapOneToMany(const Ellipse& a, const EllipseBatch& b, std::uint8
 
 namespace detail {
 
-/// The culling code a batch test runs. Portable is plain C++ for any x86-64 (or any other
-/// processor); Avx2 is the same arithmetic four pairs at a time, for processors that have AVX2
-/// (Haswell, 2013, and later). Automatic picks Avx2 when the processor running it supports it.
+/// The culling code a batch test runs. Portable runs on any x86-64 processor (SSE2, two pairs at
+/// a time; plain C++ on other processors); Avx2 is the same arithmetic four pairs at a time, for
+/// processors that have AVX2 (Haswell, 2013, and later). Automatic picks Avx2 when the processor
+/// running it has it, so one build serves both.
 enum class BatchKernel { Automatic, Portable, Avx2 };
 
 /// Whether this processor can run BatchKernel::Avx2 (always false off x86-64).
