@@ -66,7 +66,7 @@ Columns columnsOf(const EllipseBatch& batch) {
 /// separation or where it is left open; the pairs left open are listed in `survivors`, their
 /// number returned. Without a branch per pair: a far pair and a near one cost the same.
 template <bool kOneToMany>
-std::size_t cullPortable(const Columns& a, const Columns& b, std::size_t begin, std::size_t end,
+std::size_t cullPortable(Columns a, Columns b, std::size_t begin, std::size_t end,
                          std::uint8_t* out, std::uint32_t* survivors) {
   std::size_t kept = 0;
   for (std::size_t k = begin; k < end; ++k) {
@@ -89,21 +89,28 @@ std::size_t cullPortable(const Columns& a, const Columns& b, std::size_t begin, 
 /// cullPortable() two pairs at a time in SSE2 registers, which every x86-64 processor has: the
 /// same operations on each lane, so the same bits. The remainder goes through cullPortable().
 template <bool kOneToMany>
-std::size_t cullSse2(const Columns& a, const Columns& b, std::size_t begin, std::size_t end,
+std::size_t cullSse2(Columns a, Columns b, std::size_t begin, std::size_t end,
                      std::uint8_t* out, std::uint32_t* survivors) {
   const __m128d grow = _mm_set1_pd(1.0 + detail::kCircleMargin);
   const __m128d shrink = _mm_set1_pd(1.0 - detail::kCircleMargin);
-  const auto load_a = [](const double* column, std::size_t k) {
-    return kOneToMany ? _mm_load1_pd(column) : _mm_loadu_pd(column + k);
+  // The one ellipse of a one-to-many batch, loaded once: the byte stores to `out` may alias
+  // anything, so a load inside the loop would be repeated on every step.
+  const auto one = [](const double* column) {
+    return kOneToMany ? _mm_load1_pd(column) : _mm_setzero_pd();
+  };
+  const __m128d one_x = one(a.x), one_y = one(a.y);
+  const __m128d one_bounding = one(a.bounding), one_inscribed = one(a.inscribed);
+  const auto load_a = [](__m128d one, const double* column, std::size_t k) {
+    return kOneToMany ? one : _mm_loadu_pd(column + k);
   };
   std::size_t kept = 0;
   std::size_t k = begin;
   for (; k + 2 <= end; k += 2) {
-    const __m128d dx = _mm_sub_pd(_mm_loadu_pd(b.x + k), load_a(a.x, k));
-    const __m128d dy = _mm_sub_pd(_mm_loadu_pd(b.y + k), load_a(a.y, k));
+    const __m128d dx = _mm_sub_pd(_mm_loadu_pd(b.x + k), load_a(one_x, a.x, k));
+    const __m128d dy = _mm_sub_pd(_mm_loadu_pd(b.y + k), load_a(one_y, a.y, k));
     const __m128d squared_distance = _mm_add_pd(_mm_mul_pd(dx, dx), _mm_mul_pd(dy, dy));
-    const __m128d reach = _mm_add_pd(load_a(a.bounding, k), _mm_loadu_pd(b.bounding + k));
-    const __m128d inner = _mm_add_pd(load_a(a.inscribed, k), _mm_loadu_pd(b.inscribed + k));
+    const __m128d reach = _mm_add_pd(load_a(one_bounding, a.bounding, k), _mm_loadu_pd(b.bounding + k));
+    const __m128d inner = _mm_add_pd(load_a(one_inscribed, a.inscribed, k), _mm_loadu_pd(b.inscribed + k));
     const int apart = _mm_movemask_pd(
         _mm_cmpgt_pd(squared_distance, _mm_mul_pd(_mm_mul_pd(reach, reach), grow)));
     const int inside = _mm_movemask_pd(
@@ -127,31 +134,42 @@ constexpr std::uint32_t maskBytes(int mask) {
                                     ((mask >> 3) & 1) << 24);
 }
 
-/// Four values of a column of the `a` side from pair k on, or its one value four times.
+/// The one ellipse's value of a column four times, or nothing to read (pairs i-i).
 template <bool kOneToMany>
-__attribute__((target("avx2"))) inline __m256d loadA(const double* column, std::size_t k) {
-  return kOneToMany ? _mm256_broadcast_sd(column) : _mm256_loadu_pd(column + k);
+__attribute__((target("avx2"))) inline __m256d oneOf(const double* column) {
+  return kOneToMany ? _mm256_broadcast_sd(column) : _mm256_setzero_pd();
+}
+
+/// Four values of a column of the `a` side from pair k on, or `one`, its one ellipse's value
+/// four times (loaded once, as in cullSse2()).
+template <bool kOneToMany>
+__attribute__((target("avx2"))) inline __m256d loadA(__m256d one, const double* column,
+                                                     std::size_t k) {
+  return kOneToMany ? one : _mm256_loadu_pd(column + k);
 }
 
 /// cullPortable() four pairs at a time in AVX2 registers: the same multiplications, additions
 /// and comparisons on each lane (no fused multiply-add: target "avx2" alone does not enable FMA,
 /// which would round differently), so the same bits. The remainder goes through cullPortable().
 template <bool kOneToMany>
-__attribute__((target("avx2"))) std::size_t cullAvx2(const Columns& a, const Columns& b,
+__attribute__((target("avx2"))) std::size_t cullAvx2(Columns a, Columns b,
                                                      std::size_t begin, std::size_t end,
                                                      std::uint8_t* out,
                                                      std::uint32_t* survivors) {
   const __m256d grow = _mm256_set1_pd(1.0 + detail::kCircleMargin);
   const __m256d shrink = _mm256_set1_pd(1.0 - detail::kCircleMargin);
+  const __m256d one_x = oneOf<kOneToMany>(a.x), one_y = oneOf<kOneToMany>(a.y);
+  const __m256d one_bounding = oneOf<kOneToMany>(a.bounding);
+  const __m256d one_inscribed = oneOf<kOneToMany>(a.inscribed);
   std::size_t kept = 0;
   std::size_t k = begin;
   for (; k + 4 <= end; k += 4) {
-    const __m256d dx = _mm256_sub_pd(_mm256_loadu_pd(b.x + k), loadA<kOneToMany>(a.x, k));
-    const __m256d dy = _mm256_sub_pd(_mm256_loadu_pd(b.y + k), loadA<kOneToMany>(a.y, k));
+    const __m256d dx = _mm256_sub_pd(_mm256_loadu_pd(b.x + k), loadA<kOneToMany>(one_x, a.x, k));
+    const __m256d dy = _mm256_sub_pd(_mm256_loadu_pd(b.y + k), loadA<kOneToMany>(one_y, a.y, k));
     const __m256d squared_distance = _mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy));
-    const __m256d reach = _mm256_add_pd(loadA<kOneToMany>(a.bounding, k), _mm256_loadu_pd(b.bounding + k));
+    const __m256d reach = _mm256_add_pd(loadA<kOneToMany>(one_bounding, a.bounding, k), _mm256_loadu_pd(b.bounding + k));
     const __m256d inner =
-        _mm256_add_pd(loadA<kOneToMany>(a.inscribed, k), _mm256_loadu_pd(b.inscribed + k));
+        _mm256_add_pd(loadA<kOneToMany>(one_inscribed, a.inscribed, k), _mm256_loadu_pd(b.inscribed + k));
     const int apart = _mm256_movemask_pd(_mm256_cmp_pd(
         squared_distance, _mm256_mul_pd(_mm256_mul_pd(reach, reach), grow), _CMP_GT_OQ));
     const int inside = _mm256_movemask_pd(_mm256_cmp_pd(
