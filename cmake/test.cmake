@@ -24,6 +24,7 @@ ellipse_collision_add_gtest(test_core LIBRARIES ellipse_collision_core quadmath 
   test/core/test_polygonal_test.cpp
   test/core/test_overlap_accuracy.cpp
   test/core/test_early_outs.cpp
+  test/core/test_batch_overlap.cpp
   test/core/test_pair_line_parser.cpp
   test/core/test_motion_line_parser.cpp
   test/core/test_unique_names.cpp
