@@ -37,34 +37,61 @@ namespace ellipse_collision::core::detail {
 // band and reported in contact at t. Otherwise the steps go on.
 namespace {
 
-// The separation along a fixed unit u at the current poses and its rate, with a bound on its
-// rounding error.
+// The separation along a fixed unit u at the current poses, its rates in time and in the angle of
+// u, with a bound on its rounding error.
 struct SeparationAlong {
   double value, rate, rounding;
+  double slope, curvature;  // d/dphi, d2/dphi2 of the value, phi the angle of u
 };
 
-struct SupportRate {
-  double h, dh_dangle;
+struct SupportRates {
+  double h, dh_dangle, curvature_radius;
 };
 
-SupportRate supportAndRate(const Ellipse& e, const SinCos& trig, const Eigen::Vector2d& u) {
-  const double ax = u.x() * trig.cos + u.y() * trig.sin;   // u . x axis
-  const double ay = u.y() * trig.cos - u.x() * trig.sin;   // u . y axis
+SupportRates supportRates(const Ellipse& e, const SinCos& trig, const Eigen::Vector2d& u) {
+  const double ax = u.x() * trig.cos + u.y() * trig.sin;  // u . x axis
+  const double ay = u.y() * trig.cos - u.x() * trig.sin;  // u . y axis
   const double rx2 = e.radius_x * e.radius_x, ry2 = e.radius_y * e.radius_y;
   const double h = std::sqrt(rx2 * ax * ax + ry2 * ay * ay);
-  // d(ax)/dangle = ay, d(ay)/dangle = -ax.
-  return {h, (rx2 - ry2) * ax * ay / h};
+  // d(ax)/dangle = ay, d(ay)/dangle = -ax; turning u by phi is turning the shape by -phi.
+  return {h, (rx2 - ry2) * ax * ay / h, rx2 * ry2 / (h * h * h)};
 }
 
-SeparationAlong separationAlong(const Ellipse& a, const Ellipse& b, const RotatingPair& p,
-                                const Eigen::Vector2d& u) {
-  const SinCosPair trig = sinCosPair(a.angle, b.angle);
-  const SupportRate sa = supportAndRate(a, trig.first, u);
-  const SupportRate sb = supportAndRate(b, trig.second, u);
-  const double along = u.dot(b.center - a.center);
+SeparationAlong separationAlong(const SinCosPair& trig, const Ellipse& a, const Ellipse& b,
+                                const RotatingPair& p, const Eigen::Vector2d& u) {
+  const SupportRates sa = supportRates(a, trig.first, u);
+  const SupportRates sb = supportRates(b, trig.second, u);
+  const Eigen::Vector2d centres = b.center - a.center;
+  const double along = u.dot(centres);
+  const double across = u.x() * centres.y() - u.y() * centres.x();  // (u turned +90 deg) . p
   constexpr double kEps = std::numeric_limits<double>::epsilon();
-  return {along - sa.h - sb.h, u.dot(p.w) - p.wa * sa.dh_dangle - p.wb * sb.dh_dangle,
-          16.0 * kEps * (std::fabs(along) + sa.h + sb.h)};
+  const double value = along - sa.h - sb.h;
+  // h'' = rho - h for a support function of the normal angle, so f'' = -f - rho_a - rho_b.
+  return {value, u.dot(p.w) - p.wa * sa.dh_dangle - p.wb * sb.dh_dangle,
+          16.0 * kEps * (std::fabs(along) + sa.h + sb.h), across + sa.dh_dangle + sb.dh_dangle,
+          -value - sa.curvature_radius - sb.curvature_radius};
+}
+
+// The distance's witness direction is accurate to ~1e-9 relative only down to gaps of ~1e-6 of
+// the radii (distance.h); closer, its error costs the lower bound more than the gap itself. A
+// few Newton steps on the angle of u (f is concave there) restore it; any u gives a valid bound,
+// and the best one tried is kept.
+constexpr int kDirectionSteps = 3;
+
+SeparationAlong bestSeparation(const Ellipse& a, const Ellipse& b, const RotatingPair& p,
+                               Eigen::Vector2d u) {
+  const SinCosPair trig = sinCosPair(a.angle, b.angle);
+  SeparationAlong best = separationAlong(trig, a, b, p, u);
+  SeparationAlong current = best;
+  for (int i = 0; i < kDirectionSteps && current.curvature < 0.0; ++i) {
+    const double turn = -current.slope / current.curvature;
+    if (!(std::fabs(turn) < 0.5)) break;
+    const double c = std::cos(turn), s = std::sin(turn);
+    u = Eigen::Vector2d(c * u.x() - s * u.y(), s * u.x() + c * u.y());
+    current = separationAlong(trig, a, b, p, u);
+    if (current.value - current.rounding > best.value - best.rounding) best = current;
+  }
+  return best;
 }
 
 /// The positive root of value + rate s - curvature s^2 / 2 (value > 0, curvature > 0).
@@ -120,7 +147,7 @@ FirstContact rotatingContact(const RotatingPair& p, double horizon, RotationWork
     const Eigen::Vector2d gap = c.point_b - c.point_a;
     const double gap_length = gap.norm();
     if (second_order && gap_length > 0.0) {
-      const SeparationAlong s = separationAlong(a, b, p, gap / gap_length);
+      const SeparationAlong s = bestSeparation(a, b, p, gap / gap_length);
       const double value = s.value - s.rounding;
       if (value > 0.0) step = std::max(step, kStepShrink * quadraticStep(value, s.rate, curvature));
     }
