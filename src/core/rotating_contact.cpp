@@ -132,9 +132,10 @@ FirstContact rotatingContact(const RotatingPair& p, double horizon, RotationWork
       std::fabs(p.wb) * (boundingRadius(p.b) - inscribedRadius(p.b));
   if (!(approach_speed > 0.0)) return {};
   const double curvature = sweepCurvature(p.a, p.wa) + sweepCurvature(p.b, p.wb);
-  // A curvature bound below the normal range (an angular velocity whose square underflows) is
-  // not trusted: then the steps are the plain ones.
-  const bool second_order = curvature >= std::numeric_limits<double>::min();
+  // A curvature bound below the normal range (an angular velocity whose square underflows) or
+  // overflowed is not trusted: then the steps are the plain ones.
+  const bool second_order = curvature >= std::numeric_limits<double>::min() &&
+                            curvature <= std::numeric_limits<double>::max();
   const double graze = kGrazeDistance * (inscribedRadius(p.a) + inscribedRadius(p.b));
   const double resolution = kRotationResolution * horizon;
   double t = 0.0;
@@ -143,6 +144,8 @@ FirstContact rotatingContact(const RotatingPair& p, double horizon, RotationWork
     const Clearance c = distance(a, b);
     ++done.distance_calls;
     if (!c.separated) return {true, t};
+    // Plain steps cannot resolve a grazing band; they stop there, as conservative_advancement.h.
+    if (!second_order && c.distance <= graze) return {true, t};
     double step = c.distance * kStepShrink / approach_speed;
     const Eigen::Vector2d gap = c.point_b - c.point_a;
     const double gap_length = gap.norm();
