@@ -28,6 +28,7 @@ set(ELLIPSE_COLLISION_CORE_SOURCES
   src/core/polygonal_test.cpp
   src/core/prepared_ellipse.cpp
   src/core/relative_shape.cpp
+  src/core/rotating_contact.cpp
   src/core/scene.cpp
   src/core/scene_check.cpp
   src/core/scene_entry_ref.cpp

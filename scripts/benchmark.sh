@@ -107,8 +107,10 @@ run bench_distance "${distance_args[@]}"
 grep -E '^(Benchmark|BM_)' "${out}/bench_distance.txt" | grep -vE '_(mean|stddev|cv)( |$)' || true
 
 # ---- firstContact() beside the secant method it replaced, FCL's continuousCollide and sampling --
+# ---- and, for rotating pairs, beside the plain conservative advancement it replaced --------------
 echo
-echo "Running bench_first_contact (us per pair, new beside old; misclassifications and time errors against the oracle)"
+echo "Running bench_first_contact (us per pair, new beside old, translating and rotating mixes;"
+echo "misclassifications, time errors against the oracle, distance() calls and pairs at the step cap)"
 run bench_first_contact "${contact_args[@]}"
 grep -vE '_(mean|stddev|cv)( |$)|^(Run on|CPU|  L[123]|Load Average|\*\*\*)' "${out}/bench_first_contact.txt" \
   | grep -v '^-*$' || true
