@@ -11,7 +11,13 @@
 // at the end: CPU time per pair, the median of kSummaryRounds rounds in which every method runs
 // once in turn, so that all share the machine's noise.
 //
-// Extra flag: --pairs=N (default 5000; --pairs=64 for a smoke run).
+// Then a rotating mix (makeRotatingCases()): firstContact()'s second-order steps beside the plain
+// conservative advancement it replaced (plainAdvancementFirstContact(), reference_methods.h),
+// timed in alternating rounds, with each method's distance() calls, pairs at its step cap, and
+// how early or late it answers against the oracle.
+//
+// Extra flag: --pairs=N (default 5000; --pairs=64 for a smoke run, which also shrinks the
+// rotating mix to 28 pairs).
 
 #include <benchmark/benchmark.h>
 #include <quadmath.h>
@@ -33,6 +39,8 @@
 #include "first_contact_oracle.h"
 #include "random_source.h"
 #include "reference_methods.h"
+#include "conservative_advancement.h"
+#include "rotating_contact.h"
 
 namespace ellipse_collision::core::bench {
 namespace {
@@ -193,6 +201,151 @@ double median(std::vector<double> values) {
   return values[values.size() / 2];
 }
 
+// ---- rotating mix: the second-order steps beside plain conservative advancement ---------------
+// Two families, horizon 1 s: the benchmark's pairs with both ellipses turning at up to 3 rad/s
+// (oracle: the quad gauge scanned at 2000 samples and bisected), and an eccentric ellipse (axis
+// ratio 2..20) spinning in place whose tip passes a disc at a gap of +-1e-6, +-1e-8 or +-3e-9 of
+// R + rho, the pairs that brought plain advancement to its cap (oracle: the gap's sign, and the
+// quad gauge bisected on the quarter turn before the tip points at the disc).
+constexpr int kRotationSamples = 2000;
+
+std::vector<Case> makeRotatingCases(int mixed, int grazing) {
+  ellipse_collision::test::RandomSource r(2025);
+  std::vector<Case> cases;
+  while (static_cast<int>(cases.size()) < mixed) {
+    auto ellipse = [&]() {
+      const double major = r.logUniform(0.05, 2.0), minor = major / r.logUniform(1.0, 100.0);
+      const bool x_major = r.coin();
+      return Ellipse{{0, 0}, x_major ? major : minor, x_major ? minor : major, r.uniform(-kPi, kPi)};
+    };
+    Ellipse a = ellipse(), b = ellipse();
+    a.center = {r.uniform(-5, 5), r.uniform(-5, 5)};
+    const double phi = r.uniform(-kPi, kPi);
+    b.center = a.center + Eigen::Vector2d(std::cos(phi), std::sin(phi)) * r.uniform(3.0, 8.0);
+    const Eigen::Vector2d aim = a.center + Eigen::Vector2d(r.uniform(-2, 2), r.uniform(-2, 2));
+    const Motion ma{{r.uniform(-1, 1), r.uniform(-1, 1)}, r.uniform(-3, 3)};
+    const Motion mb{ma.velocity + (aim - b.center) * r.uniform(0.8, 2.0), r.uniform(-3, 3)};
+    if (!invalidMotionReason(a, ma, b, mb, kHorizon).empty()) continue;
+    const auto o = test::oracleFirstContact(a, ma, b, mb, kHorizon, kRotationSamples);
+    cases.push_back({a, b, ma, mb, o.contact, static_cast<double>(o.time),
+                     fabsq(o.min_scale - 1) <= kBand});
+  }
+  constexpr double kGaps[] = {1e-6, 1e-8, 3e-9};
+  for (int i = 0; i < grazing; ++i) {
+    const double major = r.logUniform(0.1, 10.0), minor = major / r.logUniform(2.0, 20.0);
+    const bool x_major = r.coin(), touching = (i / 3) % 2;
+    Ellipse a{{r.uniform(-100, 100), r.uniform(-100, 100)}, x_major ? major : minor,
+              x_major ? minor : major, 0.0};
+    const double rho = major * r.logUniform(0.2, 2.0), phi = r.uniform(-kPi, kPi);
+    const double gap = (touching ? -1.0 : 1.0) * kGaps[i % 3] * (major + rho);
+    const Ellipse b{a.center + Eigen::Vector2d(std::cos(phi), std::sin(phi)) * (major + rho + gap),
+                    rho, rho, 0.0};
+    const double omega = (r.coin() ? 1.0 : -1.0) * r.uniform(0.5, 3.0);
+    const double t_tip = r.uniform(0.2, 0.5);  // |omega| t_tip < pi / 2
+    a.angle = phi - omega * t_tip - (x_major ? 0.0 : kPi / 2);
+    const Motion ma{{0, 0}, omega}, mb{{0, 0}, 0.0};
+    __float128 time = 0;
+    if (touching) {
+      __float128 lo = 0, hi = t_tip;
+      for (int k = 0; k < 100; ++k) {
+        const __float128 mid = (lo + hi) / 2;
+        (test::oracleScaleAt(a, ma, b, mb, mid) <= 1 ? hi : lo) = mid;
+      }
+      time = hi;
+    }
+    cases.push_back({a, b, ma, mb, touching, static_cast<double>(time), false});
+  }
+  return cases;
+}
+
+/// One rotating method's accuracy (never late, how early) and work against the oracle.
+struct RotationScore {
+  int wrong = 0, false_alarms = 0, capped = 0;
+  double worst_early = 0.0, worst_late = 0.0;  // (oracle - ours) / horizon, (ours - oracle) / h
+  double mean_calls = 0.0;
+  int most_calls = 0;
+};
+
+/// `method(i, &calls)` answers case i and reports its distance() calls.
+template <typename Method>
+RotationScore scoreRotation(const std::vector<Case>& cases, Method method, int cap) {
+  RotationScore s;
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    int calls = 0;
+    const Verdict v = method(i, &calls);
+    s.mean_calls += calls;
+    s.most_calls = std::max(s.most_calls, calls);
+    s.capped += calls >= cap;
+    const Case& c = cases[i];
+    if (c.in_band) continue;
+    if (v.contact != c.oracle_contact) {
+      ++s.wrong;
+      s.false_alarms += v.contact;
+    } else if (v.contact) {
+      const double error = (v.time - c.oracle_time) / kHorizon;
+      s.worst_late = std::max(s.worst_late, error);
+      s.worst_early = std::max(s.worst_early, -error);
+    }
+  }
+  s.mean_calls /= static_cast<double>(cases.size());
+  return s;
+}
+
+/// The rotating mix: both methods timed in alternating rounds, then one table.
+void compareRotation(int mixed, int grazing, double min_seconds) {
+  static std::vector<Case> cases;
+  cases = makeRotatingCases(mixed, grazing);
+  int contacts = 0, in_band = 0;
+  for (const Case& c : cases) contacts += c.oracle_contact, in_band += c.in_band;
+  auto counted_new = [](std::size_t i, int* calls) {
+    const Case& c = cases[i];
+    const FirstContact r = firstContact(c.a, c.ma, c.b, c.mb, kHorizon);
+    // The same pair through the rotating path directly, for its distance() count.
+    detail::RotatingPair p{c.a, c.b, c.mb.velocity - c.ma.velocity, c.ma.angular_velocity,
+                           c.mb.angular_velocity};
+    p.a.center = Eigen::Vector2d::Zero();
+    p.b.center = c.b.center - c.a.center;
+    detail::RotationWork work;
+    if (!overlap(c.a, c.b)) detail::rotatingContact(p, kHorizon, &work);
+    *calls = work.capped ? detail::kMaxRotationSteps : work.distance_calls;
+    return Verdict{r.contact, r.time};
+  };
+  auto counted_old = [](std::size_t i, int* calls) {
+    const Case& c = cases[i];
+    const FirstContact r = plainAdvancementFirstContact(c.a, c.ma, c.b, c.mb, kHorizon, calls);
+    return Verdict{r.contact, r.time};
+  };
+  const RotationScore s_new = scoreRotation(cases, counted_new, detail::kMaxRotationSteps);
+  const RotationScore s_old = scoreRotation(cases, counted_old, detail::kMaxAdvancements);
+  auto timed_new = [](std::size_t i) {
+    const Case& c = cases[i];
+    return firstContact(c.a, c.ma, c.b, c.mb, kHorizon);
+  };
+  auto timed_old = [](std::size_t i) {
+    const Case& c = cases[i];
+    return plainAdvancementFirstContact(c.a, c.ma, c.b, c.mb, kHorizon);
+  };
+  std::vector<double> t_new, t_old;
+  for (int round = 0; round < kSummaryRounds; ++round) {
+    t_new.push_back(secondsPerPair(cases, timed_new, min_seconds));
+    t_old.push_back(secondsPerPair(cases, timed_old, min_seconds));
+  }
+  std::printf("\nRotating mix: %d pairs of the benchmark's kind turning at up to 3 rad/s and %d "
+              "eccentric tips grazing a disc (gaps +-1e-6, +-1e-8, +-3e-9), horizon %g s; %d in "
+              "contact per the oracle, %d in the grazing band (excluded); CPU time per pair, median "
+              "of %d rounds\n",
+              mixed, grazing, kHorizon, contacts, in_band, kSummaryRounds);
+  auto line = [](const char* name, double seconds, const RotationScore& s) {
+    std::printf("  %-30s %9.3f us/pair  distance() calls mean %7.1f max %5d, at the cap %3d  "
+                "misclassified %d (false %d)  worst early %.3g, worst late %.3g (of h)\n",
+                name, seconds * 1e6, s.mean_calls, s.most_calls, s.capped, s.wrong,
+                s.false_alarms, s.worst_early, s.worst_late);
+  };
+  line("ours (second-order steps)", median(t_new), s_new);
+  line("plain advancement (before)", median(t_old), s_old);
+  std::printf("  speed ratio: before / ours = %.1fx\n", median(t_old) / median(t_new));
+}
+
 int takePairsFlag(int* argc, char** argv) {
   int pairs = 5000;
   int kept = 1;
@@ -275,5 +428,7 @@ int main(int argc, char** argv) {
   std::printf("  speed ratio: secant / ours = %.1fx, FCL / ours = %.1fx, sampling / ours = %.1fx\n",
               median(t_secant) / ours_median, median(t_fcl) / ours_median,
               median(t_sampling) / ours_median);
+  // A smoke run keeps the rotating mix small too (its oracle scans 2000 samples per pair).
+  compareRotation(cases.size() < 1000 ? 16 : 300, cases.size() < 1000 ? 12 : 60, min_seconds);
   return 0;
 }

@@ -1,4 +1,6 @@
-// Pair tests on the same stored pairs, one benchmark per (method, mix): ours (plain and prepared),
+// Pair tests on the same stored pairs, one benchmark per (method, mix): ours (plain and prepared,
+// and the batch tests with each culling kernel: a scene-like mix's links each against all its
+// obstacles with overlapOneToMany(), the other mixes' pairs with overlapBatch()),
 // the eigenvalue and polygonal tests alone, FCL 0.7 and the seed README's method, and overlap()
 // with polygonal caps 0..8. Each method keeps what it needs per ellipse (prepared ellipses, FCL
 // objects) built before timing; the scene-like pairs share one scene's ellipses. Every benchmark
@@ -26,6 +28,7 @@
 
 #include "bench_scenes.h"
 #include "contact_scale_quartic.h"
+#include "ellipse_collision/core/batch_overlap.h"
 #include "eigenvalue_test_detail.h"
 #include "ellipse_collision/core/eigenvalue_test.h"
 #include "ellipse_collision/core/overlap.h"
@@ -85,7 +88,50 @@ struct MixData {
   PairMix mix;
   std::vector<PreparedEllipse> prepared;
   std::vector<FclEllipse> fcl;
+  // The batch tests' input: for a scene-like mix the obstacles in `second` (each link against
+  // all of them, overlapOneToMany()); otherwise each pair's ellipses in `first` and `second`.
+  EllipseBatch first;
+  EllipseBatch second;
 };
+
+/// The batch tests, in forEachPair()'s order, into `out`.
+void batchVerdicts(const MixData& data, detail::BatchKernel kernel, std::uint8_t* out) {
+  const PairMix& mix = data.mix;
+  if (mix.rows == 0) {
+    detail::overlapBatchWith(kernel, data.first, data.second, out);
+    return;
+  }
+  for (std::size_t i = 0; i < mix.rows; ++i) {
+    detail::overlapOneToManyWith(kernel, data.prepared[i], data.second,
+                                 out + i * data.second.size());
+  }
+}
+
+/// Registers "pair/batch_<kernel>/<mix>": overlapBatch() (pairs) or overlapOneToMany() (a link
+/// against all obstacles) on the mix, with its counters as registerMethod() gives them.
+void registerBatch(const std::string& kernel_name, detail::BatchKernel kernel,
+                   const MixData* data) {
+  const PairMix& mix = data->mix;
+  std::vector<std::uint8_t> out(mix.pairs.size());
+  batchVerdicts(*data, kernel, out.data());
+  const int wrong = misclassified(mix, std::vector<bool>(out.begin(), out.end()));
+  const std::string name = "pair/batch_" + kernel_name + "/" + mix.name;
+  benchmark::RegisterBenchmark(name.c_str(), [data, kernel, wrong](benchmark::State& state) {
+    const PairMix& mix = data->mix;
+    std::vector<std::uint8_t> verdicts(mix.pairs.size());
+    for (auto _ : state) {
+      batchVerdicts(*data, kernel, verdicts.data());
+      benchmark::DoNotOptimize(verdicts.data());
+      benchmark::ClobberMemory();
+    }
+    using benchmark::Counter;
+    state.counters["sec_per_pair"] = Counter(static_cast<double>(mix.pairs.size()),
+                                             Counter::kIsIterationInvariantRate | Counter::kInvert);
+    state.counters["misclassified"] = wrong;
+    state.counters["counted"] = mix.counted();
+    state.counters["pass_bounding"] = mix.pass_bounding_circles;
+  });
+}
 
 void registerMix(MixData* data) {
   const PairMix& mix = data->mix;
@@ -98,6 +144,17 @@ void registerMix(MixData* data) {
   const Ellipse* const e = mix.ellipses.data();
   const PreparedEllipse* const prepared = data->prepared.data();
   const FclEllipse* const fcl = data->fcl.data();
+
+  if (mix.rows > 0) {
+    for (std::size_t j = mix.rows; j < mix.ellipses.size(); ++j) data->second.add(mix.ellipses[j]);
+  } else {
+    for (std::size_t i = 0; i + 1 < mix.ellipses.size(); i += 2) {
+      data->first.add(mix.ellipses[i]);
+      data->second.add(mix.ellipses[i + 1]);
+    }
+  }
+  registerBatch("portable", detail::BatchKernel::Portable, data);
+  if (detail::avx2Supported()) registerBatch("avx2", detail::BatchKernel::Avx2, data);
 
   registerMethod("ours_overlap", mix,
                  [e](std::size_t i, std::size_t j) { return overlap(e[i], e[j]); });
@@ -257,9 +314,9 @@ int main(int argc, char** argv) {
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
 
   std::deque<MixData> mixes;  // stable addresses: the benchmarks hold references
-  mixes.push_back({sceneLikeMix(pairs, 1), {}, {}});
-  mixes.push_back({nearMix(pairs, 2), {}, {}});
-  mixes.push_back({tangencyMix(pairs, 3), {}, {}});
+  mixes.push_back({sceneLikeMix(pairs, 1), {}, {}, {}, {}});
+  mixes.push_back({nearMix(pairs, 2), {}, {}, {}, {}});
+  mixes.push_back({tangencyMix(pairs, 3), {}, {}, {}, {}});
   for (MixData& data : mixes) registerMix(&data);
   registerContactScales();
 

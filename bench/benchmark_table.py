@@ -34,8 +34,9 @@ def pair_table(runs):
         _, method, mix = parts
         rows[(method, mix)] = entry
     mixes = ordered({mix for _, mix in rows}, ["scene-like", "near", "tangent"])
-    methods = ["ours_overlap", "ours_prepared", "eigenvalue_alone", "polygonal_alone", "fcl",
-               "seed_readme"]
+    # batch_*: overlapBatch() / overlapOneToMany() with the portable and the AVX2 culling.
+    methods = ["ours_overlap", "ours_prepared", "batch_portable", "batch_avx2", "eigenvalue_alone",
+               "polygonal_alone", "fcl", "seed_readme"]
     print("Pair tests (same stored pairs per mix; misclassified = disagreements with the quad "
           "oracle, pairs within 1e-12 of tangency left out)")
     header = (f"{'method':<18} {'mix':<11} {'ns/pair':>9} {'x faster than FCL':>18} "
@@ -54,7 +55,7 @@ def pair_table(runs):
             wrong = f"{int(entry['misclassified'])}/{int(entry['counted'])}"
             fallbacks = entry.get("unknown_fallbacks")
             fallbacks = f"{int(fallbacks)}" if fallbacks is not None else ""
-            print(f"{method:<18} {mix:<11} {ns:>9.1f} {ratio:>18} {wrong:>14} {fallbacks:>15}")
+            print(f"{method:<18} {mix:<11} {ns:>9.2f} {ratio:>18} {wrong:>14} {fallbacks:>15}")
         passing = rows[("fcl", mix)]["pass_bounding"] if fcl else 0
         print(f"{'':<18} {mix:<11} ({int(passing)} of {int(fcl['counted']) if fcl else 0} pairs "
               f"within their bounding circles)")

@@ -6,9 +6,11 @@
 #include <cmath>
 #include <limits>
 #include <tuple>
+#include <utility>
 
 #include "ellipse_collision/core/eigenvalue_test.h"
 #include "ellipse_collision/core/overlap.h"
+#include "conservative_advancement.h"
 
 namespace ellipse_collision::core::bench {
 namespace {
@@ -219,6 +221,38 @@ FirstContact secantFirstContact(const Ellipse& a, const Motion& motion_a, const 
   if (contact.contact && contact.time == 0.0) {
     contact.time = std::min(horizon, std::numeric_limits<double>::denorm_min());
   }
+  return contact;
+}
+
+FirstContact plainAdvancementFirstContact(const Ellipse& a, const Motion& motion_a,
+                                          const Ellipse& b, const Motion& motion_b,
+                                          double horizon, int* distance_calls) {
+  int calls = 0;
+  if (distance_calls) *distance_calls = 0;
+  if (overlap(a, b)) return {true, 0.0};
+  if (!(horizon > 0.0)) return {};
+  const Eigen::Vector2d w = motion_b.velocity - motion_a.velocity;
+  const Eigen::Vector2d p0 = b.center - a.center;
+  const double wa = motion_a.angular_velocity, wb = motion_b.angular_velocity;
+  const double approach_speed = std::hypot(w.x(), w.y()) +
+                                std::fabs(wa) * (boundingRadius(a) - inscribedRadius(a)) +
+                                std::fabs(wb) * (boundingRadius(b) - inscribedRadius(b));
+  auto pair_at = [&](double t) {
+    ++calls;
+    Ellipse at = a, bt = b;
+    at.center = Eigen::Vector2d::Zero();
+    at.angle = a.angle + wa * t;
+    bt.center = p0 + w * t;
+    bt.angle = b.angle + wb * t;
+    return std::make_pair(at, bt);
+  };
+  FirstContact contact = detail::advanceConservatively(pair_at, approach_speed,
+                                                       inscribedRadius(a) + inscribedRadius(b),
+                                                       horizon);
+  if (contact.contact && contact.time == 0.0) {
+    contact.time = std::min(horizon, std::numeric_limits<double>::denorm_min());
+  }
+  if (distance_calls) *distance_calls = calls;
   return contact;
 }
 

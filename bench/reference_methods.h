@@ -40,4 +40,14 @@ bool seedReadmeOverlap(const Ellipse& a, const Ellipse& b);
 FirstContact secantFirstContact(const Ellipse& a, const Motion& motion_a, const Ellipse& b,
                                 const Motion& motion_b, double horizon);
 
+/// firstContact() for a rotating pair as the project computed it before the second-order steps:
+/// overlap() at t = 0, then plain conservative advancement on the exact distance() in a's frame
+/// (conservative_advancement.h: steps of D / V, a grazing band of 5e-10 (r_a + r_b), at most
+/// 20000 steps, contact at the last certified-safe time at the cap). `distance_calls`, when
+/// given, receives the number of distance() calls. Kept so that bench_first_contact times the old
+/// method beside the new one.
+FirstContact plainAdvancementFirstContact(const Ellipse& a, const Motion& motion_a,
+                                          const Ellipse& b, const Motion& motion_b,
+                                          double horizon, int* distance_calls = nullptr);
+
 }  // namespace ellipse_collision::core::bench

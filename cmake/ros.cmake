@@ -29,15 +29,26 @@ target_link_libraries(scan_obstacles ellipse_collision_ros)
 target_compile_options(scan_obstacles PRIVATE ${ELLIPSE_COLLISION_WARNINGS})
 add_dependencies(scan_obstacles ${PROJECT_NAME}_generate_messages_cpp)
 
+# The collision node and scan_obstacles as nodelets (nodelet_plugins.xml, exported in
+# package.xml): scan -> obstacle ellipses -> check in one process, messages passed as pointers.
+add_library(ellipse_collision_nodelets
+  src/nodelets/collision_nodelet.cpp
+  src/nodelets/scan_obstacles_nodelet.cpp)
+target_include_directories(ellipse_collision_nodelets PRIVATE ${nodelet_INCLUDE_DIRS})
+target_link_libraries(ellipse_collision_nodelets ellipse_collision_ros ${nodelet_LIBRARIES})
+target_compile_options(ellipse_collision_nodelets PRIVATE ${ELLIPSE_COLLISION_WARNINGS})
+
 # fit_link_ellipses: a URDF's link ellipses as a `links:` block for the configuration.
 add_executable(fit_link_ellipses src/tools/fit_link_ellipses.cpp)
 target_link_libraries(fit_link_ellipses ellipse_collision_ros)
 target_compile_options(fit_link_ellipses PRIVATE ${ELLIPSE_COLLISION_WARNINGS})
 
-install(TARGETS ellipse_collision_ros ellipse_collision_node scan_obstacles fit_link_ellipses
+install(TARGETS ellipse_collision_ros ellipse_collision_nodelets ellipse_collision_node scan_obstacles
+  fit_link_ellipses
   ARCHIVE DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION}
   LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION}
   RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
 install(DIRECTORY launch config DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION})
+install(FILES nodelet_plugins.xml DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION})
 catkin_install_python(PROGRAMS examples/check_collisions_client.py
   DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})

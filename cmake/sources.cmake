@@ -2,6 +2,7 @@
 # (cmake/core.cmake, cmake/app.cmake) and the standalone fuzz build (fuzz/CMakeLists.txt via
 # cmake/fuzz.cmake) both compile exactly these.
 set(ELLIPSE_COLLISION_CORE_SOURCES
+  src/core/batch_overlap.cpp
   src/core/broadphase.cpp
   src/core/contact_prediction.cpp
   src/core/contact_scale_quartic.cpp
@@ -27,6 +28,7 @@ set(ELLIPSE_COLLISION_CORE_SOURCES
   src/core/polygonal_test.cpp
   src/core/prepared_ellipse.cpp
   src/core/relative_shape.cpp
+  src/core/rotating_contact.cpp
   src/core/scene.cpp
   src/core/scene_check.cpp
   src/core/scene_entry_ref.cpp

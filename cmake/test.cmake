@@ -24,6 +24,7 @@ ellipse_collision_add_gtest(test_core LIBRARIES ellipse_collision_core quadmath 
   test/core/test_polygonal_test.cpp
   test/core/test_overlap_accuracy.cpp
   test/core/test_early_outs.cpp
+  test/core/test_batch_overlap.cpp
   test/core/test_pair_line_parser.cpp
   test/core/test_motion_line_parser.cpp
   test/core/test_unique_names.cpp
@@ -49,6 +50,8 @@ ellipse_collision_add_gtest(test_performance_core LIBRARIES ellipse_collision_co
 ellipse_collision_add_gtest(test_first_contact LIBRARIES ellipse_collision_core quadmath SOURCES
   test/core/test_first_contact.cpp
   test/support/first_contact_oracle.cpp)
+# src/core for rotating_contact.h: the grazing test counts the rotating path's work.
+target_include_directories(test_first_contact PRIVATE ${PROJECT_SOURCE_DIR}/src/core)
 
 # Continuous path checks against the quad oracle and brute force over every pair.
 ellipse_collision_add_gtest(test_path_check LIBRARIES ellipse_collision_core quadmath SOURCES
@@ -157,6 +160,11 @@ ellipse_collision_add_rostest(test_bad_config test/ros/bad_config.test
 ellipse_collision_add_rostest(test_scan_obstacles test/ros/scan_obstacles.test
   test/ros/test_scan_obstacles.cpp)
 add_dependencies(test_scan_obstacles scan_obstacles)
+# The same client against launch/scan_pipeline_nodelets.launch: both nodes as nodelets in one
+# manager, and what the manager shows and refuses.
+ellipse_collision_add_rostest(test_scan_pipeline_nodelets test/ros/scan_pipeline_nodelets.test
+  test/ros/test_scan_obstacles.cpp test/ros/test_scan_pipeline_nodelets.cpp)
+add_dependencies(test_scan_pipeline_nodelets ellipse_collision_nodelets)
 
 # Issue 14: ~check_path and time to contact through the real node, against the quad oracle.
 ellipse_collision_add_rostest(test_motion test/ros/motion.test

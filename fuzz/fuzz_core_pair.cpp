@@ -13,14 +13,19 @@
 //    around 1 (see kTangencyBand); each stage's certified answer agrees with it;
 //  - halving both radii doubles the contact scale (t* is homogeneous), so overlap of the halved
 //    pair implies overlap of the original;
-//  - distance() reports separation exactly when overlap() does not.
+//  - distance() reports separation exactly when overlap() does not;
+//  - the batch tests (overlapBatch(), overlapOneToMany()) answer every pair as overlap() does,
+//    with the portable and, where the processor has it, the AVX2 culling, the pair in every
+//    lane of their registers and in their scalar remainder.
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <string>
+#include <vector>
 
+#include "ellipse_collision/core/batch_overlap.h"
 #include "ellipse_collision/core/distance.h"
 #include "ellipse_collision/ellipse_collision.h"
 #include "ellipse_collision/core/scene_check.h"
@@ -140,6 +145,39 @@ void checkValidPair(const core::Ellipse& a, const core::Ellipse& b, int polygona
                "distance() returned a non-finite or negative result: " + pairText(a, b));
 }
 
+/// The pairs (a, b), (b, a), (a, a), (b, b), (a, b) through the batch tests: five, so that the
+/// AVX2 culling takes the first four in one register and the fifth in its remainder, and the
+/// SSE2 culling two, two and one.
+void checkBatchAgrees(const core::Ellipse& a, const core::Ellipse& b) {
+  const core::Ellipse firsts[] = {a, b, a, b, a};
+  const core::Ellipse seconds[] = {b, a, a, b, b};
+  core::EllipseBatch first_batch, second_batch;
+  for (int k = 0; k < 5; ++k) {
+    FUZZ_REQUIRE(first_batch.add(firsts[k]).empty() && second_batch.add(seconds[k]).empty(),
+                 "EllipseBatch refused a valid ellipse: " + pairText(a, b));
+  }
+  std::vector<core::detail::BatchKernel> kernels{core::detail::BatchKernel::Portable};
+  if (core::detail::avx2Supported()) kernels.push_back(core::detail::BatchKernel::Avx2);
+  for (const core::detail::BatchKernel kernel : kernels) {
+    const std::string kernel_name =
+        kernel == core::detail::BatchKernel::Avx2 ? "AVX2" : "portable";
+    std::uint8_t out[5] = {7, 7, 7, 7, 7};
+    core::detail::overlapBatchWith(kernel, first_batch, second_batch, out);
+    for (int k = 0; k < 5; ++k) {
+      FUZZ_REQUIRE(out[k] == (core::overlap(firsts[k], seconds[k]) ? 1 : 0),
+                   "overlapBatch (" + kernel_name + ") disagrees with overlap() on pair " +
+                       std::to_string(k) + " of " + pairText(a, b));
+    }
+    std::uint8_t many[5] = {7, 7, 7, 7, 7};
+    core::detail::overlapOneToManyWith(kernel, core::PreparedEllipse(a), second_batch, many);
+    for (int k = 0; k < 5; ++k) {
+      FUZZ_REQUIRE(many[k] == (core::overlap(a, seconds[k]) ? 1 : 0),
+                   "overlapOneToMany (" + kernel_name + ") disagrees with overlap() on pair " +
+                       std::to_string(k) + " of " + pairText(a, b));
+    }
+  }
+}
+
 }  // namespace
 }  // namespace ellipse_collision::fuzz
 
@@ -182,6 +220,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       break;
   }
   checkValidPair(a, b, polygonal_iterations);
+  checkBatchAgrees(a, b);
   if (shape == 2) {
     FUZZ_REQUIRE(
         core::contactScale(a, b) == 0.0 && core::overlap(a, b),

@@ -9,7 +9,9 @@
 //  - under translation, away from grazing (the smallest contact scale over the horizon, from
 //    dense sampling, further than kGrazeBand from 1), the answer agrees with a dense-sampling +
 //    bisection reference of overlap() along the relative path: same verdict, and the time within
-//    kTimeTolerance * horizon of the bisected crossing.
+//    kTimeTolerance * horizon of the bisected crossing;
+//  - under rotation, never late: where a sample of the turning pair overlaps clearly (contact
+//    scale below 1 - kGrazeBand), firstContact() reports contact at or before it.
 
 #include <algorithm>
 #include <cmath>
@@ -39,6 +41,32 @@ std::string caseText(const core::Ellipse& a, const core::Motion& ma, const core:
   };
   return "a = " + describe(a) + " " + motion(ma) + ", b = " + describe(b) + " " + motion(mb) +
          ", horizon = " + text(horizon);
+}
+
+// The pair at time t, in a's starting frame (as firstContact works), turned as its motions say.
+double turningScaleAt(const core::Ellipse& a, const core::Motion& ma, const core::Ellipse& b,
+                      const core::Motion& mb, double t) {
+  core::Ellipse at = a, bt = b;
+  at.center = Eigen::Vector2d::Zero();
+  at.angle = a.angle + ma.angular_velocity * t;
+  bt.center = (b.center - a.center) + (mb.velocity - ma.velocity) * t;
+  bt.angle = b.angle + mb.angular_velocity * t;
+  return core::contactScale(at, bt);
+}
+
+void checkRotationNeverLate(const core::Ellipse& a, const core::Motion& ma,
+                            const core::Ellipse& b, const core::Motion& mb, double horizon,
+                            const core::FirstContact& result) {
+  for (int k = 1; k <= kSamples; ++k) {
+    const double t = horizon * (static_cast<double>(k) / kSamples);
+    if (turningScaleAt(a, ma, b, mb, t) < 1.0 - kGrazeBand) {
+      FUZZ_REQUIRE(result.contact && result.time <= t,
+                   "rotation: the pair overlaps at t = " + text(t) + " but firstContact says " +
+                       (result.contact ? "contact at " + text(result.time) : std::string("clear")) +
+                       ": " + caseText(a, ma, b, mb, horizon));
+      return;
+    }
+  }
 }
 
 // The pair at time t, in a's starting frame (as firstContact works).
@@ -155,6 +183,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                "contact at t = 0 disagrees with overlap(): " + caseText(a, ma, b, mb, horizon));
   if (ma.angular_velocity == 0.0 && mb.angular_velocity == 0.0 && horizon > 0.0) {
     checkTranslationReference(a, ma, b, mb, horizon, r);
+  } else if (horizon > 0.0) {
+    checkRotationNeverLate(a, ma, b, mb, horizon, r);
   }
   return 0;
 }

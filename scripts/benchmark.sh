@@ -15,7 +15,8 @@
 # with 100 and 1,000 ellipses stored (p50/p99 latency, calls per second, wall time), in alternating
 # blocks with an empty std_srvs/Trigger service (the ROS floor; p50 ratio, goal <= 1.5). Both are
 # stopped at the end, on failure and on Ctrl-C. Then the node as a user runs it
-# (scripts/node_load.sh): 20 moving links, N obstacles, a ~markers subscriber; CPU % and RSS.
+# (scripts/node_load.sh): 20 moving links, N obstacles, a ~markers subscriber; CPU % and RSS. And
+# the scan pipeline as separate processes against nodelets in one manager (scripts/nodelet_cpu.sh).
 #
 #   scripts/benchmark.sh                 full run (a few minutes)
 #   scripts/benchmark.sh --smoke         every benchmark once, briefly, on few pairs, 200 service
@@ -106,8 +107,10 @@ run bench_distance "${distance_args[@]}"
 grep -E '^(Benchmark|BM_)' "${out}/bench_distance.txt" | grep -vE '_(mean|stddev|cv)( |$)' || true
 
 # ---- firstContact() beside the secant method it replaced, FCL's continuousCollide and sampling --
+# ---- and, for rotating pairs, beside the plain conservative advancement it replaced --------------
 echo
-echo "Running bench_first_contact (us per pair, new beside old; misclassifications and time errors against the oracle)"
+echo "Running bench_first_contact (us per pair, new beside old, translating and rotating mixes;"
+echo "misclassifications, time errors against the oracle, distance() calls and pairs at the step cap)"
 run bench_first_contact "${contact_args[@]}"
 grep -vE '_(mean|stddev|cv)( |$)|^(Run on|CPU|  L[123]|Load Average|\*\*\*)' "${out}/bench_first_contact.txt" \
   | grep -v '^-*$' || true
@@ -216,4 +219,15 @@ if "${smoke}"; then
   bash "${repo}/scripts/node_load.sh" --smoke --stream 30 --store
 else
   bash "${repo}/scripts/node_load.sh" --runs "1000@30" --stream 30 --store
+fi
+
+# ---- the scan pipeline as separate processes and as nodelets in one manager -------------------------
+# A 720-beam LaserScan at 40 Hz -> scan_obstacles -> the collision node, both ways alternating, by
+# scripts/nodelet_cpu.sh (roscore and launch files of its own): CPU % of each process, medians.
+echo
+echo "Running the scan pipeline, separate processes against nodelets (scripts/nodelet_cpu.sh)"
+if "${smoke}"; then
+  bash "${repo}/scripts/nodelet_cpu.sh" --smoke
+else
+  bash "${repo}/scripts/nodelet_cpu.sh" --runs 3
 fi

@@ -68,6 +68,14 @@ DEBIAN_PACKAGES=(
   # in (found by scripts/fresh_machine.sh: "No rule to make target .../libz.so")
   zlib1g-dev
   libresource-retriever-dev
+  # nodelets (launch/scan_pipeline_nodelets.launch): the Nodelet base class and its library, the
+  # load/list services (C++ and, for rosservice, Python), the plugin export macro, and the
+  # `nodelet` executable (manager and loader)
+  libnodeletlib-dev
+  libnodelet-dev
+  pluginlib-dev
+  libnodeletlib-tools
+  python3-nodelet
   # parameters changed while the node runs: the C++ server (cfg/*.cfg, generated at build time by
   # its Python generator) and the Python client that rqt_reconfigure and the rostest use
   libdynamic-reconfigure-config-init-mutex-dev

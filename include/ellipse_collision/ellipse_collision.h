@@ -3,6 +3,7 @@
 // Umbrella header of the ROS-free core (namespace ellipse_collision::core): ellipses, the
 // collision tests and distance between two of them, scenes of many, frames, and the helpers every
 // layer shares. The README's "The core library" table lists every function.
+#include "ellipse_collision/core/batch_overlap.h"
 #include "ellipse_collision/core/broadphase.h"
 #include "ellipse_collision/core/distance.h"
 #include "ellipse_collision/core/eigenvalue_test.h"

@@ -10,7 +10,7 @@
 #include "ellipse_collision/core/distance.h"
 #include "ellipse_collision/core/number_format.h"
 #include "ellipse_collision/core/overlap.h"
-#include "conservative_advancement.h"
+#include "rotating_contact.h"
 #include "sin_cos.h"
 
 namespace ellipse_collision::core {
@@ -166,39 +166,6 @@ FirstContact translationContact(const Ellipse& a, const Ellipse& b, const Eigen:
   return {true, 0.0};  // touching "at 0": firstContact() moves it just after 0
 }
 
-// ---- rotation: conservative advancement (conservative_advancement.h) ----------------------
-
-// Everything in the frame of a's centre, so that centres 1e6 m out lose no precision.
-struct RelativePair {
-  Ellipse a;  // centred at the origin
-  Ellipse b;  // centred at p0
-  Eigen::Vector2d w;  // v_b - v_a [m/s]
-  double wa, wb;      // angular velocities [rad/s]
-
-  Ellipse aAt(double t) const {
-    Ellipse e = a;
-    e.angle = a.angle + wa * t;
-    return e;
-  }
-  Ellipse bAt(double t) const {
-    Ellipse e = b;
-    e.center = b.center + w * t;
-    e.angle = b.angle + wb * t;
-    return e;
-  }
-};
-
-FirstContact rotationContact(const RelativePair& p, double horizon) {
-  // Rounding of R - r is harmless: it is exact (Sterbenz) when r >= R / 2, and tiny against R.
-  const double approach_speed =
-      std::hypot(p.w.x(), p.w.y()) + std::fabs(p.wa) * (boundingRadius(p.a) - inscribedRadius(p.a)) +
-      std::fabs(p.wb) * (boundingRadius(p.b) - inscribedRadius(p.b));
-  if (!(approach_speed > 0.0)) return {};
-  return detail::advanceConservatively(
-      [&p](double t) { return std::make_pair(p.aAt(t), p.bAt(t)); }, approach_speed,
-      inscribedRadius(p.a) + inscribedRadius(p.b), horizon);
-}
-
 // A total order on (ellipse, motion): the pair is always processed in this order, which makes
 // firstContact exactly symmetric.
 auto orderKey(const Ellipse& e, const Motion& m) {
@@ -286,11 +253,11 @@ FirstContact firstContact(const Ellipse& a, const Motion& motion_a, const Ellips
   if (!a_turns && !b_turns) {
     contact = translationContact(a, b, motion_b.velocity - motion_a.velocity, horizon);
   } else {
-    RelativePair p{a, b, motion_b.velocity - motion_a.velocity, motion_a.angular_velocity,
-                   motion_b.angular_velocity};
+    detail::RotatingPair p{a, b, motion_b.velocity - motion_a.velocity, motion_a.angular_velocity,
+                           motion_b.angular_velocity};
     p.a.center = Eigen::Vector2d::Zero();
     p.b.center = b.center - a.center;
-    contact = rotationContact(p, horizon);
+    contact = detail::rotatingContact(p, horizon);
   }
   // overlap() said they are apart at t = 0; a pair whose contact scale there is within rounding
   // of 1 can still be found touching "at 0" by the gauge. Time 0 means overlapping now (the

@@ -31,10 +31,10 @@ app::MonitorSettings makeMonitorSettings(const NodeConfig& config) {
   return settings;
 }
 
-app::StoreOptions storeOptions(const NodeConfig& config) {
+/// `node_name`: the private namespace, the node's name (or the nodelet's, in a manager).
+app::StoreOptions storeOptions(const NodeConfig& config, const std::string& node_name) {
   app::StoreOptions store;
-  store.path = config.obstacle_store ? *config.obstacle_store
-                                     : defaultObstacleStore(ros::this_node::getName());
+  store.path = config.obstacle_store ? *config.obstacle_store : defaultObstacleStore(node_name);
   if (!store.path.empty()) ros::param::get("/run_id", store.session);
   return store;
 }
@@ -104,9 +104,9 @@ CollisionNode::CollisionNode(const ros::NodeHandle& nh, const ros::NodeHandle& p
     ROS_ERROR_STREAM_THROTTLE(5.0,
                               "ellipse_collision: cannot persist the runtime obstacles: " << error);
   };
-  monitor_ = std::make_unique<app::CollisionMonitor>(makeMonitorSettings(config_), config_.links,
-                                                     config_.obstacles, config_.limits,
-                                                     storeOptions(config_), std::move(hooks));
+  monitor_ = std::make_unique<app::CollisionMonitor>(
+      makeMonitorSettings(config_), config_.links, config_.obstacles, config_.limits,
+      storeOptions(config_, private_nh_.getNamespace()), std::move(hooks));
   for (const app::StartupNote& note : monitor_->startupNotes()) logStartupNote(note);
   if (monitor_->storeEnabled() && config_.obstacle_store_period_s > 0.0) {
     store_timer_ = nh_.createWallTimer(ros::WallDuration(config_.obstacle_store_period_s),
@@ -446,7 +446,7 @@ void CollisionNode::publishGate(const app::GateDecision& decision, const ros::Ti
 void CollisionNode::onDiagnosticsTimer(const ros::TimerEvent& /*event*/) {
   const app::CollisionMonitor::Health report = monitor_->health(ros::Time::now().toSec());
   diagnostic_msgs::DiagnosticStatus status;
-  status.name = ros::this_node::getName() + ": collision check";
+  status.name = private_nh_.getNamespace() + ": collision check";
   status.hardware_id = config_.fixed_frame;
   status.level = report.health.level == app::CheckHealth::Level::Error
                      ? diagnostic_msgs::DiagnosticStatus::ERROR

@@ -2,6 +2,7 @@
 
 #include <sensor_msgs/point_cloud2_iterator.h>
 
+#include <boost/make_shared.hpp>
 #include <stdexcept>
 
 #include "ellipse_collision/app/collision_check.h"
@@ -71,7 +72,9 @@ void ScanObstaclesNode::publish(const app::SensorObstacles& obstacles,
   if (!obstacles.skipped.empty()) {
     ROS_WARN_STREAM_THROTTLE(5.0, "scan_obstacles: skipped " << app::joinText(obstacles.skipped, "; "));
   }
-  obstacles_pub_.publish(toMsg(obstacles, header));
+  // As a shared_ptr: a subscriber in the same nodelet manager (CollisionNodelet) gets this very
+  // message, not a serialised copy (roscpp serialises a message published by reference).
+  obstacles_pub_.publish(boost::make_shared<EllipseArray>(toMsg(obstacles, header)));
 }
 
 }  // namespace ellipse_collision

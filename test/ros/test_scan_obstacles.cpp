@@ -1,7 +1,9 @@
 // scan_obstacles in a running system (test/ros/scan_obstacles.test): a synthetic 720-beam
 // LaserScan of a circle and a wall, with NaN, inf and out-of-range beams; the ellipses that reach
 // the collision node's ~obstacles (every hit point inside, sizes close to the shapes, the
-// sensor's header, stable names) and the collisions they cause with the configured links.
+// sensor's header, stable names) and the collisions they cause with the configured links, on
+// ~collisions and in a ~check_collisions answer. The same client runs against the nodelet
+// pipeline (test/ros/scan_pipeline_nodelets.test, with test_scan_pipeline_nodelets.cpp).
 #include <gtest/gtest.h>
 #include <ros/ros.h>
 #include <sensor_msgs/LaserScan.h>
@@ -81,8 +83,11 @@ double quadraticForm(const Ellipse& e, double px, double py) {
   return u * u + v * v;
 }
 
+bool collides(const std::vector<CollisionPair>& pairs, const std::string& a, const std::string& b) {
+  return test::findPair(pairs, a, b) || test::findPair(pairs, b, a);
+}
 bool collides(const CollisionState& state, const std::string& a, const std::string& b) {
-  return test::findPair(state.collisions, a, b) || test::findPair(state.collisions, b, a);
+  return collides(state.collisions, a, b);
 }
 
 TEST(ScanObstacles, ScannedShapesReachTheCollisionNodeAsEnclosingEllipses) {
@@ -156,11 +161,44 @@ TEST(ScanObstacles, ScannedShapesReachTheCollisionNodeAsEnclosingEllipses) {
   EXPECT_FALSE(test::mentions(state->collisions, "far"));
 }
 
+TEST(ScanObstacles, CheckCollisionsNamesTheScannedObstacles) {
+  // What a user's ~check_collisions call sees once scans arrive: the scanned obstacles by their
+  // beam names, each against the link it touches, and only those when asked about one of them.
+  ros::NodeHandle nh;
+  ASSERT_TRUE(ros::service::waitForService(test::nodeTopic("check_collisions"), ros::Duration(30)));
+  test::NodeServiceClient client;
+  client.connectServices(nh);
+  ros::Publisher scan_pub = nh.advertise<sensor_msgs::LaserScan>("/scan", 1);
+  const sensor_msgs::LaserScan scan = syntheticScan(ros::Time(1234, 5678));
+
+  CheckCollisions::Response all;
+  const bool named = test::waitUntil(
+      [&] {
+        scan_pub.publish(scan);
+        all = client.check();
+        return all.success && collides(all.collisions, "arm", kCircleName) &&
+               collides(all.collisions, "side", kWallName);
+      },
+      40.0);
+  ASSERT_TRUE(named) << "~check_collisions never named (arm, " << kCircleName << ") and (side, "
+                     << kWallName << "): " << all.message << ", " << all.collisions.size()
+                     << " collisions";
+  EXPECT_TRUE(all.in_collision);
+  EXPECT_FALSE(test::mentions(all.collisions, "far"));
+  EXPECT_EQ(all.collisions.size(), 2u);
+
+  const CheckCollisions::Response circle_only = client.check({kCircleName});
+  ASSERT_TRUE(circle_only.success) << circle_only.message;
+  ASSERT_EQ(circle_only.collisions.size(), 1u);
+  EXPECT_TRUE(collides(circle_only.collisions, "arm", kCircleName));
+}
+
 }  // namespace
 }  // namespace ellipse_collision
 
 int main(int argc, char** argv) {
   testing::InitGoogleTest(&argc, argv);
   ros::init(argc, argv, "test_scan_obstacles");
+  ros::NodeHandle node;  // keeps the node up between tests (the last handle going shuts it down)
   return RUN_ALL_TESTS();
 }
