@@ -9,6 +9,8 @@ set(ELLIPSE_COLLISION_CORE_SOURCES
   src/core/ellipse_polygon.cpp
   src/core/eigenvalue_test.cpp
   src/core/ellipse.cpp
+  src/core/ellipsoid.cpp
+  src/core/enclosing_ellipsoid.cpp
   src/core/enclosing_ellipse.cpp
   src/core/first_contact.cpp
   src/core/frame_projection.cpp

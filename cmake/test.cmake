@@ -62,6 +62,11 @@ ellipse_collision_add_gtest(test_velocity_gate LIBRARIES ellipse_collision_core 
   test/core/test_velocity_gate.cpp
   test/support/first_contact_oracle.cpp)
 
+# Ellipsoids: the shadow against projected surface samples, the minimum-volume fit against
+# closed forms and their affine images, in quad precision.
+ellipse_collision_add_gtest(test_ellipsoid LIBRARIES ellipse_collision_core quadmath SOURCES
+  test/core/test_ellipsoid.cpp)
+
 # Minimum-area enclosing ellipses (link fitting, sensor clusters) against their own oracle.
 ellipse_collision_add_gtest(test_enclosing_ellipse LIBRARIES ellipse_collision_core quadmath SOURCES
   test/core/test_enclosing_ellipse.cpp
