@@ -91,7 +91,8 @@ ellipse_collision_add_gtest(test_app LIBRARIES ellipse_collision_app SOURCES
   test/app/test_obstacle_store_writer.cpp
   test/app/test_check_health.cpp
   test/app/test_link_fitting.cpp
-  test/app/test_path_request.cpp)
+  test/app/test_path_request.cpp
+  test/app/test_ellipsoid_links.cpp)
 
 # scan_obstacles' guarantees on ray-cast scenes: coverage, free space, doorways, names, counts.
 ellipse_collision_add_gtest(test_scan_contours LIBRARIES ellipse_collision_app SOURCES

@@ -1,0 +1,104 @@
+// Ellipsoid links (EllipseSpec::ellipsoid) in the application layer: validated by the field
+// rules, placed by their shadow wherever a link is placed (checks, path checks, the gate's scene),
+// where a planar ellipse in a tilted frame is refused edge-on. Values worked out by hand: an upper
+// arm of radii (0.2, 0.06, 0.06) rolled 90 degrees about its own x axis still shadows 0.2 x 0.06.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+
+#include "ellipse_collision/app/collision_check.h"
+#include "ellipse_collision/app/path_request.h"
+#include "ellipse_collision/app/scene_placement.h"
+#include "spec_builders.h"
+
+namespace ellipse_collision::app {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+EllipseSpec upperArm(const std::string& frame) {
+  EllipseSpec spec = test::circle("upper_arm", frame, 0.0, 0.0, 0.2);
+  spec.radius_y = 0.06;
+  spec.ellipsoid = EllipsoidPart{0.0, 0.0, 0.0, 0.06};
+  return spec;
+}
+
+/// "map" is the fixed frame; "arm" is rolled by `roll` about x at the origin.
+TransformLookup rolledArm(double roll) {
+  return [roll](const std::string& frame) {
+    FrameTransform transform;
+    transform.ok = frame == "map" || frame == "arm";
+    if (!transform.ok) transform.error = "frame '" + frame + "' does not exist";
+    if (frame == "arm") {
+      transform.fixed_from_frame.linear() =
+          Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitX()).toRotationMatrix();
+    }
+    return transform;
+  };
+}
+
+TEST(EllipsoidLinks, FieldsKeepTheCoreRules) {
+  EllipseSpec spec = upperArm("arm");
+  EXPECT_FALSE(findInvalidField(spec));
+  spec.ellipsoid->radius_z = 0.0;
+  auto error = findInvalidField(spec);
+  ASSERT_TRUE(error);
+  EXPECT_EQ(error->key, "radius_z");
+  spec.ellipsoid->radius_z = 0.06;
+  spec.ellipsoid->roll = std::nan("");
+  error = findInvalidField(spec);
+  ASSERT_TRUE(error);
+  EXPECT_EQ(error->key, "roll");
+  spec.ellipsoid->roll = 0.0;
+  spec.ellipsoid->z = 2e9;
+  error = findInvalidField(spec);
+  ASSERT_TRUE(error);
+  EXPECT_EQ(error->key, "z");
+  spec.ellipsoid->z = 0.0;
+  spec.padding = 1e9;  // padded radius_x = 1e9 + 0.2 is beyond kMaxRadius
+  error = findInvalidPaddedField(spec, 0.0);
+  ASSERT_TRUE(error);
+  EXPECT_EQ(error->key, "radius_x");
+}
+
+TEST(EllipsoidLinks, PaddingGrowsAllThreeRadii) {
+  EllipseSpec spec = upperArm("arm");
+  spec.padding = 0.01;
+  const core::Ellipsoid padded = paddedEllipsoid(spec, 0.02);
+  EXPECT_DOUBLE_EQ(padded.radii.x(), 0.23);
+  EXPECT_DOUBLE_EQ(padded.radii.y(), 0.09);
+  EXPECT_DOUBLE_EQ(padded.radii.z(), 0.09);
+}
+
+TEST(EllipsoidLinks, RolledLinkIsPlacedByItsShadowWherePlanarOneIsLost) {
+  for (const double degrees : {0.0, 80.0, 90.0, 170.0}) {
+    ScenePlacement placement(rolledArm(degrees * kPi / 180.0), 0.0);
+    const auto placed = placement.place(upperArm("arm"), core::EllipseRole::Query);
+    ASSERT_EQ(placed.status, ScenePlacement::Status::Placed) << degrees << ": " << placed.error;
+    EXPECT_NEAR(placed.ellipse.ellipse.radius_x, 0.2, 1e-12) << degrees;
+    EXPECT_NEAR(placed.ellipse.ellipse.radius_y, 0.06, 1e-12) << degrees;
+  }
+  EllipseSpec planar = upperArm("arm");
+  planar.ellipsoid.reset();
+  ScenePlacement placement(rolledArm(kPi / 2), 0.0);
+  EXPECT_EQ(placement.place(planar, core::EllipseRole::Query).status,
+            ScenePlacement::Status::Degenerate);
+}
+
+TEST(EllipsoidLinks, CheckReportsThePostTheRolledArmShadows) {
+  // The post at (0, 0.1), radius 0.05, reaches down to y = 0.05; the rolled arm's shadow up to
+  // y = 0.06. The planar arm seen edge-on would be skipped and the post missed.
+  EllipseRegistry registry({upperArm("arm")}, {test::circle("post", "map", 0.0, 0.1, 0.05)});
+  CheckSettings settings;
+  settings.fixed_frame = "map";
+  const CheckOutcome outcome = runCheck({}, registry, settings, rolledArm(kPi / 2), 0.0);
+  ASSERT_EQ(outcome.error, "");
+  EXPECT_TRUE(outcome.skipped.empty());
+  ASSERT_EQ(outcome.collisions.size(), 1u);
+  EXPECT_EQ(outcome.collisions[0].name_a, "upper_arm");
+  EXPECT_EQ(outcome.collisions[0].name_b, "post");
+}
+
+}  // namespace
+}  // namespace ellipse_collision::app
