@@ -33,6 +33,7 @@ set(ELLIPSE_COLLISION_CORE_SOURCES
   src/core/scene_check.cpp
   src/core/scene_entry_ref.cpp
   src/core/scene_nearest.cpp
+  src/core/shape_hull.cpp
   src/core/shape_outline.cpp
   src/core/unique_names.cpp
   src/core/velocity_gate.cpp)

@@ -65,7 +65,8 @@ ellipse_collision_add_gtest(test_velocity_gate LIBRARIES ellipse_collision_core 
 # Ellipsoids: the shadow against projected surface samples, the minimum-volume fit against
 # closed forms and their affine images, in quad precision.
 ellipse_collision_add_gtest(test_ellipsoid LIBRARIES ellipse_collision_core quadmath SOURCES
-  test/core/test_ellipsoid.cpp)
+  test/core/test_ellipsoid.cpp
+  test/core/test_shape_hull.cpp)
 
 # Minimum-area enclosing ellipses (link fitting, sensor clusters) against their own oracle.
 ellipse_collision_add_gtest(test_enclosing_ellipse LIBRARIES ellipse_collision_core quadmath SOURCES

@@ -211,23 +211,6 @@ LD largestQuadraticForm(const Ellipsoid& e, const std::vector<Vec3>& points) {
   return worst;
 }
 
-/// Grows all radii by the smallest factor (plus a few ulps) that puts every point inside, as the
-/// 2D certify() does: the long double evaluation's rounding (a few epsilons times the axis ratio)
-/// is kept as a margin below 1. False if that did not succeed.
-bool certify(Ellipsoid& e, const std::vector<Vec3>& points) {
-  const LD eps = std::numeric_limits<LD>::epsilon();
-  for (int round = 0; round < kCertificationRounds; ++round) {
-    if (!e.radii.allFinite()) return false;
-    const LD ratio = static_cast<LD>(e.radii.maxCoeff()) / e.radii.minCoeff();
-    const LD limit = 1.0L - 64.0L * eps * (1.0L + ratio);
-    const LD worst = largestQuadraticForm(e, points);
-    if (worst <= limit) return true;
-    const LD factor = std::sqrt(worst / limit) * (1.0L + 4.0L * DBL_EPSILON);
-    for (int i = 0; i < 3; ++i) e.radii[i] = detail::roundedUp(e.radii[i] * factor);
-  }
-  return false;
-}
-
 /// Seeds the core with the extreme points along the axes, the cube's diagonals and the set's
 /// principal directions (so that the core spans the set's thinnest direction too).
 void seedCore(const std::vector<Vec3>& z, const Mat3& principal, EllipsoidWeights& weights) {
@@ -248,6 +231,22 @@ void seedCore(const std::vector<Vec3>& z, const Mat3& principal, EllipsoidWeight
 }
 
 }  // namespace
+
+// The 2D fit's certify() in three dimensions: the long double evaluation's rounding (a few
+// epsilons times the axis ratio) is kept as a margin below 1.
+bool growToContain(Ellipsoid& e, const std::vector<Eigen::Vector3d>& points) {
+  const LD eps = std::numeric_limits<LD>::epsilon();
+  for (int round = 0; round < kCertificationRounds; ++round) {
+    if (!e.radii.allFinite()) return false;
+    const LD ratio = static_cast<LD>(e.radii.maxCoeff()) / e.radii.minCoeff();
+    const LD limit = 1.0L - 64.0L * eps * (1.0L + ratio);
+    const LD worst = largestQuadraticForm(e, points);
+    if (worst <= limit) return true;
+    const LD factor = std::sqrt(worst / limit) * (1.0L + 4.0L * DBL_EPSILON);
+    for (int i = 0; i < 3; ++i) e.radii[i] = detail::roundedUp(e.radii[i] * factor);
+  }
+  return false;
+}
 
 EnclosingEllipsoid minimumVolumeEllipsoid(const std::vector<Eigen::Vector3d>& points) {
   if (std::string error = validationError(points); !error.empty()) return errorResult(error);
@@ -320,7 +319,7 @@ EnclosingEllipsoid minimumVolumeEllipsoid(const std::vector<Eigen::Vector3d>& po
   // volume = (4/3) pi sqrt(det S) reach^(3/2) with det S <= det S* (dual optimality) and
   // reach <= 3 + 4 gap: volume / minimum <= (1 + 4 gap / 3)^(3/2), about 1 + 2 gap.
   result.volume_excess_bound = std::max(0.0, 2.0 * gap);
-  if (!(result.ellipsoid.radii.minCoeff() > 0.0) || !certify(result.ellipsoid, points)) {
+  if (!(result.ellipsoid.radii.minCoeff() > 0.0) || !growToContain(result.ellipsoid, points)) {
     return errorResult("the enclosing ellipsoid could not be certified");
   }
   if (std::string reason = invalidReason(result.ellipsoid); !reason.empty()) {

@@ -46,6 +46,13 @@ constexpr double kEnclosingEllipsoidGapTolerance = 1e-9;
 /// kDegenerateRelativeThickness of its extent or 2 kMinRadius); a radius beyond kMaxRadius.
 EnclosingEllipsoid minimumVolumeEllipsoid(const std::vector<Eigen::Vector3d>& points);
 
+/// Grows all radii of `ellipsoid` by the smallest common factor (plus a few ulps) that puts every
+/// point inside, evaluated in long double from the double fields as minimumVolumeEllipsoid()
+/// certifies (a no-op when they already are): for an ellipsoid whose fields were rewritten (its
+/// orientation turned into roll, pitch and yaw) to stay certified. False if that did not succeed
+/// (a radius no longer finite).
+bool growToContain(Ellipsoid& ellipsoid, const std::vector<Eigen::Vector3d>& points);
+
 /// Upper bound on the optimiser's Khachiyan steps per call; reaching it still returns a certified
 /// enclosing ellipsoid, with a larger volume_excess_bound.
 constexpr int kMaxEllipsoidOptimiserSteps = 200000;
