@@ -5,9 +5,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <map>
 
 #include "ellipse_collision/app/collision_check.h"
+#include "ellipse_collision/app/link_fitting.h"
 #include "ellipse_collision/app/path_request.h"
 #include "ellipse_collision/app/scene_placement.h"
 #include "spec_builders.h"
@@ -98,6 +100,71 @@ TEST(EllipsoidLinks, CheckReportsThePostTheRolledArmShadows) {
   ASSERT_EQ(outcome.collisions.size(), 1u);
   EXPECT_EQ(outcome.collisions[0].name_a, "upper_arm");
   EXPECT_EQ(outcome.collisions[0].name_b, "post");
+}
+
+/// ((x, y) - c) in the ellipse's axes over its radii, squared and summed, in long double.
+long double shadowForm(const core::Ellipse& e, long double x, long double y) {
+  const long double c = std::cos(static_cast<long double>(e.angle));
+  const long double s = std::sin(static_cast<long double>(e.angle));
+  const long double dx = x - e.center.x(), dy = y - e.center.y();
+  const long double along = (c * dx + s * dy) / e.radius_x, across = (c * dy - s * dx) / e.radius_y;
+  return along * along + across * across;
+}
+
+TEST(EllipsoidLinks, FittedArmFootprintContainsItsCylinderAtEveryRollAndPitch) {
+  // Upper arm: cylinder of radius 6 cm and length 40 cm along the link's x, from 0 to 0.4 m.
+  core::CollisionShape cylinder;
+  cylinder.type = core::CollisionShape::Cylinder;
+  cylinder.radius = 0.06;
+  cylinder.length = 0.4;
+  cylinder.link_from_shape.linear() =
+      Eigen::AngleAxisd(kPi / 2, Eigen::Vector3d::UnitY()).toRotationMatrix();
+  cylinder.link_from_shape.translation() = Eigen::Vector3d(0.2, 0.0, 0.0);
+  const LinkFitResult fitted =
+      fitLinkEllipses({LinkGeometry{"upper_arm", {cylinder}}}, 0.0, LinkShape::Ellipsoid);
+  ASSERT_TRUE(fitted.ok()) << fitted.error;
+  ASSERT_EQ(fitted.links.size(), 1u);
+  const EllipseSpec& arm = fitted.links[0];
+  ASSERT_TRUE(arm.ellipsoid);
+  EXPECT_NE(linksYaml(fitted.links).find("radius_z: "), std::string::npos);
+
+  // Surface samples of the cylinder (wall and end discs), placed through the link's pose and
+  // projected, against the footprint the check places for that pose.
+  double worst = -1.0;
+  for (int roll_step = 0; roll_step <= 18; ++roll_step) {
+    for (int pitch_step = 0; pitch_step <= 18; ++pitch_step) {
+      const double roll = roll_step * kPi / 18, pitch = pitch_step * kPi / 18;
+      Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+      pose.linear() = (Eigen::AngleAxisd(pitch, Eigen::Vector3d::UnitY()) *
+                       Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitX()))
+                          .toRotationMatrix();
+      pose.translation() = Eigen::Vector3d(1.0, -0.5, 0.3);
+      ScenePlacement placement(
+          [&pose](const std::string&) {
+            FrameTransform t;
+            t.ok = true;
+            t.fixed_from_frame = pose;
+            return t;
+          },
+          0.0);
+      const auto placed = placement.place(arm, core::EllipseRole::Query);
+      ASSERT_EQ(placed.status, ScenePlacement::Status::Placed) << placed.error;
+      for (int k = 0; k < 720; ++k) {
+        const double t = 2 * kPi * (k % 72) / 72, along = (k / 72) / 9.0;
+        for (const Eigen::Vector3d& local :
+             {Eigen::Vector3d(0.06 * std::cos(t), 0.06 * std::sin(t), 0.4 * (along - 0.5)),
+              Eigen::Vector3d(0.06 * along * std::cos(t), 0.06 * along * std::sin(t), -0.2),
+              Eigen::Vector3d(0.06 * along * std::cos(t), 0.06 * along * std::sin(t), 0.2)}) {
+          const Eigen::Vector3d p = pose * (cylinder.link_from_shape * local);
+          const double form = static_cast<double>(shadowForm(placed.ellipse.ellipse, p.x(), p.y()));
+          worst = std::max(worst, form - 1.0);
+          ASSERT_LE(form, 1.0) << "roll " << roll << " pitch " << pitch;
+        }
+      }
+    }
+  }
+  std::printf("[ record   ] fitted arm over 361 roll/pitch poses: worst projected-cylinder "
+              "form - 1 = %.3g\n", worst);
 }
 
 }  // namespace
