@@ -157,6 +157,8 @@ add_dependencies(test_node_cli fit_link_ellipses)
 # Issue 34: the package's launch file with links_from_urdf; its guard fits the URDF too.
 ellipse_collision_add_rostest(test_urdf_launch test/ros/urdf_launch.test
   test/ros/test_urdf_launch.cpp)
+# Issue 34: an arm's links fitted as ellipsoids; their footprints over a roll and pitch sweep.
+ellipse_collision_add_rostest(test_arm_links test/ros/arm_links.test test/ros/test_arm_links.cpp)
 ellipse_collision_add_rostest(test_bad_config test/ros/bad_config.test
   test/ros/test_bad_config.cpp)
 # A synthetic LaserScan through scan_obstacles into the node's ~obstacles.
