@@ -102,6 +102,42 @@ TEST(EllipsoidLinks, CheckReportsThePostTheRolledArmShadows) {
   EXPECT_EQ(outcome.collisions[0].name_b, "post");
 }
 
+TEST(EllipsoidLinks, PathCheckMovesTheRolledArmsShadow) {
+  // The arm frame is base_link rolled 90 degrees: its shadow reaches 0.2 m ahead of the frame.
+  // Going 2 m along x from map's origin, it meets the post (0.05 m at x = 1) when the frame is
+  // at 1 - 0.05 - 0.2 = 0.75: fraction 0.375. The planar arm is seen edge-on and left out.
+  const EllipseRegistry registry({upperArm("arm")}, {test::circle("post", "map", 1.0, 0.0, 0.05)});
+  CheckSettings settings;
+  settings.fixed_frame = "map";
+  const TransformLookup to_moving = [](const std::string& frame) {
+    return rolledArm(kPi / 2)(frame == "base_link" ? "map" : frame);  // base_link is the origin
+  };
+  const TransformLookup to_map = [](const std::string& frame) {
+    FrameTransform t;
+    t.ok = frame == "map" || frame == "base_link";
+    return t;
+  };
+  PathCheckRequest request;
+  request.path_frame = "map";
+  request.moving_frame = "base_link";
+  request.poses.resize(2);
+  request.poses[1].x = 2.0;
+  const PathCheckOutcome outcome = runPathCheck(request, registry, settings, to_moving, to_map, 0.0);
+  ASSERT_EQ(outcome.error, "");
+  EXPECT_TRUE(outcome.skipped.empty());
+  EXPECT_FALSE(outcome.result.collision_free);
+  EXPECT_EQ(outcome.result.link, "upper_arm");
+  EXPECT_NEAR(outcome.result.fraction, 0.375, 1e-9);
+
+  EllipseSpec planar = upperArm("arm");
+  planar.ellipsoid.reset();
+  const EllipseRegistry planar_registry({planar}, {test::circle("post", "map", 1.0, 0.0, 0.05)});
+  const PathCheckOutcome lost =
+      runPathCheck(request, planar_registry, settings, to_moving, to_map, 0.0);
+  EXPECT_TRUE(lost.result.collision_free);
+  EXPECT_EQ(lost.skipped.size(), 1u);
+}
+
 /// ((x, y) - c) in the ellipse's axes over its radii, squared and summed, in long double.
 long double shadowForm(const core::Ellipse& e, long double x, long double y) {
   const long double c = std::cos(static_cast<long double>(e.angle));
