@@ -41,6 +41,9 @@ Eigen::Matrix3d shapeMatrix(const Ellipsoid& ellipsoid);
 /// the largest generalised eigenvalue of S against its own shape matrix, plus the rounding of the
 /// centre, plus a few ulps) until it contains the exact shadow of the given data.
 ///
+/// Cost: about 1.9 us per call, 7.7 times projectToPlane() (medians of 7 runs of 100,000 random
+/// poses each, side by side), mostly the long double arithmetic of the certification.
+///
 /// Errors (`name` only names the ellipsoid in them): an invalid `in_frame` (see invalidReason()),
 /// a non-finite transform, or a shadow that invalidReason(Ellipse) refuses (a centre moved beyond
 /// kMaxCoordinate, a radius beyond kMaxRadius).

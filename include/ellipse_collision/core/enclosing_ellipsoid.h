@@ -41,6 +41,10 @@ constexpr double kEnclosingEllipsoidGapTolerance = 1e-9;
 /// every input point in long double, all radii grown by the smallest factor (plus a few ulps)
 /// that puts every point inside.
 ///
+/// Cost (test_ellipsoid, test_shape_hull, on a shared 2-core machine at load 4): medians of
+/// 9-19 us for sets of 4-50 points, 0.6-0.8 ms for 2,000 points, 21 ms for a cylinder's 16,384
+/// hull points, 170 ms for a sphere's 130,562.
+///
 /// Errors: no points; a coordinate not finite or outside [-kMaxCoordinate, kMaxCoordinate]; a set
 /// spanning no volume (fewer than 4 affinely independent points, or thinner than
 /// kDegenerateRelativeThickness of its extent or 2 kMinRadius); a radius beyond kMaxRadius.
