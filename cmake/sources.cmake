@@ -10,6 +10,8 @@ set(ELLIPSE_COLLISION_CORE_SOURCES
   src/core/ellipse_polygon.cpp
   src/core/eigenvalue_test.cpp
   src/core/ellipse.cpp
+  src/core/ellipsoid.cpp
+  src/core/enclosing_ellipsoid.cpp
   src/core/enclosing_ellipse.cpp
   src/core/first_contact.cpp
   src/core/frame_projection.cpp
@@ -33,6 +35,7 @@ set(ELLIPSE_COLLISION_CORE_SOURCES
   src/core/scene_check.cpp
   src/core/scene_entry_ref.cpp
   src/core/scene_nearest.cpp
+  src/core/shape_hull.cpp
   src/core/shape_outline.cpp
   src/core/unique_names.cpp
   src/core/velocity_gate.cpp)

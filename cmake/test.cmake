@@ -65,6 +65,12 @@ ellipse_collision_add_gtest(test_velocity_gate LIBRARIES ellipse_collision_core 
   test/core/test_velocity_gate.cpp
   test/support/first_contact_oracle.cpp)
 
+# Ellipsoids: the shadow against projected surface samples, the minimum-volume fit against
+# closed forms and their affine images, in quad precision.
+ellipse_collision_add_gtest(test_ellipsoid LIBRARIES ellipse_collision_core quadmath SOURCES
+  test/core/test_ellipsoid.cpp
+  test/core/test_shape_hull.cpp)
+
 # Minimum-area enclosing ellipses (link fitting, sensor clusters) against their own oracle.
 ellipse_collision_add_gtest(test_enclosing_ellipse LIBRARIES ellipse_collision_core quadmath SOURCES
   test/core/test_enclosing_ellipse.cpp
@@ -90,7 +96,8 @@ ellipse_collision_add_gtest(test_app LIBRARIES ellipse_collision_app SOURCES
   test/app/test_check_health.cpp
   test/app/test_link_fitting.cpp
   test/app/test_marker_layout.cpp
-  test/app/test_path_request.cpp)
+  test/app/test_path_request.cpp
+  test/app/test_ellipsoid_links.cpp)
 
 # scan_obstacles' guarantees on ray-cast scenes: coverage, free space, doorways, names, counts.
 ellipse_collision_add_gtest(test_scan_contours LIBRARIES ellipse_collision_app SOURCES
@@ -154,6 +161,8 @@ add_dependencies(test_node_cli fit_link_ellipses)
 # Issue 34: the package's launch file with links_from_urdf; its guard fits the URDF too.
 ellipse_collision_add_rostest(test_urdf_launch test/ros/urdf_launch.test
   test/ros/test_urdf_launch.cpp)
+# Issue 34: an arm's links fitted as ellipsoids; their footprints over a roll and pitch sweep.
+ellipse_collision_add_rostest(test_arm_links test/ros/arm_links.test test/ros/test_arm_links.cpp)
 ellipse_collision_add_rostest(test_bad_config test/ros/bad_config.test
   test/ros/test_bad_config.cpp)
 # A synthetic LaserScan through scan_obstacles into the node's ~obstacles.

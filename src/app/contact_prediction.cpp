@@ -25,8 +25,8 @@ core::Motion frameMotion(const EllipseSpec& spec, double global_padding, const c
                     earlier.error + ")");
     return {};
   }
-  const core::ProjectionResult then = core::projectToPlane(
-      paddedEllipse(spec, global_padding), earlier.fixed_from_frame, spec.name);
+  const core::ProjectionResult then =
+      placeInPlane(spec, global_padding, earlier.fixed_from_frame);
   if (!then.ok()) return {};
   core::Motion motion;
   motion.velocity = (now.center - then.ellipse.center) / kVelocityWindowS;

@@ -25,6 +25,16 @@ std::optional<FieldError> findInvalidField(const EllipseSpec& spec, const std::s
   for (const auto& [key, violation] : fields) {
     if (violation) return fieldError(key, *violation);
   }
+  if (spec.ellipsoid) {
+    const std::pair<const char*, std::optional<core::ValueViolation>> depth[] = {
+        {"z", core::coordinateViolation(spec.ellipsoid->z)},
+        {"roll", core::angleViolation(spec.ellipsoid->roll)},
+        {"pitch", core::angleViolation(spec.ellipsoid->pitch)},
+        {"radius_z", core::radiusViolation(spec.ellipsoid->radius_z)}};
+    for (const auto& [key, violation] : depth) {
+      if (violation) return fieldError(key, *violation);
+    }
+  }
   if (!std::isfinite(spec.padding) || !(spec.padding >= 0.0)) {
     return FieldError{"padding", "a finite number >= 0", formatNumber(spec.padding)};
   }
@@ -64,7 +74,9 @@ std::optional<FieldError> findInvalidPaddedField(const EllipseSpec& spec, double
     double value;
     double padded;
   } radii[] = {{"radius_x", spec.radius_x, padded.radius_x},
-               {"radius_y", spec.radius_y, padded.radius_y}};
+               {"radius_y", spec.radius_y, padded.radius_y},
+               {"radius_z", spec.ellipsoid ? spec.ellipsoid->radius_z : 1.0,
+                spec.ellipsoid ? paddedEllipsoid(spec, global_padding).radii.z() : 1.0}};
   for (const auto& radius : radii) {
     if (!(radius.padded >= core::kMinRadius && radius.padded <= core::kMaxRadius)) {
       return FieldError{radius.key,
@@ -86,6 +98,26 @@ core::Ellipse paddedEllipse(const EllipseSpec& spec, double global_padding) {
   e.radius_y = spec.radius_y + spec.padding + global_padding;
   e.angle = spec.angle;
   return e;
+}
+
+core::Ellipsoid paddedEllipsoid(const EllipseSpec& spec, double global_padding) {
+  const EllipsoidPart& part = *spec.ellipsoid;
+  const double grow = spec.padding + global_padding;
+  core::Ellipsoid e;
+  e.center = Eigen::Vector3d(spec.x, spec.y, part.z);
+  e.orientation = Eigen::AngleAxisd(spec.angle, Eigen::Vector3d::UnitZ()) *
+                  Eigen::AngleAxisd(part.pitch, Eigen::Vector3d::UnitY()) *
+                  Eigen::AngleAxisd(part.roll, Eigen::Vector3d::UnitX());
+  e.radii = Eigen::Vector3d(spec.radius_x + grow, spec.radius_y + grow, part.radius_z + grow);
+  return e;
+}
+
+core::ProjectionResult placeInPlane(const EllipseSpec& spec, double global_padding,
+                                    const Eigen::Isometry3d& fixed_from_frame) {
+  if (spec.ellipsoid) {
+    return core::shadowOnPlane(paddedEllipsoid(spec, global_padding), fixed_from_frame, spec.name);
+  }
+  return core::projectToPlane(paddedEllipse(spec, global_padding), fixed_from_frame, spec.name);
 }
 
 core::Motion ownMotion(const EllipseSpec& spec, const Eigen::Isometry3d& target_from_frame) {

@@ -2,7 +2,6 @@
 
 #include <utility>
 
-#include "ellipse_collision/core/frame_projection.h"
 #include "ellipse_collision/core/number_format.h"
 
 namespace ellipse_collision::app {
@@ -35,8 +34,8 @@ ScenePlacement::Placement ScenePlacement::place(const EllipseSpec& spec, core::E
                       core::formatNumber(freshness_.max_age_s) + " s";
     return placement;
   }
-  const core::ProjectionResult projected = core::projectToPlane(
-      paddedEllipse(spec, global_padding_m_), frame.fixed_from_frame, spec.name);
+  const core::ProjectionResult projected =
+      placeInPlane(spec, global_padding_m_, frame.fixed_from_frame);
   if (!projected.ok()) {
     placement.status = Status::Degenerate;
     placement.error = projected.error;

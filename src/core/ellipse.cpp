@@ -22,8 +22,9 @@ std::optional<ValueViolation> rangeViolation(double value, double min, double ma
   return ValueViolation{ValueViolation::Rule::Range, value, min, max, must_be_positive};
 }
 
-/// invalidReason()'s words for a violation of field `key`.
-std::string render(const char* key, const ValueViolation& violation) {
+}  // namespace
+
+std::string renderViolation(const char* key, const ValueViolation& violation) {
   const std::string head = std::string(key) + " = " + formatNumber(violation.value);
   switch (violation.rule) {
     case ValueViolation::Rule::Finite:
@@ -36,8 +37,6 @@ std::string render(const char* key, const ValueViolation& violation) {
   return head + " is outside [" + formatNumber(violation.min) + ", " +
          formatNumber(violation.max) + "] m";
 }
-
-}  // namespace
 
 std::optional<ValueViolation> coordinateViolation(double value) {
   if (coordinateOk(value)) return std::nullopt;
@@ -75,12 +74,12 @@ std::string invalidReason(const Ellipse& ellipse) {
   // range (radii before the centre).
   for (const auto rule : {ValueViolation::Rule::Finite, ValueViolation::Rule::Positive}) {
     for (const auto& [key, violation] : fields) {
-      if (violation && violation->rule == rule) return render(key, *violation);
+      if (violation && violation->rule == rule) return renderViolation(key, *violation);
     }
   }
   for (const int index : {2, 3, 0, 1}) {
     const auto& [key, violation] = fields[index];
-    if (violation) return render(key, *violation);
+    if (violation) return renderViolation(key, *violation);
   }
   return {};
 }

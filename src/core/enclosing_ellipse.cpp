@@ -11,10 +11,12 @@
 
 #include "ellipse_collision/core/number_format.h"
 #include "khachiyan_weights.h"
+#include "rounded_up.h"
 
 namespace ellipse_collision::core {
 namespace {
 
+using detail::roundedUp;
 using detail::WeightSolver;
 
 using Vec2 = Eigen::Vector2d;
@@ -210,11 +212,6 @@ long double largestQuadraticForm(const Ellipse& e, const std::vector<Vec2>& poin
     worst = std::max(worst, along * along + across * across);
   }
   return worst;
-}
-
-double roundedUp(long double value) {
-  const double d = static_cast<double>(value);
-  return d < value ? std::nextafter(d, std::numeric_limits<double>::infinity()) : d;
 }
 
 /// Grows both radii by the smallest factor (plus a few ulps) that puts every point inside, as

@@ -19,6 +19,8 @@ namespace {
 using XmlRpc::XmlRpcValue;
 
 const char* const kEllipseKeys = "name, frame, x, y, angle, radius_x, radius_y, padding";
+// Links may also be ellipsoids (app::EllipsoidPart): radius_z makes one, z, roll, pitch optional.
+const char* const kEllipsoidKeys = "z, roll, pitch, radius_z";
 
 std::string describeValue(const XmlRpcValue& value) {
   XmlRpcValue copy = value;  // the conversion operators of XmlRpcValue are not const
@@ -109,7 +111,8 @@ std::string readFrame(const XmlRpcValue& value, const std::string& where, const 
   return frame;
 }
 
-app::EllipseSpec readEllipse(const XmlRpcValue& entry, const std::string& where, double global_padding) {
+app::EllipseSpec readEllipse(const XmlRpcValue& entry, const std::string& where, double global_padding,
+                             bool ellipsoid_allowed) {
   if (entry.getType() != XmlRpcValue::TypeStruct) {
     throw ConfigError(where + ": expected a dict with keys " + std::string(kEllipseKeys) +
                       ", got " + describeValue(entry));
@@ -119,13 +122,22 @@ app::EllipseSpec readEllipse(const XmlRpcValue& entry, const std::string& where,
   if (entry.hasMember("name") && entry["name"].getType() == XmlRpcValue::TypeString) {
     label = where + " (name '" + readString(entry["name"], where, "name") + "')";
   }
-  const std::set<std::string> known = {"name",  "frame",    "x",        "y",
-                                       "angle", "radius_x", "radius_y", "padding"};
+  std::set<std::string> known = {"name",  "frame",    "x",        "y",
+                                 "angle", "radius_x", "radius_y", "padding"};
+  const std::string expected =
+      std::string(kEllipseKeys) + (ellipsoid_allowed ? ", " + std::string(kEllipsoidKeys) : "");
+  if (ellipsoid_allowed) known.insert({"z", "roll", "pitch", "radius_z"});
   for (auto it = entry.begin(); it != entry.end(); ++it) {
     if (!known.count(it->first)) {
-      throw ConfigError(label + ": unknown key '" + it->first + "' (expected one of " +
-                        std::string(kEllipseKeys) + ")");
+      throw ConfigError(label + ": unknown key '" + it->first + "' (expected one of " + expected +
+                        ")");
     }
+  }
+  const bool ellipsoid = entry.hasMember("z") || entry.hasMember("roll") ||
+                         entry.hasMember("pitch") || entry.hasMember("radius_z");
+  if (ellipsoid && !entry.hasMember("radius_z")) {
+    throw ConfigError(label + ": missing key 'radius_z' (z, roll and pitch describe an ellipsoid "
+                              "link, which needs radius_z)");
   }
   for (const char* key : {"name", "frame", "x", "y", "angle", "radius_x", "radius_y"}) {
     if (!entry.hasMember(key)) {
@@ -143,6 +155,14 @@ app::EllipseSpec readEllipse(const XmlRpcValue& entry, const std::string& where,
   spec.radius_x = readNumber(entry["radius_x"], label, "radius_x");
   spec.radius_y = readNumber(entry["radius_y"], label, "radius_y");
   if (entry.hasMember("padding")) spec.padding = readNumber(entry["padding"], label, "padding");
+  if (ellipsoid) {
+    app::EllipsoidPart part;
+    part.radius_z = readNumber(entry["radius_z"], label, "radius_z");
+    if (entry.hasMember("z")) part.z = readNumber(entry["z"], label, "z");
+    if (entry.hasMember("roll")) part.roll = readNumber(entry["roll"], label, "roll");
+    if (entry.hasMember("pitch")) part.pitch = readNumber(entry["pitch"], label, "pitch");
+    spec.ellipsoid = part;
+  }
   if (const auto invalid = app::findInvalidPaddedField(spec, global_padding, "frame")) {
     fail(label, invalid->key, invalid->expected, invalid->actual);
   }
@@ -156,7 +176,7 @@ std::vector<app::EllipseSpec> readEllipseList(const XmlRpcValue& list, const std
   }
   std::vector<app::EllipseSpec> specs;
   for (int i = 0; i < list.size(); ++i) {
-    specs.push_back(readEllipse(list[i], app::entryName(key, i), global_padding));
+    specs.push_back(readEllipse(list[i], app::entryName(key, i), global_padding, key == "links"));
   }
   return specs;
 }
@@ -198,17 +218,18 @@ std::vector<std::pair<std::string, std::string>> readAllowedPairs(
   return pairs;
 }
 
-/// `links_from_urdf: {param, links, padding}` -> the fitted link ellipses.
+/// `links_from_urdf: {param, links, padding, shape}` -> the fitted link ellipses.
 app::LinkFitResult readLinksFromUrdf(const XmlRpcValue& value, const UrdfLinkFitter& fit_urdf_links) {
   const std::string where = "parameter ~links_from_urdf";
   if (value.getType() != XmlRpcValue::TypeStruct) {
-    throw ConfigError(where + ": expected a dict {param, links, padding}, got " +
+    throw ConfigError(where + ": expected a dict {param, links, padding, shape}, got " +
                       describeValue(value));
   }
   for (auto it = value.begin(); it != value.end(); ++it) {
-    if (it->first != "param" && it->first != "links" && it->first != "padding") {
+    if (it->first != "param" && it->first != "links" && it->first != "padding" &&
+        it->first != "shape") {
       throw ConfigError(where + ": unknown key '" + it->first +
-                        "' (expected one of param, links, padding)");
+                        "' (expected one of param, links, padding, shape)");
     }
   }
   std::string param = "robot_description";
@@ -228,6 +249,13 @@ app::LinkFitResult readLinksFromUrdf(const XmlRpcValue& value, const UrdfLinkFit
   }
   if (value.hasMember("padding")) {
     options.padding = readInRange(value["padding"], where, "padding", 0.0, core::kMaxRadius);
+  }
+  if (value.hasMember("shape")) {
+    const std::string shape = readString(value["shape"], where, "shape");
+    if (shape != "planar" && shape != "ellipsoid") {
+      fail(where, "shape", "'planar' or 'ellipsoid'", "'" + shape + "'");
+    }
+    options.shape = shape == "ellipsoid" ? app::LinkShape::Ellipsoid : app::LinkShape::Planar;
   }
   if (!fit_urdf_links) throw ConfigError(where + ": no URDF reader in this program");
   try {

@@ -188,7 +188,8 @@ app::LinkFitResult fitUrdfLinks(const std::string& urdf_xml, const std::string& 
     throw UrdfError(source + ": " + problem);
   }
   app::LinkFitResult result = app::fitLinkEllipses(
-      readUrdfLinks(urdf_xml, source, app::selectedLinks(model_links, options)), options.padding);
+      readUrdfLinks(urdf_xml, source, app::selectedLinks(model_links, options)), options.padding,
+      options.shape);
   if (!result.ok()) throw UrdfError(source + ": " + result.error);
   return result;
 }

@@ -1,5 +1,5 @@
-// fit_link_ellipses: the minimum-area ellipse of each link's collision geometry in a URDF,
-// printed as the `links:` block of the node's configuration (config/ellipse_collision.yaml).
+// fit_link_ellipses: the minimum-area ellipse (or, with --shape ellipsoid, the minimum-volume
+// ellipsoid) of each link's collision geometry in a URDF, printed as the `links:` block of the node's configuration (config/ellipse_collision.yaml).
 
 #include <ros/ros.h>
 
@@ -15,6 +15,7 @@ namespace {
 
 constexpr const char* kUsage =
     "usage: fit_link_ellipses [--param NAME | FILE.urdf] [--links a,b,...] [--padding M]\n"
+    "                         [--shape planar|ellipsoid]\n"
     "\n"
     "Reads a URDF (the expanded XML, as robot_state_publisher takes it) from FILE.urdf or from\n"
     "the ROS parameter NAME (needs a running master; default robot_description), projects each\n"
@@ -25,6 +26,9 @@ constexpr const char* kUsage =
     "\n"
     "  --links a,b,...  only these links, in this order (default: every link, sorted by name)\n"
     "  --padding M      written as each entry's padding [m] (default 0)\n"
+    "  --shape S        planar (default): the ellipse above; ellipsoid: the minimum-volume\n"
+    "                   ellipsoid of the geometry in 3D (entries with z, roll, pitch, radius_z),\n"
+    "                   whose shadow covers the link however its frame tilts (arms)\n"
     "\n"
     "Links without collision geometry are reported on standard error and skipped.\n"
     "Exit status: 0 success, 1 the URDF or a mesh cannot be read, 2 usage error.\n";
@@ -51,6 +55,14 @@ bool parseArguments(const std::vector<std::string>& args, Arguments& out) {
       out.param = args[++i];
     } else if (arg == "--links" && has_value) {
       out.options.links = splitComma(args[++i]);
+    } else if (arg == "--shape" && has_value) {
+      const std::string& shape = args[++i];
+      if (shape != "planar" && shape != "ellipsoid") {
+        std::cerr << "fit_link_ellipses: --shape '" << shape << "': expected planar or ellipsoid\n";
+        return false;
+      }
+      out.options.shape = shape == "ellipsoid" ? ellipse_collision::app::LinkShape::Ellipsoid
+                                               : ellipse_collision::app::LinkShape::Planar;
     } else if (arg == "--padding" && has_value) {
       const std::string& text = args[++i];
       std::size_t used = 0;
@@ -112,8 +124,12 @@ int main(int argc, char** argv) {
       std::cerr << "fit_link_ellipses: skipped " << skipped << "\n";
     }
     std::cout << ellipse_collision::app::linksYaml(
-        result.links, {"fit_link_ellipses " + source + ": minimum-area ellipses of the links' "
-                       "collision geometry, projected along each link's z",
+        result.links,
+        {"fit_link_ellipses " + source +
+             (arguments.options.shape == ellipse_collision::app::LinkShape::Ellipsoid
+                  ? ": minimum-volume ellipsoids of the links' collision geometry"
+                  : ": minimum-area ellipses of the links' collision geometry, projected along "
+                    "each link's z"),
                        "padding " + ellipse_collision::core::formatNumber(arguments.options.padding) +
                            " m; skipped: " + std::to_string(result.skipped.size()) + " links"});
   } catch (const ellipse_collision::UrdfError& error) {

@@ -203,6 +203,33 @@ TEST(NodeConfig, UnknownKeysStopTheNodeInsteadOfBeingIgnored) {
   EXPECT_CONTAINS(errorOf(p), "links[0] (name 'arm'): unknown key 'radius'");
 }
 
+TEST(NodeConfig, LinksMayBeEllipsoidsWithRadiusZ) {
+  XmlRpcValue p = validParams();
+  p["links"][0]["radius_z"] = 0.06;
+  p["links"][0]["roll"] = 0.5;
+  p["links"][0]["z"] = 0.1;
+  const NodeConfig config = parseNodeConfig(p);
+  ASSERT_TRUE(config.links[0].ellipsoid);
+  EXPECT_EQ(config.links[0].ellipsoid->radius_z, 0.06);
+  EXPECT_EQ(config.links[0].ellipsoid->roll, 0.5);
+  EXPECT_EQ(config.links[0].ellipsoid->pitch, 0.0);
+  EXPECT_EQ(config.links[0].ellipsoid->z, 0.1);
+  EXPECT_FALSE(config.links[1].ellipsoid);
+
+  p = validParams();
+  p["links"][0]["pitch"] = 0.3;  // an ellipsoid key without radius_z
+  EXPECT_CONTAINS(errorOf(p), "links[0] (name 'arm'): missing key 'radius_z'");
+  p = validParams();
+  p["links"][0]["radius_z"] = -1.0;
+  EXPECT_CONTAINS(errorOf(p), "radius_z");
+  p = validParams();
+  p["obstacles"][0]["radius_z"] = 0.1;  // obstacles stay planar
+  EXPECT_CONTAINS(errorOf(p), "obstacles[0] (name 'table'): unknown key 'radius_z'");
+  p = validParams();
+  p["links_from_urdf"]["shape"] = "sphere";
+  EXPECT_CONTAINS(errorOf(p), "shape");
+}
+
 TEST(NodeConfig, ScalarParametersAreTypeChecked) {
   XmlRpcValue p = validParams();
   p["rate"] = "fast";

@@ -6,9 +6,23 @@
 
 #include "ellipse_collision/app/field_error.h"
 #include "ellipse_collision/core/ellipse.h"
+#include "ellipse_collision/core/ellipsoid.h"
+#include "ellipse_collision/core/frame_projection.h"
 #include "ellipse_collision/core/first_contact.h"
 
 namespace ellipse_collision::app {
+
+/// The third dimension of a link that tilts with its frame (an arm's links): with the spec's x,
+/// y, radius_x, radius_y and angle (the yaw) it makes the ellipsoid {c + R D u : |u| <= 1},
+/// c = (x, y, z), R = Rz(angle) Ry(pitch) Rx(roll), D = diag(radius_x, radius_y, radius_z), all in
+/// frame_id. Such a link is checked by its shadow on the fixed frame's plane
+/// (core::shadowOnPlane()), which covers it at every joint angle.
+struct EllipsoidPart {
+  double z{0.0};         ///< centre in frame_id [m]
+  double roll{0.0};      ///< about the ellipsoid's x axis [rad]
+  double pitch{0.0};     ///< about its y axis, after roll [rad]
+  double radius_z{0.0};  ///< semi-axis along its own z axis [m], > 0
+};
 
 /// A named ellipse attached to a tf frame, as configured or requested (the fields of msg Ellipse).
 struct EllipseSpec {
@@ -26,18 +40,22 @@ struct EllipseSpec {
   double vx{0.0};                ///< [m/s]
   double vy{0.0};                ///< [m/s]
   double angular_velocity{0.0};  ///< about the centre, counter-clockwise about frame_id's z [rad/s]
+  /// Set for an ellipsoid link (links only: configuration and URDF fits); otherwise the ellipse
+  /// lies in frame_id's xy-plane.
+  std::optional<EllipsoidPart> ellipsoid;
 };
 
 /// Checks every field of `spec` except whether its frame exists (that needs tf): name and frame
 /// non-empty, frame without a leading '/', the core's value rules for the centre, angle and radii
-/// (core::coordinateViolation() and friends), padding finite, >= 0 and <= kMaxRadius; vx, vy
+/// (core::coordinateViolation() and friends; for an ellipsoid also z, roll, pitch, radius_z),
+/// padding finite, >= 0 and <= kMaxRadius; vx, vy
 /// finite within [-core::kMaxSpeed, core::kMaxSpeed], angular_velocity finite within
 /// [-core::kMaxAngularVelocity, core::kMaxAngularVelocity].
 /// `frame_key` is how the caller spells the frame field ("frame_id" in messages, "frame" in YAML).
 std::optional<FieldError> findInvalidField(const EllipseSpec& spec,
                                            const std::string& frame_key = "frame_id");
 
-/// findInvalidField(), then the radii the core is given: radius_x and radius_y grown by
+/// findInvalidField(), then the radii the core is given: radius_x, radius_y (and radius_z) grown by
 /// spec.padding + global_padding (as paddedEllipse() does) must lie within [kMinRadius,
 /// kMaxRadius]. A violation names the radius key, with its own value as `actual`. Every
 /// configured entry and every request or topic ellipse passes this before it is used.
@@ -46,6 +64,17 @@ std::optional<FieldError> findInvalidPaddedField(const EllipseSpec& spec, double
 
 /// The ellipse in its own frame with both radii grown by spec.padding + global_padding [m].
 core::Ellipse paddedEllipse(const EllipseSpec& spec, double global_padding);
+
+/// The ellipsoid in its own frame with all three radii grown by spec.padding + global_padding [m];
+/// requires spec.ellipsoid.
+core::Ellipsoid paddedEllipsoid(const EllipseSpec& spec, double global_padding);
+
+/// The padded spec placed in the fixed frame's plane through `fixed_from_frame`: a planar spec
+/// projected (core::projectToPlane(), refused edge-on), an ellipsoid by its shadow
+/// (core::shadowOnPlane(), never edge-on). The one placement rule of every check, path check,
+/// prediction and the velocity gate.
+core::ProjectionResult placeInPlane(const EllipseSpec& spec, double global_padding,
+                                    const Eigen::Isometry3d& fixed_from_frame);
 
 /// The spec's own velocity in a target frame's plane: (vx, vy, 0) turned by the frame's
 /// orientation and projected; the angular velocity about the frame's z axis counts by the z

@@ -15,12 +15,19 @@ struct LinkGeometry {
   std::vector<core::CollisionShape> shapes;   ///< empty: the link has no collision geometry
 };
 
+/// The form of a fitted link: Planar, the minimum-area ellipse of the geometry projected along
+/// the link's z axis (right for links that only turn about z: a mobile base); Ellipsoid, the
+/// minimum-volume ellipsoid of the geometry in 3D, whose shadow covers the link however its frame
+/// tilts at run time (an arm's links).
+enum class LinkShape { Planar, Ellipsoid };
+
 /// What to fit: `links` names the links to fit, in this order (empty: every link of the model, in
 /// the model's order); `padding` [m] is written into every fitted entry's own padding field, so
 /// the radii stay the exact fit and the margin stays visible in the configuration.
 struct LinkFitOptions {
   std::vector<std::string> links;
   double padding{0.0};
+  LinkShape shape{LinkShape::Planar};
 };
 
 /// The fitted link ellipses, the links that were skipped and why, or an error.
@@ -51,10 +58,16 @@ std::vector<std::string> selectedLinks(const std::vector<std::string>& model_lin
 /// skipped and reported; a projection that spans no area gets the thin ellipse of
 /// core::enclosingEllipseWithMinRadius() with kLinkMinRadius. An invalid shape is an error naming
 /// the link. `links` holds exactly the links to fit (selectedLinks()).
-LinkFitResult fitLinkEllipses(const std::vector<LinkGeometry>& links, double padding);
+///
+/// LinkShape::Ellipsoid fits core::fitLinkEllipsoid() instead (EllipseSpec::ellipsoid set; its
+/// orientation written as yaw = angle, pitch, roll, then grown by core::growToContain() so that
+/// the ellipsoid the fields describe is still certified); a link whose geometry spans no volume (a
+/// flat plate) gets the planar fit.
+LinkFitResult fitLinkEllipses(const std::vector<LinkGeometry>& links, double padding,
+                              LinkShape shape = LinkShape::Planar);
 
 /// The `links:` YAML block of config/ellipse_collision.yaml for `specs`: one flow mapping per
-/// entry with every number printed so that it reads back to the same double
+/// entry (ellipsoid links with z, roll, pitch and radius_z too) with every number printed so that it reads back to the same double
 /// (core::formatNumber()). `comments` are written as `# ` lines above the block.
 std::string linksYaml(const std::vector<EllipseSpec>& specs,
                       const std::vector<std::string>& comments = {});

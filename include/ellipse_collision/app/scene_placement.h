@@ -10,7 +10,8 @@
 namespace ellipse_collision::app {
 
 /// Places ellipses attached to frames into the fixed frame's plane for one check: each frame is
-/// looked up once, then the core projects the padded ellipse (core::projectToPlane()).
+/// looked up once, then the padded ellipse is projected or the padded ellipsoid's shadow cast
+/// (placeInPlane()).
 class ScenePlacement {
  public:
   enum class Status { Placed, FrameUnavailable, Stale, Degenerate };

@@ -57,6 +57,10 @@ std::optional<ValueViolation> coordinateViolation(double value);
 std::optional<ValueViolation> radiusViolation(double value);
 std::optional<ValueViolation> angleViolation(double value);
 
+/// A violation of field `key` in invalidReason()'s words ("radius_x = -1 must be > 0"), for
+/// the other shapes that keep the same field rules (Ellipsoid).
+std::string renderViolation(const char* key, const ValueViolation& violation);
+
 /// Why `ellipse` cannot be checked, naming the field and its value ("radius_x = -1 must be > 0"),
 /// or an empty string when it is valid: all fields finite, both radii > 0 and within
 /// [kMinRadius, kMaxRadius], centre coordinates within [-kMaxCoordinate, kMaxCoordinate].

@@ -1,0 +1,105 @@
+#include "ellipse_collision/core/shape_hull.h"
+
+#include <cmath>
+#include <cstddef>
+
+namespace ellipse_collision::core {
+namespace {
+
+using Vec3 = Eigen::Vector3d;
+
+constexpr double kPi = 3.14159265358979323846;
+
+/// Appends the circumscribed polygon of the disc {centre + radius (cos t u + sin t v)}.
+void appendDisc(const Vec3& centre, const Vec3& u, const Vec3& v, double radius,
+                std::vector<Vec3>& out) {
+  const int n = kCirclePolygonVertices;
+  const double reach = radius * (1.0 + kOutlineRoundingMargin) / std::cos(kPi / n);
+  for (int k = 0; k < n; ++k) {
+    const double phi = 2.0 * kPi * k / n;
+    out.push_back(centre + reach * (std::cos(phi) * u + std::sin(phi) * v));
+  }
+}
+
+/// Appends the sphere's grid (see kSphereGridLatitudes).
+void appendSphere(const Vec3& centre, double radius, std::vector<Vec3>& out) {
+  const int rings = kSphereGridLatitudes, longitudes = 2 * kSphereGridLatitudes;
+  const double reach = radius * (1.0 + kOutlineRoundingMargin) / std::cos(kPi / rings);
+  out.push_back(centre + reach * Vec3::UnitZ());
+  out.push_back(centre - reach * Vec3::UnitZ());
+  for (int k = 1; k < rings; ++k) {
+    const double latitude = -0.5 * kPi + kPi * k / rings;
+    for (int j = 0; j < longitudes; ++j) {
+      const double longitude = 2.0 * kPi * j / longitudes;
+      out.push_back(centre + reach * Vec3(std::cos(latitude) * std::cos(longitude),
+                                          std::cos(latitude) * std::sin(longitude),
+                                          std::sin(latitude)));
+    }
+  }
+}
+
+}  // namespace
+
+HullPointsResult hullPoints(const CollisionShape& shape) {
+  HullPointsResult result;
+  result.error = invalidReason(shape);
+  if (!result.ok()) return result;
+  const Eigen::Isometry3d& t = shape.link_from_shape;
+  std::vector<Vec3>& out = result.points;
+  switch (shape.type) {
+    case CollisionShape::Box: {
+      const Vec3 half = 0.5 * shape.box_size;
+      for (int corner = 0; corner < 8; ++corner) {
+        out.push_back(t * Vec3((corner & 1) ? half.x() : -half.x(),
+                               (corner & 2) ? half.y() : -half.y(),
+                               (corner & 4) ? half.z() : -half.z()));
+      }
+      break;
+    }
+    case CollisionShape::Mesh:
+      out.reserve(shape.mesh_vertices.size());
+      for (const Vec3& v : shape.mesh_vertices) out.push_back(t * v);
+      break;
+    case CollisionShape::Sphere:
+      appendSphere(t.translation(), shape.radius, out);
+      break;
+    case CollisionShape::Cylinder: {
+      const Vec3 u = t.linear().col(0), v = t.linear().col(1), axis = t.linear().col(2);
+      for (const double side : {-0.5, 0.5}) {
+        appendDisc(t.translation() + side * shape.length * axis, u, v, shape.radius, out);
+      }
+      break;
+    }
+  }
+  return result;
+}
+
+HullPointsResult linkHullPoints(const std::vector<CollisionShape>& shapes) {
+  HullPointsResult result;
+  if (shapes.empty()) {
+    result.error = "shapes is empty";
+    return result;
+  }
+  for (std::size_t i = 0; i < shapes.size(); ++i) {
+    HullPointsResult one = hullPoints(shapes[i]);
+    if (!one.ok()) {
+      result.points.clear();
+      result.error = "shapes[" + std::to_string(i) + "]: " + one.error;
+      return result;
+    }
+    result.points.insert(result.points.end(), one.points.begin(), one.points.end());
+  }
+  return result;
+}
+
+EnclosingEllipsoid fitLinkEllipsoid(const std::vector<CollisionShape>& shapes) {
+  const HullPointsResult hull = linkHullPoints(shapes);
+  if (!hull.ok()) {
+    EnclosingEllipsoid result;
+    result.error = hull.error;
+    return result;
+  }
+  return minimumVolumeEllipsoid(hull.points);
+}
+
+}  // namespace ellipse_collision::core
