@@ -9,7 +9,8 @@
 //  - under translation, away from grazing (the smallest contact scale over the horizon, from
 //    dense sampling, further than kGrazeBand from 1), the answer agrees with a dense-sampling +
 //    bisection reference of overlap() along the relative path: same verdict, and the time within
-//    kTimeTolerance * horizon of the bisected crossing;
+//    kTimeTolerance * horizon plus the documented extent bound (first_contact.h:
+//    kTranslationExtentTolerance * (|p0 . d| + h_K(n)) / |w|) of the bisected crossing;
 //  - under rotation, never late: where a sample of the turning pair overlaps clearly (contact
 //    scale below 1 - kGrazeBand), firstContact() reports contact at or before it.
 
@@ -30,6 +31,24 @@ namespace {
 constexpr int kSamples = 256;
 constexpr double kGrazeBand = 1e-6;
 constexpr double kTimeTolerance = 1e-7;
+
+// firstContact()'s documented accuracy under translation [s], from its definition in
+// first_contact.h: double precision resolves the entry only to the pair's extent along and across
+// the path (fuzzer findings: the flat side of a needle of axis ratio 1.4e14 crossed over 1e-6 of
+// its length, the answer early by 3e-5 and 1.5e-3 of the horizon, within this bound).
+double extentTimeBound(const core::Ellipse& a, const core::Motion& ma, const core::Ellipse& b,
+                       const core::Motion& mb) {
+  const Eigen::Vector2d w = mb.velocity - ma.velocity;
+  const double speed = std::hypot(w.x(), w.y());
+  if (!(speed > 0.0)) return 0.0;
+  const Eigen::Vector2d d = w / speed, n(-d.y(), d.x());
+  auto halfWidth = [&](const core::Ellipse& e) {
+    const double c = std::cos(e.angle), s = std::sin(e.angle);
+    return std::hypot(e.radius_x * (c * n.x() + s * n.y()), e.radius_y * (c * n.y() - s * n.x()));
+  };
+  const double extent = std::fabs((b.center - a.center).dot(d)) + halfWidth(a) + halfWidth(b);
+  return core::kTranslationExtentTolerance * extent / speed;
+}
 
 bool sameBits(double x, double y) { return std::memcmp(&x, &y, sizeof x) == 0; }
 
@@ -134,9 +153,10 @@ void checkTranslationReference(const core::Ellipse& a, const core::Motion& ma,
     scaleAt(a, ma, b, mb, mid, &hit);
     (hit ? hi : lo) = mid;
   }
-  FUZZ_REQUIRE(std::fabs(result.time - hi) <= kTimeTolerance * horizon,
-               "translation: time " + text(result.time) + " vs bisected " + text(hi) + ": " +
-                   caseText(a, ma, b, mb, horizon));
+  FUZZ_REQUIRE(
+      std::fabs(result.time - hi) <= kTimeTolerance * horizon + extentTimeBound(a, ma, b, mb),
+      "translation: time " + text(result.time) + " vs bisected " + text(hi) + ": " +
+          caseText(a, ma, b, mb, horizon));
 }
 
 }  // namespace

@@ -37,8 +37,16 @@ namespace {
 // loop. The search stops when the entry is certified to `kEntryTolerance`: F at every normal
 // tried is a lower bound, and the chord between the boundary points of the bracket's ends, which
 // lies in K, crosses the path at an upper bound. The exit is the entry of the reversed path.
+// Double precision resolves the entry only to the pair's extent E = |p0 . d| + h_K(n): the
+// normal's components carry an absolute rounding of ~eps, and h_E(u) one of ~eps times the
+// largest radius; on a needle's flat side (axis ratio q) one ulp of the normal moves the support
+// point by ~ulp q rx, and the chord and supporting lines of adjacent normals stay apart by up to
+// ~ulp^2 q rx (fuzzer findings, q = 1.4e14: up to 0.25 eps E early, 1.5e-3 of the horizon). The
+// entry is early by at most kTranslationExtentTolerance * E (tested to q = 1e18: 5 eps E), late
+// by F's rounding only (measured up to 2 eps E). No margin is taken off: an exact crossing (e.g.
+// dyadic sizes, as the velocity gate's tests use) stays exact.
 constexpr int kMaxEntrySteps = 100;
-// Width of the certified interval [m] relative to |p0 . d| + h_K(n), about the rounding of F.
+// Width of the certified interval [m] relative to E, about the rounding of F.
 constexpr double kEntryTolerance = 4.0 * std::numeric_limits<double>::epsilon();
 
 /// An ellipse in the frame (d, n) of the path: its own x axis is (c, s), its y axis (-s, c).
@@ -84,9 +92,10 @@ struct PathPair {
   }
 };
 
-/// The distance [m] along the path from p0 to where it enters K, certified to within
-/// kEntryTolerance (never more than the true one beyond rounding), or any value above `reach` [m]
-/// when the entry is beyond it. Precondition: the line meets K (|sigma| <= h_K(n)).
+/// The distance [m] along the path from p0 to where it enters K, at most
+/// kTranslationExtentTolerance * (|x0| + h_K(n)) less than the true one and never more beyond
+/// rounding, or any value above `reach` [m] when the entry is beyond it. Precondition: the line
+/// meets K (|sigma| <= h_K(n)).
 double entryDistance(const PathPair& p, double reach) {
   // The bracket's ends as normals (s) and boundary points; s = -1, 1 are the normals -n, n.
   double lo = -1.0, hi = 1.0;
