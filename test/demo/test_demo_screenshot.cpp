@@ -105,10 +105,55 @@ double distanceToSegment(const Eigen::Vector2d& p, const Eigen::Vector2d& a,
   return (p - (a + t * ab)).norm();
 }
 
-/// A clearance line of a warning pair, drawn over the ellipses between its witness points.
+/// A line drawn over the ellipses (a warning pair's clearance line, an outline of the gate's or
+/// the path check's markers, a contact sphere as a segment of length 0): the pixels within
+/// `half_width` of it show the line, not the fill beneath.
 struct Segment {
   Eigen::Vector2d a, b;
+  double half_width{0.5 * CollisionMarkers::kLineWidth};
 };
+
+/// The lines and spheres of marker arrays drawn over the ellipses, in the fixed frame (the
+/// markers' frame; their poses only translate).
+void addOverlays(const std::vector<visualization_msgs::MarkerArray>& arrays,
+                 std::vector<Segment>* overlays) {
+  // What rviz shows after applying the arrays in order.
+  std::map<std::pair<std::string, int>, visualization_msgs::Marker> shown;
+  for (const visualization_msgs::MarkerArray& array : arrays) {
+    for (const visualization_msgs::Marker& m : array.markers) {
+      if (m.action == visualization_msgs::Marker::DELETEALL) {
+        shown.clear();
+      } else if (m.action == visualization_msgs::Marker::DELETE) {
+        shown.erase({m.ns, m.id});
+      } else {
+        shown[{m.ns, m.id}] = m;
+      }
+    }
+  }
+  {
+    for (const auto& [key, m] : shown) {
+      const double dx = m.pose.position.x, dy = m.pose.position.y;
+      const auto at = [dx, dy](const geometry_msgs::Point& p) {
+        Eigen::Vector2d point;
+        point << p.x + dx, p.y + dy;
+        return point;
+      };
+      Eigen::Vector2d offset;
+      offset << dx, dy;
+      if (m.type == visualization_msgs::Marker::SPHERE) {
+        overlays->push_back({offset, offset, 0.5 * m.scale.x});
+      } else if (m.type == visualization_msgs::Marker::LINE_STRIP) {
+        for (std::size_t i = 1; i < m.points.size(); ++i) {
+          overlays->push_back({at(m.points[i - 1]), at(m.points[i]), 0.5 * m.scale.x});
+        }
+      } else if (m.type == visualization_msgs::Marker::LINE_LIST) {
+        for (std::size_t i = 1; i < m.points.size(); i += 2) {
+          overlays->push_back({at(m.points[i - 1]), at(m.points[i]), 0.5 * m.scale.x});
+        }
+      }
+    }
+  }
+}
 
 HueCount countHues(const ScreenImage& image, const TopDownView& view, const PanelRect& panel,
                    const core::NamedEllipse& target, const std::vector<core::NamedEllipse>& all,
@@ -136,10 +181,10 @@ HueCount countHues(const ScreenImage& image, const TopDownView& view, const Pane
       for (const Eigen::Vector2d& origin : frame_origins) {
         if ((point - origin).norm() < kAxesRadiusM) covered = true;
       }
-      // The clearance lines are drawn on top, in the warning colour, with anti-aliased edges.
+      // Lines and spheres drawn on top (clearance lines, the gate's outlines, the path check's
+      // ring), with anti-aliased edges.
       for (const Segment& line : clearance_lines) {
-        if (distanceToSegment(point, line.a, line.b) <
-            0.5 * CollisionMarkers::kLineWidth + margin_m) {
+        if (distanceToSegment(point, line.a, line.b) < line.half_width + margin_m) {
           covered = true;
         }
       }
@@ -287,6 +332,9 @@ TEST(DemoInRviz, CollidingEllipsesAreRedNearOnesYellowAndClearOnesGreen) {
 
   Recorder<CollisionState> states(nh, nodeTopic("collisions"));
   Recorder<EllipseArray> topic_obstacles(nh, nodeTopic("obstacles"));
+  // Drawn over the ellipses: the gate's outlines and contact point, the path check's ring.
+  Recorder<visualization_msgs::MarkerArray> gate_markers(nh, nodeTopic("gate_markers"));
+  Recorder<visualization_msgs::MarkerArray> path_markers(nh, "/demo_driver/path_check_markers");
   tf2_ros::Buffer tf_buffer;
   tf2_ros::TransformListener tf_listener(tf_buffer);
   ros::ServiceClient pause = nh.serviceClient<std_srvs::SetBool>("/demo_driver/pause");
@@ -398,7 +446,11 @@ TEST(DemoInRviz, CollidingEllipsesAreRedNearOnesYellowAndClearOnesGreen) {
     panel = image.findArea({Rgb::value_type(bg[0]), Rgb::value_type(bg[1]), Rgb::value_type(bg[2])},
                            100);
     if (panel.width() < 200 || panel.height() < 200) continue;  // rviz not up yet
-    verdict = judge(image, view, panel, placed, colliding, warned, frame_origins, clearance_lines);
+    // Every overlay sent so far may still be drawn (rviz lags): none of their pixels is judged.
+    std::vector<Segment> overlays = clearance_lines;
+    addOverlays(gate_markers.all(), &overlays);
+    addOverlays(path_markers.all(), &overlays);
+    verdict = judge(image, view, panel, placed, colliding, warned, frame_origins, overlays);
     if (verdict.problems.empty() && verdict.count(Hue::Red) > 0 && verdict.count(Hue::Green) > 0) {
       break;
     }
