@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstddef>
 
+#include "link_points.h"
+
 namespace ellipse_collision::core {
 namespace {
 
@@ -75,21 +77,7 @@ HullPointsResult hullPoints(const CollisionShape& shape) {
 }
 
 HullPointsResult linkHullPoints(const std::vector<CollisionShape>& shapes) {
-  HullPointsResult result;
-  if (shapes.empty()) {
-    result.error = "shapes is empty";
-    return result;
-  }
-  for (std::size_t i = 0; i < shapes.size(); ++i) {
-    HullPointsResult one = hullPoints(shapes[i]);
-    if (!one.ok()) {
-      result.points.clear();
-      result.error = "shapes[" + std::to_string(i) + "]: " + one.error;
-      return result;
-    }
-    result.points.insert(result.points.end(), one.points.begin(), one.points.end());
-  }
-  return result;
+  return detail::linkPoints<HullPointsResult>(shapes, hullPoints);
 }
 
 EnclosingEllipsoid fitLinkEllipsoid(const std::vector<CollisionShape>& shapes) {

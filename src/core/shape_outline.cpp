@@ -6,6 +6,8 @@
 
 #include "ellipse_collision/core/number_format.h"
 
+#include "link_points.h"
+
 namespace ellipse_collision::core {
 namespace {
 
@@ -148,21 +150,7 @@ OutlineResult outlinePoints(const CollisionShape& shape) {
 }
 
 OutlineResult linkOutline(const std::vector<CollisionShape>& shapes) {
-  OutlineResult result;
-  if (shapes.empty()) {
-    result.error = "shapes is empty";
-    return result;
-  }
-  for (std::size_t i = 0; i < shapes.size(); ++i) {
-    OutlineResult one = outlinePoints(shapes[i]);
-    if (!one.ok()) {
-      result.points.clear();
-      result.error = "shapes[" + std::to_string(i) + "]: " + one.error;
-      return result;
-    }
-    result.points.insert(result.points.end(), one.points.begin(), one.points.end());
-  }
-  return result;
+  return detail::linkPoints<OutlineResult>(shapes, outlinePoints);
 }
 
 EnclosingEllipse fitLinkEllipse(const std::vector<CollisionShape>& shapes) {
