@@ -75,7 +75,16 @@ void expectRefused(const std::string& type, const std::string& name, const std::
       });
   ros::AsyncSpinner spinner(1);
   spinner.start();
-  ASSERT_TRUE(test::waitUntil([&] { return log_sub.getNumPublishers() > 0; }, 10.0));
+  // Every node publishes /rosout; the manager's fatal log reaches this subscriber only once it is
+  // connected to the manager itself, so wait for a connection to each publisher the master lists.
+  ASSERT_TRUE(test::waitUntil(
+      [&] {
+        const std::vector<std::string> publishers = topicNodes("/rosout", true);
+        return contains(publishers, kManager) && log_sub.getNumPublishers() >= publishers.size();
+      },
+      10.0))
+      << log_sub.getNumPublishers() << " of " << topicNodes("/rosout", true).size()
+      << " /rosout publishers connected";
 
   const test::CommandRun run = test::runCommand(
       "rosrun nodelet nodelet load " + type + " " + kManager + " __name:=" + name, 60);
