@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <mutex>
 #include <set>
@@ -74,8 +75,12 @@ Hue hueOf(const Rgb& colour) {
 }
 
 /// ((u / radius_x)^2 + (v / radius_y)^2)^(1/2) for `point` in the ellipse's own axes (u, v) after
-/// growing both radii by `grow_m`: <= 1 inside.
+/// growing both radii by `grow_m`: <= 1 inside. An ellipse shrunk to nothing (a radius at most
+/// -grow_m, as thin scan obstacles are by the edge margin) has no inside: +inf.
 double normalisedRadius(const core::Ellipse& e, const Eigen::Vector2d& point, double grow_m) {
+  if (e.radius_x + grow_m <= 0.0 || e.radius_y + grow_m <= 0.0) {
+    return std::numeric_limits<double>::infinity();
+  }
   const Eigen::Vector2d d = point - e.center;
   const double c = std::cos(e.angle);
   const double s = std::sin(e.angle);
