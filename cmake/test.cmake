@@ -85,7 +85,7 @@ add_dependencies(test_check_ellipses check_ellipses)
 target_compile_options(test_check_ellipses PRIVATE ${ELLIPSE_COLLISION_WARNINGS})
 
 # ---- application layer (test/app): no ROS library, transforms from a table --------------------
-ellipse_collision_add_gtest(test_app LIBRARIES ellipse_collision_app SOURCES
+ellipse_collision_add_gtest(test_app LIBRARIES ellipse_collision_app quadmath SOURCES
   test/app/test_ellipse_registry.cpp
   test/app/test_field_validation.cpp
   test/app/test_collision_check.cpp

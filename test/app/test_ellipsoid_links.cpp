@@ -12,6 +12,7 @@
 #include "ellipse_collision/app/link_fitting.h"
 #include "ellipse_collision/app/path_request.h"
 #include "ellipse_collision/app/scene_placement.h"
+#include "shadow_oracle.h"
 #include "spec_builders.h"
 
 namespace ellipse_collision::app {
@@ -138,15 +139,6 @@ TEST(EllipsoidLinks, PathCheckMovesTheRolledArmsShadow) {
   EXPECT_EQ(lost.skipped.size(), 1u);
 }
 
-/// ((x, y) - c) in the ellipse's axes over its radii, squared and summed, in long double.
-long double shadowForm(const core::Ellipse& e, long double x, long double y) {
-  const long double c = std::cos(static_cast<long double>(e.angle));
-  const long double s = std::sin(static_cast<long double>(e.angle));
-  const long double dx = x - e.center.x(), dy = y - e.center.y();
-  const long double along = (c * dx + s * dy) / e.radius_x, across = (c * dy - s * dx) / e.radius_y;
-  return along * along + across * across;
-}
-
 TEST(EllipsoidLinks, FittedArmFootprintContainsItsCylinderAtEveryRollAndPitch) {
   // Upper arm: cylinder of radius 6 cm and length 40 cm along the link's x, from 0 to 0.4 m.
   core::CollisionShape cylinder;
@@ -192,7 +184,8 @@ TEST(EllipsoidLinks, FittedArmFootprintContainsItsCylinderAtEveryRollAndPitch) {
               Eigen::Vector3d(0.06 * along * std::cos(t), 0.06 * along * std::sin(t), -0.2),
               Eigen::Vector3d(0.06 * along * std::cos(t), 0.06 * along * std::sin(t), 0.2)}) {
           const Eigen::Vector3d p = pose * (cylinder.link_from_shape * local);
-          const double form = static_cast<double>(shadowForm(placed.ellipse.ellipse, p.x(), p.y()));
+          const double form =
+              static_cast<double>(test::shadowForm(placed.ellipse.ellipse, p.x(), p.y()));
           worst = std::max(worst, form - 1.0);
           ASSERT_LE(form, 1.0) << "roll " << roll << " pitch " << pitch;
         }

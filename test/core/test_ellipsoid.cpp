@@ -19,62 +19,23 @@
 #include "ellipse_collision/core/enclosing_ellipsoid.h"
 #include "ellipse_collision/core/frame_projection.h"
 #include "random_source.h"
+#include "shadow_oracle.h"
 
 namespace ellipse_collision::core {
 namespace test {
 namespace {
 
-using quad = __float128;
 using Vec3 = Eigen::Vector3d;
-using QVec3 = Eigen::Matrix<quad, 3, 1>;
-using QMat3 = Eigen::Matrix<quad, 3, 3>;
+using ellipse_collision::test::QMat3;
+using ellipse_collision::test::quad;
+using ellipse_collision::test::QVec3;
 using ellipse_collision::test::RandomSource;
 
 constexpr double kPi = 3.14159265358979323846;
 
-/// The rotation of a quaternion normalised in quad: the oracle's own reading of the orientation.
-QMat3 quadRotation(const Eigen::Quaterniond& q) {
-  quad w = q.w(), x = q.x(), y = q.y(), z = q.z();
-  const quad n = sqrtq(w * w + x * x + y * y + z * z);
-  w /= n, x /= n, y /= n, z /= n;
-  QMat3 r;
-  r << 1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y), 2 * (x * y + w * z),
-      1 - 2 * (x * x + z * z), 2 * (y * z - w * x), 2 * (x * z - w * y), 2 * (y * z + w * x),
-      1 - 2 * (x * x + y * y);
-  return r;
-}
-
-/// The placed ellipsoid {centre + map u : |u| <= 1} in the fixed frame, in quad.
-struct PlacedEllipsoid {
-  QVec3 centre;
-  QMat3 map;
-};
-
-PlacedEllipsoid place(const Ellipsoid& e, const Eigen::Isometry3d& fixed_from_frame) {
-  QMat3 p;
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) p(i, j) = fixed_from_frame.linear()(i, j);
-  }
-  QVec3 t, c;
-  for (int i = 0; i < 3; ++i) t[i] = fixed_from_frame.translation()[i], c[i] = e.center[i];
-  QMat3 d = QMat3::Zero();
-  for (int i = 0; i < 3; ++i) d(i, i) = e.radii[i];
-  return {p * c + t, p * quadRotation(e.orientation) * d};
-}
-
-/// ((x, y) - c) in the ellipse's axes, divided by the radii, squared and summed, in quad.
-quad shadowForm(const Ellipse& e, quad x, quad y) {
-  quad s, c;
-  sincosq(static_cast<quad>(e.angle), &s, &c);
-  const quad dx = x - e.center.x(), dy = y - e.center.y();
-  const quad along = (c * dx + s * dy) / e.radius_x;
-  const quad across = (c * dy - s * dx) / e.radius_y;
-  return along * along + across * across;
-}
-
 /// |diag(r)^-1 R^T (p - c)|^2 in quad: <= 1 inside the ellipsoid.
 quad ellipsoidForm(const Ellipsoid& e, const Vec3& p) {
-  const QMat3 r = quadRotation(e.orientation);
+  const QMat3 r = ellipse_collision::test::quadRotation(e.orientation);
   QVec3 d;
   for (int i = 0; i < 3; ++i) d[i] = static_cast<quad>(p[i]) - e.center[i];
   const QVec3 y = r.transpose() * d;
@@ -114,39 +75,23 @@ struct ShadowRecord {
 
 /// Every projected surface sample inside the shadow; the support point of each of 256 directions
 /// inside and on the boundary to 1e-9 in the quadratic form, plus what the rounding of the centre
-/// to a double costs (4 ulp(|centre|) / radius_y, as for the 2D fit).
+/// to a double costs (4 ulp(|centre|) / radius_y, as for the 2D fit): test::compareShadow().
 void expectExactShadow(const Ellipsoid& e, const Eigen::Isometry3d& pose, RandomSource& random,
                        ShadowRecord& record) {
   const ProjectionResult shadow = shadowOnPlane(e, pose, "e");
   ASSERT_TRUE(shadow.ok()) << shadow.error;
-  const double reach = shadow.ellipse.center.cwiseAbs().maxCoeff();
-  const double touch = 1e-9 + 4.0 * (std::nextafter(reach, 2.0 * reach + 1.0) - reach) /
-                                  shadow.ellipse.radius_y;
   ++record.shadows;
-  const PlacedEllipsoid placed = place(e, pose);
-  for (int k = 0; k < 512; ++k) {
-    QVec3 u(random.normal(), random.normal(), random.normal());
-    u /= sqrtq(u.squaredNorm());
-    const QVec3 x = placed.centre + placed.map * u;
-    const quad form = shadowForm(shadow.ellipse, x[0], x[1]);
-    record.worst_outside = std::max(record.worst_outside, static_cast<double>(form - 1));
-    ASSERT_LE(static_cast<double>(form), 1.0) << "surface sample " << k << " outside the shadow";
-  }
-  for (int k = 0; k < 256; ++k) {
-    const double angle = 2.0 * kPi * k / 256.0;
-    QVec3 w(std::cos(angle), std::sin(angle), 0.0);
-    // The surface point maximising w . x: u = M^T w / |M^T w| (Cauchy–Schwarz).
-    QVec3 u = placed.map.transpose() * w;
-    u /= sqrtq(u.squaredNorm());
-    const QVec3 x = placed.centre + placed.map * u;
-    const quad form = shadowForm(shadow.ellipse, x[0], x[1]);
-    record.worst_slack = std::max(record.worst_slack, static_cast<double>(1 - form));
-    record.worst_own_slack =
-        std::max(record.worst_own_slack, static_cast<double>(1 - form) - (touch - 1e-9));
-    ASSERT_LE(static_cast<double>(form), 1.0) << "support point " << k << " outside the shadow";
-    ASSERT_GE(static_cast<double>(form), 1.0 - touch)
-        << "the shadow does not touch the support point in direction " << k;
-  }
+  const ellipse_collision::test::ShadowAgreement agreement =
+      ellipse_collision::test::compareShadow(shadow.ellipse,
+                                             ellipse_collision::test::placeInQuad(e, pose), random);
+  record.worst_outside = std::max(record.worst_outside, agreement.worst_outside);
+  record.worst_slack = std::max(record.worst_slack, agreement.worst_slack);
+  record.worst_own_slack = std::max(record.worst_own_slack,
+                                    agreement.worst_slack - (agreement.allowed_slack - 1e-9));
+  ASSERT_LE(agreement.worst_outside, 0.0) << "a surface sample outside the shadow";
+  ASSERT_LE(agreement.worst_support_outside, 0.0) << "a support point outside the shadow";
+  ASSERT_LE(agreement.worst_slack, agreement.allowed_slack)
+      << "the shadow does not touch the support point in some direction";
 }
 
 TEST(EllipsoidShadow, RolledCylinderKeepsItsStrip) {
