@@ -26,13 +26,30 @@ std::optional<FieldError> findInvalidField(const EllipseSpec& spec, const std::s
     if (violation) return fieldError(key, *violation);
   }
   if (spec.ellipsoid) {
+    const EllipsoidPart& part = *spec.ellipsoid;
     const std::pair<const char*, std::optional<core::ValueViolation>> depth[] = {
-        {"z", core::coordinateViolation(spec.ellipsoid->z)},
-        {"roll", core::angleViolation(spec.ellipsoid->roll)},
-        {"pitch", core::angleViolation(spec.ellipsoid->pitch)},
-        {"radius_z", core::radiusViolation(spec.ellipsoid->radius_z)}};
+        {"z", core::coordinateViolation(part.z)},
+        {"roll", core::angleViolation(part.roll)},
+        {"pitch", core::angleViolation(part.pitch)}};
     for (const auto& [key, violation] : depth) {
       if (violation) return fieldError(key, *violation);
+    }
+    // radius_z = 0 is how a message says "planar" (msg/Ellipse.msg): a tilt or height given
+    // with it is an ellipsoid whose depth was left out, refused rather than read as flat.
+    if (part.radius_z == 0.0) {
+      const std::pair<const char*, double> tilt[] = {
+          {"z", part.z}, {"roll", part.roll}, {"pitch", part.pitch}};
+      for (const auto& [key, value] : tilt) {
+        if (value != 0.0) {
+          return FieldError{key,
+                            "0 when radius_z = 0 (a planar ellipse); z, roll and pitch describe "
+                            "an ellipsoid, which needs radius_z > 0",
+                            formatNumber(value)};
+        }
+      }
+    }
+    if (const auto violation = core::radiusViolation(part.radius_z)) {
+      return fieldError("radius_z", *violation);
     }
   }
   if (!std::isfinite(spec.padding) || !(spec.padding >= 0.0)) {

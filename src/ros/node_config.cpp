@@ -18,9 +18,10 @@ namespace {
 
 using XmlRpc::XmlRpcValue;
 
-const char* const kEllipseKeys = "name, frame, x, y, angle, radius_x, radius_y, padding";
-// Links may also be ellipsoids (app::EllipsoidPart): radius_z makes one, z, roll, pitch optional.
-const char* const kEllipsoidKeys = "z, roll, pitch, radius_z";
+// Links and obstacles alike; radius_z makes an ellipsoid (app::EllipsoidPart), z, roll, pitch
+// optional with it.
+const char* const kEllipseKeys =
+    "name, frame, x, y, angle, radius_x, radius_y, padding, z, roll, pitch, radius_z";
 
 std::string describeValue(const XmlRpcValue& value) {
   XmlRpcValue copy = value;  // the conversion operators of XmlRpcValue are not const
@@ -111,8 +112,8 @@ std::string readFrame(const XmlRpcValue& value, const std::string& where, const 
   return frame;
 }
 
-app::EllipseSpec readEllipse(const XmlRpcValue& entry, const std::string& where, double global_padding,
-                             bool ellipsoid_allowed) {
+app::EllipseSpec readEllipse(const XmlRpcValue& entry, const std::string& where,
+                             double global_padding) {
   if (entry.getType() != XmlRpcValue::TypeStruct) {
     throw ConfigError(where + ": expected a dict with keys " + std::string(kEllipseKeys) +
                       ", got " + describeValue(entry));
@@ -122,27 +123,26 @@ app::EllipseSpec readEllipse(const XmlRpcValue& entry, const std::string& where,
   if (entry.hasMember("name") && entry["name"].getType() == XmlRpcValue::TypeString) {
     label = where + " (name '" + readString(entry["name"], where, "name") + "')";
   }
-  std::set<std::string> known = {"name",  "frame",    "x",        "y",
-                                 "angle", "radius_x", "radius_y", "padding"};
-  const std::string expected =
-      std::string(kEllipseKeys) + (ellipsoid_allowed ? ", " + std::string(kEllipsoidKeys) : "");
-  if (ellipsoid_allowed) known.insert({"z", "roll", "pitch", "radius_z"});
+  static const std::set<std::string> known = {"name",     "frame",    "x",       "y",
+                                              "angle",    "radius_x", "radius_y", "padding",
+                                              "z",        "roll",     "pitch",   "radius_z"};
   for (auto it = entry.begin(); it != entry.end(); ++it) {
     if (!known.count(it->first)) {
-      throw ConfigError(label + ": unknown key '" + it->first + "' (expected one of " + expected +
-                        ")");
+      throw ConfigError(label + ": unknown key '" + it->first + "' (expected one of " +
+                        kEllipseKeys + ")");
     }
   }
   const bool ellipsoid = entry.hasMember("z") || entry.hasMember("roll") ||
                          entry.hasMember("pitch") || entry.hasMember("radius_z");
   if (ellipsoid && !entry.hasMember("radius_z")) {
-    throw ConfigError(label + ": missing key 'radius_z' (z, roll and pitch describe an ellipsoid "
-                              "link, which needs radius_z)");
+    throw ConfigError(label + ": missing key 'radius_z' (z, roll and pitch describe an ellipsoid, "
+                              "which needs radius_z)");
   }
   for (const char* key : {"name", "frame", "x", "y", "angle", "radius_x", "radius_y"}) {
     if (!entry.hasMember(key)) {
       throw ConfigError(label + ": missing key '" + key +
-                        "' (required: " + std::string(kEllipseKeys) + "; padding is optional)");
+                        "' (required: name, frame, x, y, angle, radius_x, radius_y; padding is "
+                        "optional, radius_z with optional z, roll, pitch makes an ellipsoid)");
     }
   }
 
@@ -176,7 +176,7 @@ std::vector<app::EllipseSpec> readEllipseList(const XmlRpcValue& list, const std
   }
   std::vector<app::EllipseSpec> specs;
   for (int i = 0; i < list.size(); ++i) {
-    specs.push_back(readEllipse(list[i], app::entryName(key, i), global_padding, key == "links"));
+    specs.push_back(readEllipse(list[i], app::entryName(key, i), global_padding));
   }
   return specs;
 }

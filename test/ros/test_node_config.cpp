@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <vector>
 
 #include "ellipse_collision/ros/node_config.h"
 
@@ -203,29 +204,46 @@ TEST(NodeConfig, UnknownKeysStopTheNodeInsteadOfBeingIgnored) {
   EXPECT_CONTAINS(errorOf(p), "links[0] (name 'arm'): unknown key 'radius'");
 }
 
-TEST(NodeConfig, LinksMayBeEllipsoidsWithRadiusZ) {
-  XmlRpcValue p = validParams();
-  p["links"][0]["radius_z"] = 0.06;
-  p["links"][0]["roll"] = 0.5;
-  p["links"][0]["z"] = 0.1;
-  const NodeConfig config = parseNodeConfig(p);
-  ASSERT_TRUE(config.links[0].ellipsoid);
-  EXPECT_EQ(config.links[0].ellipsoid->radius_z, 0.06);
-  EXPECT_EQ(config.links[0].ellipsoid->roll, 0.5);
-  EXPECT_EQ(config.links[0].ellipsoid->pitch, 0.0);
-  EXPECT_EQ(config.links[0].ellipsoid->z, 0.1);
-  EXPECT_FALSE(config.links[1].ellipsoid);
+TEST(NodeConfig, LinksAndObstaclesMayBeEllipsoidsWithRadiusZ) {
+  // The same keys, rules and messages for both lists; the other entry of each stays planar.
+  for (const std::string list : {"links", "obstacles"}) {
+    SCOPED_TRACE(list);
+    XmlRpcValue p = validParams();
+    p["obstacles"][1] = ellipseEntry("chair", "map", -3.0, 0.3);
+    p[list][0]["radius_z"] = 0.06;
+    p[list][0]["roll"] = 0.5;
+    p[list][0]["z"] = 0.1;
+    const NodeConfig config = parseNodeConfig(p);
+    const std::vector<app::EllipseSpec>& specs = list == "links" ? config.links : config.obstacles;
+    ASSERT_EQ(specs.size(), 2u);
+    ASSERT_TRUE(specs[0].ellipsoid);
+    EXPECT_EQ(specs[0].ellipsoid->radius_z, 0.06);
+    EXPECT_EQ(specs[0].ellipsoid->roll, 0.5);
+    EXPECT_EQ(specs[0].ellipsoid->pitch, 0.0);
+    EXPECT_EQ(specs[0].ellipsoid->z, 0.1);
+    EXPECT_FALSE(specs[1].ellipsoid);
 
-  p = validParams();
-  p["links"][0]["pitch"] = 0.3;  // an ellipsoid key without radius_z
-  EXPECT_CONTAINS(errorOf(p), "links[0] (name 'arm'): missing key 'radius_z'");
-  p = validParams();
-  p["links"][0]["radius_z"] = -1.0;
-  EXPECT_CONTAINS(errorOf(p), "radius_z");
-  p = validParams();
-  p["obstacles"][0]["radius_z"] = 0.1;  // obstacles stay planar
-  EXPECT_CONTAINS(errorOf(p), "obstacles[0] (name 'table'): unknown key 'radius_z'");
-  p = validParams();
+    const std::string entry = list + "[0] (name '" + (list == "links" ? "arm" : "table") + "')";
+    p = validParams();
+    p[list][0]["pitch"] = 0.3;  // an ellipsoid key without radius_z
+    EXPECT_EQ(errorOf(p), entry + ": missing key 'radius_z' (z, roll and pitch describe an "
+                                  "ellipsoid, which needs radius_z)");
+    p = validParams();
+    p[list][0]["radius_z"] = -1.0;
+    EXPECT_EQ(errorOf(p), entry + ", key 'radius_z': expected a finite number > 0, got -1");
+    p[list][0]["radius_z"] = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_EQ(errorOf(p), entry + ", key 'radius_z': expected a finite number > 0, got nan");
+    p[list][0]["radius_z"] = 0.0;
+    p[list][0]["roll"] = 1.5;
+    EXPECT_EQ(errorOf(p), entry + ", key 'roll': expected 0 when radius_z = 0 (a planar ellipse); "
+                                  "z, roll and pitch describe an ellipsoid, which needs radius_z > "
+                                  "0, got 1.5");
+    p = validParams();
+    p[list][0]["radius_z"] = 0.1;
+    p[list][0]["yaw"] = 0.1;  // the yaw is `angle`
+    EXPECT_CONTAINS(errorOf(p), entry + ": unknown key 'yaw'");
+  }
+  XmlRpcValue p = validParams();
   p["links_from_urdf"]["shape"] = "sphere";
   EXPECT_CONTAINS(errorOf(p), "shape");
 }

@@ -12,11 +12,12 @@
 
 namespace ellipse_collision::app {
 
-/// The third dimension of a link that tilts with its frame (an arm's links): with the spec's x,
-/// y, radius_x, radius_y and angle (the yaw) it makes the ellipsoid {c + R D u : |u| <= 1},
-/// c = (x, y, z), R = Rz(angle) Ry(pitch) Rx(roll), D = diag(radius_x, radius_y, radius_z), all in
-/// frame_id. Such a link is checked by its shadow on the fixed frame's plane
-/// (core::shadowOnPlane()), which covers it at every joint angle.
+/// The third dimension of a link that tilts with its frame (an arm's links) or of an obstacle
+/// that is a 3D body (a cluster of a point cloud): with the spec's x, y, radius_x, radius_y and
+/// angle (the yaw) it makes the ellipsoid {c + R D u : |u| <= 1}, c = (x, y, z),
+/// R = Rz(angle) Ry(pitch) Rx(roll), D = diag(radius_x, radius_y, radius_z), all in frame_id.
+/// Such an ellipse is checked by its shadow on the fixed frame's plane (core::shadowOnPlane()),
+/// which covers it however its frame tilts.
 struct EllipsoidPart {
   double z{0.0};         ///< centre in frame_id [m]
   double roll{0.0};      ///< about the ellipsoid's x axis [rad]
@@ -40,15 +41,17 @@ struct EllipseSpec {
   double vx{0.0};                ///< [m/s]
   double vy{0.0};                ///< [m/s]
   double angular_velocity{0.0};  ///< about the centre, counter-clockwise about frame_id's z [rad/s]
-  /// Set for an ellipsoid link (links only: configuration and URDF fits); otherwise the ellipse
-  /// lies in frame_id's xy-plane.
+  /// Set for an ellipsoid (links and obstacles alike: configuration, URDF fits, messages, the
+  /// obstacle store); otherwise the ellipse lies in frame_id's xy-plane.
   std::optional<EllipsoidPart> ellipsoid;
 };
 
 /// Checks every field of `spec` except whether its frame exists (that needs tf): name and frame
 /// non-empty, frame without a leading '/', the core's value rules for the centre, angle and radii
-/// (core::coordinateViolation() and friends; for an ellipsoid also z, roll, pitch, radius_z),
-/// padding finite, >= 0 and <= kMaxRadius; vx, vy
+/// (core::coordinateViolation() and friends; for an ellipsoid also z, roll, pitch, radius_z, and
+/// radius_z = 0 only with z, roll and pitch 0 too: messages give a planar ellipse radius_z = 0,
+/// so an ellipsoid part with radius_z = 0 and a tilt is a forgotten radius_z, refused naming the
+/// first of z, roll, pitch that is not 0), padding finite, >= 0 and <= kMaxRadius; vx, vy
 /// finite within [-core::kMaxSpeed, core::kMaxSpeed], angular_velocity finite within
 /// [-core::kMaxAngularVelocity, core::kMaxAngularVelocity].
 /// `frame_key` is how the caller spells the frame field ("frame_id" in messages, "frame" in YAML).
