@@ -15,6 +15,9 @@ app::EllipseSpec fromMsg(const Ellipse& msg) {
   spec.vx = msg.vx;
   spec.vy = msg.vy;
   spec.angular_velocity = msg.angular_velocity;
+  if (msg.z != 0.0 || msg.roll != 0.0 || msg.pitch != 0.0 || msg.radius_z != 0.0) {
+    spec.ellipsoid = app::EllipsoidPart{msg.z, msg.roll, msg.pitch, msg.radius_z};
+  }
   return spec;
 }
 
@@ -31,6 +34,12 @@ Ellipse toMsg(const app::EllipseSpec& spec) {
   msg.vx = spec.vx;
   msg.vy = spec.vy;
   msg.angular_velocity = spec.angular_velocity;
+  if (spec.ellipsoid) {
+    msg.z = spec.ellipsoid->z;
+    msg.roll = spec.ellipsoid->roll;
+    msg.pitch = spec.ellipsoid->pitch;
+    msg.radius_z = spec.ellipsoid->radius_z;
+  }
   return msg;
 }
 

@@ -44,10 +44,49 @@ void expectSameSpec(const app::EllipseSpec& a, const app::EllipseSpec& b) {
   EXPECT_TRUE(sameBits(a.vx, b.vx));
   EXPECT_TRUE(sameBits(a.vy, b.vy));
   EXPECT_TRUE(sameBits(a.angular_velocity, b.angular_velocity));
+  ASSERT_EQ(a.ellipsoid.has_value(), b.ellipsoid.has_value());
+  if (a.ellipsoid) {
+    EXPECT_TRUE(sameBits(a.ellipsoid->z, b.ellipsoid->z));
+    EXPECT_TRUE(sameBits(a.ellipsoid->roll, b.ellipsoid->roll));
+    EXPECT_TRUE(sameBits(a.ellipsoid->pitch, b.ellipsoid->pitch));
+    EXPECT_TRUE(sameBits(a.ellipsoid->radius_z, b.ellipsoid->radius_z));
+  }
+}
+
+/// sampleSpec() as an ellipsoid, every field of the part a number that is not exactly a double.
+app::EllipseSpec sampleEllipsoid() {
+  app::EllipseSpec spec = sampleSpec();
+  spec.ellipsoid = app::EllipsoidPart{0.3, 1.1, -0.7, 0.45};
+  return spec;
 }
 
 TEST(Conversions, EllipseSpecSurvivesTheRoundTripThroughTheMessage) {
   expectSameSpec(fromMsg(toMsg(sampleSpec())), sampleSpec());
+  expectSameSpec(fromMsg(toMsg(sampleEllipsoid())), sampleEllipsoid());
+}
+
+TEST(Conversions, APlanarEllipseHasZeroDepthAndAnyOtherDepthIsAnEllipsoid) {
+  // A message built without the ellipsoid fields is planar, and a planar spec writes them as 0.
+  Ellipse msg = toMsg(sampleSpec());
+  EXPECT_EQ(msg.z, 0.0);
+  EXPECT_EQ(msg.roll, 0.0);
+  EXPECT_EQ(msg.pitch, 0.0);
+  EXPECT_EQ(msg.radius_z, 0.0);
+  EXPECT_FALSE(fromMsg(msg).ellipsoid);
+  msg.z = -0.0;  // still zero
+  EXPECT_FALSE(fromMsg(msg).ellipsoid);
+  // Any one of the four not 0 (NaN included) makes the ellipsoid part, for the field rules to
+  // judge: a tilt without radius_z is refused there, not read as planar here.
+  for (double Ellipse::*field : {&Ellipse::z, &Ellipse::roll, &Ellipse::pitch, &Ellipse::radius_z}) {
+    for (const double value : {0.25, -1.0, kNaN}) {
+      Ellipse tilted = toMsg(sampleSpec());
+      tilted.*field = value;
+      const app::EllipseSpec spec = fromMsg(tilted);
+      ASSERT_TRUE(spec.ellipsoid);
+      const Ellipse back = toMsg(spec);
+      EXPECT_TRUE(sameBits(back.*field, value));
+    }
+  }
 }
 
 TEST(Conversions, EveryMessageFieldLandsInTheMatchingSpecField) {
@@ -63,6 +102,10 @@ TEST(Conversions, EveryMessageFieldLandsInTheMatchingSpecField) {
   msg.vx = 7;
   msg.vy = 8;
   msg.angular_velocity = 9;
+  msg.z = 10;
+  msg.roll = 11;
+  msg.pitch = 12;
+  msg.radius_z = 13;
   const app::EllipseSpec spec = fromMsg(msg);
   EXPECT_EQ(spec.name, "n");
   EXPECT_EQ(spec.frame_id, "f");
@@ -75,6 +118,11 @@ TEST(Conversions, EveryMessageFieldLandsInTheMatchingSpecField) {
   EXPECT_EQ(spec.vx, 7);
   EXPECT_EQ(spec.vy, 8);
   EXPECT_EQ(spec.angular_velocity, 9);
+  ASSERT_TRUE(spec.ellipsoid);
+  EXPECT_EQ(spec.ellipsoid->z, 10);
+  EXPECT_EQ(spec.ellipsoid->roll, 11);
+  EXPECT_EQ(spec.ellipsoid->pitch, 12);
+  EXPECT_EQ(spec.ellipsoid->radius_z, 13);
   EXPECT_EQ(toMsg(spec), msg);
 }
 
@@ -83,13 +131,17 @@ TEST(Conversions, NonFiniteValuesPassThroughUnchangedForTheValidatorToSee) {
   spec.x = kNaN;
   spec.radius_y = -kInf;
   expectSameSpec(fromMsg(toMsg(spec)), spec);
+  spec = sampleEllipsoid();
+  spec.ellipsoid->radius_z = kNaN;
+  spec.ellipsoid->pitch = kInf;
+  expectSameSpec(fromMsg(toMsg(spec)), spec);
 }
 
 TEST(Conversions, EllipseArrayEntryWithoutFrameTakesTheHeaderFrame) {
   EllipseArray array;
   array.header.frame_id = "odom";
   array.ellipses.push_back(toMsg(sampleSpec()));
-  array.ellipses.push_back(toMsg(sampleSpec()));
+  array.ellipses.push_back(toMsg(sampleEllipsoid()));
   array.ellipses[1].frame_id = "";
   array.ellipses[1].name = "rock";
   const std::vector<app::EllipseSpec> specs = fromMsg(array);
@@ -97,6 +149,9 @@ TEST(Conversions, EllipseArrayEntryWithoutFrameTakesTheHeaderFrame) {
   EXPECT_EQ(specs[0].frame_id, "forearm_link");
   EXPECT_EQ(specs[1].frame_id, "odom");
   EXPECT_EQ(specs[1].name, "rock");
+  EXPECT_FALSE(specs[0].ellipsoid);
+  ASSERT_TRUE(specs[1].ellipsoid);
+  EXPECT_EQ(specs[1].ellipsoid->radius_z, 0.45);
 }
 
 TEST(Conversions, CollidingPairSurvivesTheRoundTripThroughTheMessage) {

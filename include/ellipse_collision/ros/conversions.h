@@ -15,7 +15,10 @@
 
 namespace ellipse_collision {
 
-/// Field by field; no validation (see app::findInvalidPaddedField()).
+/// Field by field; no validation (see app::findInvalidPaddedField()). A message whose z, roll,
+/// pitch and radius_z are all 0 (the defaults) is a planar spec; any other has the ellipsoid part,
+/// a bad one (radius_z <= 0, a tilt without radius_z) for the validation to refuse. toMsg()
+/// writes a planar spec's four as 0, so fromMsg(toMsg(spec)) == spec for every valid spec.
 app::EllipseSpec fromMsg(const Ellipse& msg);
 Ellipse toMsg(const app::EllipseSpec& spec);
 
