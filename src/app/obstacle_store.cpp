@@ -40,6 +40,14 @@ void appendSpec(std::string& out, const char* kind, const EllipseSpec& spec) {
     out += ' ';
     core::appendNumber(out, value);
   }
+  // An ellipsoid's four follow; a planar obstacle's record is what it was before them.
+  if (spec.ellipsoid) {
+    const EllipsoidPart& part = *spec.ellipsoid;
+    for (const double value : {part.z, part.roll, part.pitch, part.radius_z}) {
+      out += ' ';
+      core::appendNumber(out, value);
+    }
+  }
   out += '\n';
 }
 
@@ -60,16 +68,23 @@ bool readText(const std::string& line, std::size_t& pos, std::string& out) {
 }
 
 bool readNumbers(const std::string& line, EllipseSpec& spec) {
-  static constexpr const char* kNames[] = {"x",        "y",       "angle", "radius_x",
-                                           "radius_y", "padding", "vx",    "vy",
-                                           "angular_velocity"};
-  double values[9] = {0.0};
+  static constexpr const char* kNames[] = {
+      "x",  "y",  "angle",           "radius_x", "radius_y", "padding", "vx",
+      "vy", "angular_velocity", "z",        "roll",     "pitch",   "radius_z"};
+  double values[13] = {0.0};
   std::string error;
-  // The velocities (issue 14) follow; a store written before them has none: the obstacle stands.
-  if (core::parseNumberFields(line, kNames, 9, values, error) != core::NumberFields::Numbers &&
-      core::parseNumberFields(line, kNames, 6, values, error) != core::NumberFields::Numbers) {
-    return false;
+  // The velocities follow the ellipse (a store written before them has none: the obstacle
+  // stands), an ellipsoid's z, roll, pitch and radius_z the velocities. The planar record, the
+  // common one, is tried first: it is read once, as before there were ellipsoids.
+  std::size_t count = 0;
+  for (const std::size_t fields : {9, 13, 6}) {
+    if (core::parseNumberFields(line, kNames, fields, values, error) ==
+        core::NumberFields::Numbers) {
+      count = fields;
+      break;
+    }
   }
+  if (count == 0) return false;
   spec.x = values[0];
   spec.y = values[1];
   spec.angle = values[2];
@@ -79,6 +94,7 @@ bool readNumbers(const std::string& line, EllipseSpec& spec) {
   spec.vx = values[6];
   spec.vy = values[7];
   spec.angular_velocity = values[8];
+  if (count == 13) spec.ellipsoid = EllipsoidPart{values[9], values[10], values[11], values[12]};
   return true;
 }
 
@@ -174,7 +190,8 @@ std::string parseObstacles(const std::string& input, StoredObstacles& out) {
       if (!readText(input, pos, spec.name) || !readText(input, pos, spec.frame_id) ||
           !restOfLine(line) || !readNumbers(line, spec)) {
         return at("expected " + kind +
-                  " <name> <frame> x y angle radius_x radius_y padding [vx vy angular_velocity]");
+                  " <name> <frame> x y angle radius_x radius_y padding [vx vy angular_velocity"
+                  " [z roll pitch radius_z]]");
       }
       // The same field rules as every other way into the registry: a hand edit or a disk fault
       // that leaves NaN or a negative radius refuses the file instead of an obstacle that every

@@ -35,11 +35,23 @@ EllipseSpec spec(const std::string& name, const std::string& frame, double x) {
   return s;
 }
 
+/// `s` as an ellipsoid (a point-cloud cluster standing on its side): numbers that need all 17
+/// digits, and a roll of a quarter turn.
+EllipseSpec tilted(EllipseSpec s) {
+  s.ellipsoid = EllipsoidPart{0.7 / 3.0, 1.5707963267948966, -1.0 / 9.0, 0.45};
+  return s;
+}
+
 bool same(const EllipseSpec& a, const EllipseSpec& b) {
+  const bool same_part =
+      a.ellipsoid.has_value() == b.ellipsoid.has_value() &&
+      (!a.ellipsoid || (a.ellipsoid->z == b.ellipsoid->z && a.ellipsoid->roll == b.ellipsoid->roll &&
+                        a.ellipsoid->pitch == b.ellipsoid->pitch &&
+                        a.ellipsoid->radius_z == b.ellipsoid->radius_z));
   return a.name == b.name && a.frame_id == b.frame_id && a.x == b.x && a.y == b.y &&
          a.angle == b.angle && a.radius_x == b.radius_x && a.radius_y == b.radius_y &&
          a.padding == b.padding && a.vx == b.vx && a.vy == b.vy &&
-         a.angular_velocity == b.angular_velocity;
+         a.angular_velocity == b.angular_velocity && same_part;
 }
 
 TEST(ObstacleStore, RoundTripIsExactEvenForNamesWithSpacesColonsAndNewlines) {
@@ -57,6 +69,50 @@ TEST(ObstacleStore, RoundTripIsExactEvenForNamesWithSpacesColonsAndNewlines) {
   ASSERT_EQ(back.topic.size(), 1u);
   EXPECT_TRUE(same(back.topic[0], stored.topic[0]));
   EXPECT_EQ(back.topic_stamp_s, stored.topic_stamp_s);
+}
+
+TEST(ObstacleStore, EllipsoidRoundTripsAndAPlanarRecordIsWrittenAsBefore) {
+  StoredObstacles stored;
+  stored.session = "launch";
+  stored.service = {spec("a", "map", 0.1), tilted(spec("slab", "odom", 2.0))};
+  stored.topic = {tilted(spec("cluster", "base_link", -1.0))};
+  const std::string text = serializeObstacles(stored);
+  // The planar record is the very line written before ellipsoids; the ellipsoid's four follow
+  // its velocities, shortest round-trip numbers too.
+  EXPECT_NE(text.find("service 1:a 3:map 0.1 -0.3333333333333333 0.1 0.3 1e-09 0.05 0.25 "
+                      "-0.14285714285714285 3e-05\n"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("service 4:slab 4:odom 2 -0.3333333333333333 0.1 0.3 1e-09 0.05 0.25 "
+                      "-0.14285714285714285 3e-05 0.2333333333333333 1.5707963267948966 "
+                      "-0.1111111111111111 0.45\n"),
+            std::string::npos)
+      << text;
+  StoredObstacles back;
+  ASSERT_EQ(parseObstacles(text, back), "");
+  ASSERT_EQ(back.service.size(), 2u);
+  EXPECT_FALSE(back.service[0].ellipsoid);
+  ASSERT_TRUE(back.service[1].ellipsoid);
+  EXPECT_TRUE(same(back.service[0], stored.service[0]));
+  EXPECT_TRUE(same(back.service[1], stored.service[1]));
+  ASSERT_EQ(back.topic.size(), 1u);
+  EXPECT_TRUE(same(back.topic[0], stored.topic[0]));
+  EXPECT_EQ(serializeObstacles(back), text);
+}
+
+TEST(ObstacleStore, AnEllipsoidRecordBreakingTheFieldRulesRefusesTheFile) {
+  StoredObstacles out;
+  const std::string head = "ellipse_collision obstacle store 1\nsession 1:s\n";
+  // A roll without radius_z, and a negative radius_z: named as the services name them.
+  EXPECT_EQ(parseObstacles(head + "service 1:a 3:map 1 2 0 0.5 0.5 0 0 0 0 0 1 0 0\nend\n", out),
+            "record 3 (line 3): service obstacle 'a'.roll = 1: expected 0 when radius_z = 0 (a "
+            "planar ellipse); z, roll and pitch describe an ellipsoid, which needs radius_z > 0");
+  EXPECT_EQ(parseObstacles(head + "topic 1:a 3:map 1 2 0 0.5 0.5 0 0 0 0 0 0 0 -1\nend\n", out),
+            "record 3 (line 3): topic obstacle 'a'.radius_z = -1: expected a finite number > 0");
+  // Ten to twelve numbers are neither record.
+  EXPECT_EQ(parseObstacles(head + "service 1:a 3:map 1 2 0 0.5 0.5 0 0 0 0 0.1\nend\n", out)
+                .rfind("record 3: expected service <name> <frame>", 0),
+            0u);
 }
 
 TEST(ObstacleStore, NumbersAreWrittenShortestAndStoresWithSeventeenDigitsStillRead) {
@@ -94,7 +150,7 @@ TEST(ObstacleStore, CorruptTextIsRefusedWithTheLine) {
             0u);
   EXPECT_EQ(parseObstacles("ellipse_collision obstacle store 1\nservice 9:a map 1\nend\n", out),
             "record 2: expected service <name> <frame> x y angle radius_x radius_y padding "
-            "[vx vy angular_velocity]");
+            "[vx vy angular_velocity [z roll pitch radius_z]]");
   // A store written before the velocities: the obstacle stands still.
   StoredObstacles old_store;
   ASSERT_EQ(
@@ -354,6 +410,45 @@ TEST_F(StoreDirectory, WhatIsRestoredAfterAnyCrashIsEveryAcknowledgedServiceChan
     std::vector<std::string> restored_topic;
     for (const EllipseSpec& topic : restored.topic) restored_topic.push_back(topic.name);
     EXPECT_EQ(restored_topic, expected_topic) << "trial " << trial;
+  }
+}
+
+TEST_F(StoreDirectory, EllipsoidObstaclesComeBackAfterARestartAndArePlacedAsBefore) {
+  // A service and a topic obstacle, both ellipsoids, written as the node writes them and read as
+  // a restarted node reads them: the restored registry places them exactly where the live one
+  // did, through a frame tilted 60 degrees where a planar reading would differ.
+  EllipseRegistry live({spec("arm", "map", 0.0)}, {});
+  ObstaclePersistence persistence(path_, "launch", 0);
+  ASSERT_EQ(live.replaceTopicObstacles({tilted(spec("cluster", "map", 3.0))}, "e", 5.0), "");
+  persistence.topicChanged();
+  persistence.writeIfBehind(live);
+  persistence.flush();
+  ASSERT_EQ(live.addObstacles({tilted(spec("slab", "map", 1.0))}, "o"), "");
+  ASSERT_EQ(persistence.afterServiceCall(live, false), "");
+
+  const LoadedStore loaded = loadObstacleStore(path_, "launch");
+  ASSERT_TRUE(loaded.found);
+  EllipseRegistry restarted({spec("arm", "map", 0.0)}, {});
+  ASSERT_EQ(restarted.restore(loaded.obstacles), "");
+  Eigen::Isometry3d tilt = Eigen::Isometry3d::Identity();
+  tilt.linear() = Eigen::AngleAxisd(1.0471975511965976, Eigen::Vector3d::UnitX()).toRotationMatrix();
+  for (const char* name : {"slab", "cluster"}) {
+    SCOPED_TRACE(name);
+    const EllipseSpec& before = live.entries().at(name).spec;
+    const EllipseSpec& after = restarted.entries().at(name).spec;
+    EXPECT_EQ(restarted.entries().at(name).source, live.entries().at(name).source);
+    ASSERT_TRUE(after.ellipsoid);
+    EXPECT_TRUE(same(after, before));
+    const core::ProjectionResult was = placeInPlane(before, 0.02, tilt);
+    const core::ProjectionResult is = placeInPlane(after, 0.02, tilt);
+    ASSERT_TRUE(was.ok() && is.ok()) << was.error << is.error;
+    EXPECT_EQ(is.ellipse.center, was.ellipse.center);
+    EXPECT_EQ(is.ellipse.radius_x, was.ellipse.radius_x);
+    EXPECT_EQ(is.ellipse.radius_y, was.ellipse.radius_y);
+    EXPECT_EQ(is.ellipse.angle, was.ellipse.angle);
+    EllipseSpec planar = before;
+    planar.ellipsoid.reset();
+    EXPECT_NE(placeInPlane(planar, 0.02, tilt).ellipse.radius_y, is.ellipse.radius_y);
   }
 }
 
