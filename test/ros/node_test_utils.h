@@ -38,6 +38,18 @@ inline Ellipse ellipseMsg(const std::string& name, const std::string& frame, dou
   return msg;
 }
 
+/// ellipseMsg() made an ellipsoid: semi-axis radius_z [m] and a tilt in the frame (roll, pitch
+/// [rad], orientation Rz(angle) Ry(pitch) Rx(roll)); centre height 0.
+inline Ellipse ellipsoidMsg(const std::string& name, const std::string& frame, double x, double y,
+                            double radius_x, double radius_y, double radius_z, double roll,
+                            double pitch = 0.0) {
+  Ellipse msg = ellipseMsg(name, frame, x, y, radius_x, radius_y);
+  msg.radius_z = radius_z;
+  msg.roll = roll;
+  msg.pitch = pitch;
+  return msg;
+}
+
 /// Polls `condition` every 20 ms for at most `timeout_s` seconds of wall time.
 inline bool waitUntil(const std::function<bool()>& condition, double timeout_s) {
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);

@@ -239,6 +239,40 @@ TEST_F(NodeServices, EdgeOnFrameIsReportedForThatEllipseOnly) {
   EXPECT_CONTAINS(query.message, "query[0]: ellipse 'knife'");
 }
 
+TEST_F(NodeServices, EllipsoidObstacleRolledAQuarterTurnIsCheckedByItsShadow) {
+  // A slab 0.6 m wide, 0.1 m thin and 0.8 m tall, lying in base_link's plane as given and rolled
+  // a quarter turn about its own x axis to stand on its side: its shadow is 0.3 x 0.4 m, its
+  // planar ellipse would be 0.3 x 0.05. The probe 0.32 m beside its centre (radius 0.05) reaches
+  // into the shadow only; the planar twin 5 m further on is missed by the same probe.
+  const double quarter = M_PI / 2;
+  AddObstacles::Response added =
+      add({ellipsoidMsg("slab", "base_link", 0.0, 30.0, 0.3, 0.05, 0.4, quarter),
+           ellipseMsg("slab_planar", "base_link", 5.0, 30.0, 0.3, 0.05)});
+  ASSERT_TRUE(added.success) << added.message;
+  CheckCollisions::Response r = check(
+      {}, {ellipseMsg("probe", "base_link", 0.0, 30.32, 0.05, 0.05),
+           ellipseMsg("probe_planar", "base_link", 5.0, 30.32, 0.05, 0.05)});
+  ASSERT_TRUE(r.success) << r.message;
+  const CollisionPair* hit = findPair(r.collisions, "probe", "slab");
+  ASSERT_TRUE(hit);
+  // The probe meets the shadow's rim at y = 30.4: scale (0.32) / (0.4 + 0.05).
+  EXPECT_NEAR(hit->contact_scale, 0.32 / 0.45, 1e-9);
+  EXPECT_FALSE(mentions(r.collisions, "probe_planar"));
+  EXPECT_FALSE(mentions(r.collisions, "slab_planar"));
+
+  // In edge_on_link (rolled a quarter turn about x) a planar ellipse is skipped edge-on; an
+  // ellipsoid there is placed: a disk of radius 0.3 and thickness 0.04 shadows as 0.3 x 0.02 m.
+  added = add({ellipsoidMsg("disk", "edge_on_link", 0.0, 0.0, 0.3, 0.3, 0.02, 0.0)});
+  ASSERT_TRUE(added.success) << added.message;
+  r = check({"disk"}, {ellipseMsg("touching", "base_link", 0.25, -20.0, 0.06, 0.01),
+                       ellipseMsg("beside", "base_link", 0.0, -19.9, 0.05, 0.05)});
+  ASSERT_TRUE(r.success) << r.message;
+  EXPECT_EQ(r.message.find("disk"), std::string::npos) << "the disk was skipped: " << r.message;
+  EXPECT_TRUE(findPair(r.collisions, "touching", "disk"));
+  EXPECT_FALSE(mentions(r.collisions, "beside")) << "the shadow is 0.02 m thin";
+  EXPECT_TRUE(remove({"slab", "slab_planar", "disk"}).success);
+}
+
 struct BadObstacles {
   const char* what;
   std::vector<Ellipse> obstacles;
@@ -282,6 +316,25 @@ TEST_F(NodeServices, EveryBadObstacleIsRefusedNamingFieldAndValue) {
       {"name of a link",
        {with(ok, [](Ellipse& m) { m.name = "arm"; })},
        "obstacles[0].name = 'arm'"},
+      {"negative radius_z",
+       {with(ok, [](Ellipse& m) { m.radius_z = -0.4; })},
+       "obstacles[0].radius_z = -0.4: expected a finite number > 0"},
+      {"nan radius_z",
+       {with(ok, [](Ellipse& m) { m.radius_z = kNaN; })},
+       "obstacles[0].radius_z = nan: expected a finite number > 0"},
+      {"inf radius_z",
+       {with(ok, [](Ellipse& m) { m.radius_z = kInf; })},
+       "obstacles[0].radius_z = inf: expected a finite number > 0"},
+      {"roll without radius_z",
+       {with(ok, [](Ellipse& m) { m.roll = 1.5; })},
+       "obstacles[0].roll = 1.5: expected 0 when radius_z = 0 (a planar ellipse)"},
+      {"nan pitch of an ellipsoid",
+       {with(ok,
+             [](Ellipse& m) {
+               m.radius_z = 0.4;
+               m.pitch = kNaN;
+             })},
+       "obstacles[0].pitch = nan: expected a finite number"},
       {"second entry bad",
        {ok, with(ok,
                  [](Ellipse& m) {

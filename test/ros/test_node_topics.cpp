@@ -52,6 +52,8 @@ core::Ellipse shapeOf(const std::string& name) {
       {"rock1", test::makeEllipse(1.0, 2.0, 0.1, 0.1)},  // (2, 0) in odom, like crate
       {"rock2", test::makeEllipse(0.0, 0.0, 0.1, 0.1)},
       {"rock3", test::makeEllipse(0.0, 0.0, 0.1, 0.1)},  // where rock2 was
+      // An ellipsoid of radii (0.2, 0.05, 0.5) at (0, 0.7) rolled a quarter turn: its shadow.
+      {"boulder", test::makeEllipse(0.0, 0.7, 0.2, 0.5)},
   };
   return shapes.at(name);
 }
@@ -451,6 +453,20 @@ TEST_F(NodeTopics, ObstacleStreamReplacesThePreviousTopicObstacles) {
   publishObstacles(obstacles_, "base_link", {});
   EXPECT_TRUE(collisions_.waitForLatest(
       [](const CollisionState& s) { return !mentions(s.collisions, "rock3"); }, 10.0));
+}
+
+TEST_F(NodeTopics, EllipsoidFromTheStreamIsCheckedAndDrawnAsItsShadow) {
+  // A cluster of a point cloud fitted as an ellipsoid standing on its side: its shadow reaches
+  // down to y = 0.2, into body (up to 0.3); its planar ellipse would stop at 0.65.
+  publishObstacles(obstacles_, "base_link",
+                   {ellipsoidMsg("boulder", "", 0.0, 0.7, 0.2, 0.05, 0.5, M_PI / 2)});
+  EXPECT_TRUE(collisions_.waitForLatest(
+      [](const CollisionState& s) { return findPair(s.collisions, "body", "boulder"); }, 10.0));
+  EXPECT_TRUE(waitForView(
+      [](const MarkerView& m) { return isRed(markerNamed(m, "boulder")); }, 10.0));
+  publishObstacles(obstacles_, "base_link", {});
+  EXPECT_TRUE(collisions_.waitForLatest(
+      [](const CollisionState& s) { return !mentions(s.collisions, "boulder"); }, 10.0));
 }
 
 TEST_F(NodeTopics, DiagnosticsReportCountsUnavailableFramesAndCheckDuration) {

@@ -6,6 +6,7 @@
 #include <signal.h>
 
 #include <chrono>
+#include <cmath>
 
 #include "../reliability/reliability_utils.h"
 #include "node_test_utils.h"
@@ -50,13 +51,21 @@ TEST_F(Respawn, KilledNodeComesBackWithEveryAcknowledgedObstacle) {
                   .success);
   ASSERT_TRUE(add({ellipseMsg("spare", "base_link", 0.0, 0.2, 0.1, 0.1)}).success);
   ASSERT_TRUE(remove({"temp"}).success);
-  // A topic obstacle, stamped now.
+  // Ellipsoids standing on their side (rolled a quarter turn), a service and a topic one: only
+  // their shadows reach body (y <= 0.3) and arm (y <= 0.1), their planar ellipses would not.
+  ASSERT_TRUE(
+      add({ellipsoidMsg("slab", "base_link", -0.2, 0.7, 0.1, 0.02, 0.5, M_PI / 2)}).success);
+  // Topic obstacles, stamped now.
   ASSERT_TRUE(waitUntil(
       [&] {
-        publishObstacles(obstacles_, "base_link", {ellipseMsg("rock", "", 1.0, 0.3, 0.1, 0.3)});
+        publishObstacles(obstacles_, "base_link",
+                         {ellipseMsg("rock", "", 1.0, 0.3, 0.1, 0.3),
+                          ellipsoidMsg("cluster", "", 1.0, 0.6, 0.1, 0.02, 0.55, M_PI / 2)});
         return isStored("rock");
       },
       10.0));
+  EXPECT_TRUE(findPair(check().collisions, "arm", "cluster"));
+  EXPECT_TRUE(findPair(check().collisions, "body", "slab"));
   // Topic obstacles reach the store within obstacle_store_period (1 s) of their message; a
   // service call writes only the service record beside it, so that it does not rewrite a
   // perception stream's obstacles. After the period the store holds the rock.
@@ -74,6 +83,8 @@ TEST_F(Respawn, KilledNodeComesBackWithEveryAcknowledgedObstacle) {
   EXPECT_TRUE(findPair(r.collisions, "body", "spare")) << "the replaced configured obstacle";
   EXPECT_TRUE(findPair(r.collisions, "body", "last"));
   EXPECT_TRUE(findPair(r.collisions, "arm", "rock"));
+  EXPECT_TRUE(findPair(r.collisions, "body", "slab")) << "the service ellipsoid, by its shadow";
+  EXPECT_TRUE(findPair(r.collisions, "arm", "cluster")) << "the topic ellipsoid, by its shadow";
   EXPECT_FALSE(isStored("temp")) << "removed before the kill";
   EXPECT_TRUE(isStored("rock"));
 
