@@ -119,13 +119,17 @@ core::Ellipse paddedEllipse(const EllipseSpec& spec, double global_padding) {
 
 core::Ellipsoid paddedEllipsoid(const EllipseSpec& spec, double global_padding) {
   const EllipsoidPart& part = *spec.ellipsoid;
-  const double grow = spec.padding + global_padding;
+  // Summed in paddedEllipse()'s order, so that the radii findInvalidPaddedField() passed are the
+  // very ones the core gets (padding + global padding first could round above kMaxRadius).
+  const auto grown = [&spec, global_padding](double radius) {
+    return radius + spec.padding + global_padding;
+  };
   core::Ellipsoid e;
   e.center = Eigen::Vector3d(spec.x, spec.y, part.z);
   e.orientation = Eigen::AngleAxisd(spec.angle, Eigen::Vector3d::UnitZ()) *
                   Eigen::AngleAxisd(part.pitch, Eigen::Vector3d::UnitY()) *
                   Eigen::AngleAxisd(part.roll, Eigen::Vector3d::UnitX());
-  e.radii = Eigen::Vector3d(spec.radius_x + grow, spec.radius_y + grow, part.radius_z + grow);
+  e.radii = Eigen::Vector3d(grown(spec.radius_x), grown(spec.radius_y), grown(part.radius_z));
   return e;
 }
 

@@ -101,8 +101,8 @@ TEST(EllipsoidObstacles, BadFieldsAreRefusedNamingFieldAndValue) {
 }
 
 /// The oracle's own placed ellipsoid, from the spec's fields as documented (ellipse_spec.h):
-/// centre (x, y, z), orientation Rz(angle) Ry(pitch) Rx(roll) evaluated in quad, radii grown by
-/// padding + global padding.
+/// centre (x, y, z), orientation Rz(angle) Ry(pitch) Rx(roll) evaluated in quad, each radius
+/// grown to radius + padding + global padding (as doubles, summed in that order).
 test::PlacedEllipsoid documentedPlacement(const EllipseSpec& spec, double global_padding,
                                           const Eigen::Isometry3d& fixed_from_frame) {
   using test::quad;
@@ -116,10 +116,10 @@ test::PlacedEllipsoid documentedPlacement(const EllipseSpec& spec, double global
   };
   const EllipsoidPart& part = *spec.ellipsoid;
   const test::QMat3 rotation = turn(spec.angle, 2) * turn(part.pitch, 1) * turn(part.roll, 0);
-  const double grow = spec.padding + global_padding;
+  const auto grown = [&](double radius) { return radius + spec.padding + global_padding; };
   return test::placeInQuad(test::QVec3(spec.x, spec.y, part.z), rotation,
-                           test::QVec3(spec.radius_x + grow, spec.radius_y + grow,
-                                       part.radius_z + grow),
+                           test::QVec3(grown(spec.radius_x), grown(spec.radius_y),
+                                       grown(part.radius_z)),
                            fixed_from_frame);
 }
 

@@ -68,8 +68,8 @@ std::optional<FieldError> findInvalidPaddedField(const EllipseSpec& spec, double
 /// The ellipse in its own frame with both radii grown by spec.padding + global_padding [m].
 core::Ellipse paddedEllipse(const EllipseSpec& spec, double global_padding);
 
-/// The ellipsoid in its own frame with all three radii grown by spec.padding + global_padding [m];
-/// requires spec.ellipsoid.
+/// The ellipsoid in its own frame with all three radii grown as paddedEllipse() grows its two
+/// (radius + spec.padding + global_padding [m], summed in that order); requires spec.ellipsoid.
 core::Ellipsoid paddedEllipsoid(const EllipseSpec& spec, double global_padding);
 
 /// The padded spec placed in the fixed frame's plane through `fixed_from_frame`: a planar spec
