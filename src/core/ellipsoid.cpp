@@ -114,6 +114,15 @@ ProjectionResult shadowOnPlane(const Ellipsoid& in_frame, const Eigen::Isometry3
   // n1 cancels: its error is a few eps times the axis ratio (relative to its norm, about 1).
   const LD ratio = a / b;
   const LD limit = 1.0L - 64.0L * eps * (1.0L + ratio);
+  // The bound is only of use while small against 1: past an axis ratio of about 7e16 (a needle
+  // at least 7e7 m long, as kMinRadius bounds its width) the thin side is lost in that error, and
+  // the limit would reach 0 (and the growth NaN at a ratio of 1.4e17). Refused, not guessed.
+  if (!(limit >= 0.5L)) {
+    result.error = "ellipsoid '" + name + "': its shadow is too thin to certify (axis ratio " +
+                   formatNumber(static_cast<double>(ratio)) + ", at most " +
+                   formatNumber(static_cast<double>(0.5L / (64.0L * eps) - 1.0L)) + ")";
+    return result;
+  }
   const LD growth = largest > limit ? std::sqrt(largest / limit) : 1.0L;
   const LD drift = std::hypot(centre.x() - static_cast<LD>(e.center.x()),
                               centre.y() - static_cast<LD>(e.center.y())) +

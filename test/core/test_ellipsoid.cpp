@@ -160,6 +160,31 @@ TEST(EllipsoidShadow, FlatEllipsoidSeenEdgeOnKeepsItsThickness) {
   expectExactShadow(disk, pose, random, record);
 }
 
+TEST(EllipsoidShadow, NeedleTooThinToCertifyIsRefusedAndOneJustBelowContainsItsSamples) {
+  // A needle 1e9 m long and 1e-9 m thin (axis ratio 1e18): the certification's error bound is
+  // larger than its width, and the shadow is refused by name instead of coming out NaN.
+  Ellipsoid needle;
+  needle.radii = Vec3(1e9, 1e-9, 1e-9);
+  const ProjectionResult refused = shadowOnPlane(needle, Eigen::Isometry3d::Identity(), "needle");
+  EXPECT_EQ(refused.error.rfind("ellipsoid 'needle': its shadow is too thin to certify (axis ratio ",
+                                0),
+            0u)
+      << refused.error;
+  // At an axis ratio of 1e16 it is certified, grown by at most a few percent, and still holds
+  // every projected surface sample (the support slack is the growth, not 1e-9).
+  needle.radii = Vec3(1e7, 1e-9, 1e-9);
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  pose.linear() = Eigen::AngleAxisd(0.5, Vec3::UnitY()).toRotationMatrix();
+  const ProjectionResult shadow = shadowOnPlane(needle, pose, "needle");
+  ASSERT_TRUE(shadow.ok()) << shadow.error;
+  RandomSource random(11);
+  const ellipse_collision::test::ShadowAgreement agreement = ellipse_collision::test::compareShadow(
+      shadow.ellipse, ellipse_collision::test::placeInQuad(needle, pose), random);
+  EXPECT_LE(agreement.worst_outside, 0.0);
+  EXPECT_LE(agreement.worst_support_outside, 0.0);
+  EXPECT_LE(agreement.worst_slack, 0.1);
+}
+
 TEST(EllipsoidShadow, RefusesInvalidInputNamingTheField) {
   Ellipsoid e;
   e.radii.z() = 0.0;

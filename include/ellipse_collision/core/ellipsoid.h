@@ -45,8 +45,10 @@ Eigen::Matrix3d shapeMatrix(const Ellipsoid& ellipsoid);
 /// poses each, side by side), mostly the long double arithmetic of the certification.
 ///
 /// Errors (`name` only names the ellipsoid in them): an invalid `in_frame` (see invalidReason()),
-/// a non-finite transform, or a shadow that invalidReason(Ellipse) refuses (a centre moved beyond
-/// kMaxCoordinate, a radius beyond kMaxRadius).
+/// a non-finite transform, a shadow that invalidReason(Ellipse) refuses (a centre moved beyond
+/// kMaxCoordinate, a radius beyond kMaxRadius), or one too thin to certify: an axis ratio above
+/// about 7e16, where the certification's own error bound reaches half the shadow's width (only a
+/// needle at least 7e7 m long gets there).
 ProjectionResult shadowOnPlane(const Ellipsoid& in_frame, const Eigen::Isometry3d& fixed_from_frame,
                                const std::string& name);
 
