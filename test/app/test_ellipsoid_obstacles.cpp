@@ -226,5 +226,40 @@ TEST(EllipsoidObstacles, ProbeThatOnlyTheShadowReachesCollides) {
   EXPECT_EQ(lost.skipped.size(), 1u);
 }
 
+TEST(EllipsoidObstacles, AShadowTheCoreCannotTakeIsReportedNotChecked) {
+  // Every field within the rules, but a shadow the core cannot take: a ball of radius kMaxRadius,
+  // whose shadow is certified by growing it a few ulps past kMaxRadius, and a needle 1e9 m long
+  // and 1e-9 m thin, 1e9 m away, too thin to certify (core::shadowOnPlane()). Like a planar
+  // ellipse seen edge-on it is not checked: a query fails the request naming it, a stored
+  // obstacle is skipped and the check is not complete.
+  EllipseSpec ball = test::circle("ball", "map", 0.0, 0.0, core::kMaxRadius);
+  ball.ellipsoid = EllipsoidPart{0.0, 0.0, 0.0, core::kMaxRadius};
+  EllipseSpec needle = test::circle("needle", "map", core::kMaxCoordinate, 0.0, core::kMaxRadius);
+  needle.radius_y = core::kMinRadius;
+  needle.ellipsoid = EllipsoidPart{0.0, 0.0, 0.5, core::kMaxRadius};
+  CheckSettings settings;
+  settings.fixed_frame = "map";
+  const EllipseRegistry registry({test::circle("body", "map", 0.0, 0.0, 0.5)}, {});
+  const std::pair<const EllipseSpec*, const char*> cases[] = {
+      {&ball, "ellipsoid 'ball': its shadow is out of range (radius_x = "},
+      {&needle, "ellipsoid 'needle': its shadow is too thin to certify (axis ratio "}};
+  for (const auto& [spec, reason] : cases) {
+    CheckRequest request;
+    request.query = {*spec};
+    ASSERT_EQ(validateCheckRequest(request, registry, 0.0), "");
+    const CheckOutcome query = runCheck(request, registry, settings, fixedAndSide(), 0.0);
+    EXPECT_EQ(query.error_kind, ErrorKind::InvalidRequest);
+    EXPECT_EQ(query.error.rfind(std::string("query[0]: ") + reason, 0), 0u) << query.error;
+
+    const CheckOutcome stored =
+        runCheck({}, EllipseRegistry({test::circle("body", "map", 0.0, 0.0, 0.5)}, {*spec}),
+                 settings, fixedAndSide(), 0.0);
+    EXPECT_EQ(stored.error, "");
+    ASSERT_EQ(stored.skipped.size(), 1u);
+    EXPECT_EQ(stored.skipped[0].rfind(reason, 0), 0u) << stored.skipped[0];
+    EXPECT_FALSE(stored.complete);
+  }
+}
+
 }  // namespace
 }  // namespace ellipse_collision::app
