@@ -33,8 +33,14 @@ using XmlRpc::XmlRpcValue;
 const char* const kRootKeys[] = {
     "fixed_frame",   "rate",           "tf_timeout",       "padding",   "links", "obstacles",
     "allowed_pairs", "self_collision", "warning_distance", "tf_timout", ""};
-const char* const kEllipseKeys[] = {"name",     "frame",    "x",       "y",  "angle",
-                                    "radius_x", "radius_y", "padding", "rad"};
+const char* const kEllipseKeys[] = {"name",     "frame",    "x",     "y",    "angle",
+                                    "radius_x", "radius_y", "padding", "z",  "roll",
+                                    "pitch",    "radius_z", "rad"};
+/// The keys of an ellipsoid: each present less often than the others, so that most entries
+/// stay planar.
+bool isDepthKey(const std::string& key) {
+  return key == "z" || key == "roll" || key == "pitch" || key == "radius_z";
+}
 const char* const kNames[] = {"body", "arm", "crate", "", "a/b", "body "};
 const char* const kFrames[] = {"base_link", "odom", "/odom", "", "arm link"};
 
@@ -91,6 +97,7 @@ XmlRpcValue ellipseEntry(FuzzInput& input, int depth) {
     const bool unknown = std::string(key) == "rad";
     const int presence = input.integer(0, 7);
     if (presence == 0 || (unknown && presence != 1)) continue;  // a missing key
+    if (isDepthKey(key) && presence < 5) continue;
     entry[key] = presence == 7 ? anyValue(input, depth - 1) : valueFor(key, input, depth - 1);
   }
   return entry;
@@ -147,6 +154,12 @@ void checkAccepted(const NodeConfig& config) {
       FUZZ_REQUIRE(
           core::invalidReason(padded).empty(),
           "accepted ellipse '" + spec.name + "' that the core refuses: " + core::invalidReason(padded));
+      if (spec.ellipsoid) {
+        const std::string refused =
+            core::invalidReason(app::paddedEllipsoid(spec, config.padding_m));
+        FUZZ_REQUIRE(refused.empty(), "accepted ellipsoid '" + spec.name +
+                                          "' that the core refuses: " + refused);
+      }
     }
   }
   for (const auto& [a, b] : config.allowed_pairs) {

@@ -31,7 +31,12 @@ bool sameSpec(const EllipseSpec& a, const EllipseSpec& b) {
          sameNumber(a.y, b.y) && sameNumber(a.angle, b.angle) &&
          sameNumber(a.radius_x, b.radius_x) && sameNumber(a.radius_y, b.radius_y) &&
          sameNumber(a.padding, b.padding) && sameNumber(a.vx, b.vx) && sameNumber(a.vy, b.vy) &&
-         sameNumber(a.angular_velocity, b.angular_velocity);
+         sameNumber(a.angular_velocity, b.angular_velocity) &&
+         a.ellipsoid.has_value() == b.ellipsoid.has_value() &&
+         (!a.ellipsoid || (sameNumber(a.ellipsoid->z, b.ellipsoid->z) &&
+                           sameNumber(a.ellipsoid->roll, b.ellipsoid->roll) &&
+                           sameNumber(a.ellipsoid->pitch, b.ellipsoid->pitch) &&
+                           sameNumber(a.ellipsoid->radius_z, b.ellipsoid->radius_z)));
 }
 
 bool sameStore(const StoredObstacles& a, const StoredObstacles& b) {

@@ -5,13 +5,16 @@
 // app::runCheck(), toMsg()), with every frame at the identity except "arm_link", which has none.
 //
 // Invariants:
-//  - fromMsg()/toMsg() keep every field bit for bit; an EllipseArray entry without a frame takes
-//    the header's frame and no other does;
+//  - fromMsg()/toMsg() keep every field bit for bit (but a planar ellipse's z, roll, pitch and
+//    radius_z, zeros of either sign, which come back +0); a message with any of those four not 0
+//    is an ellipsoid; an EllipseArray entry without a frame takes the header's frame and no other
+//    does;
 //  - findInvalidPaddedField() refuses exactly what the documented rule refuses (ellipse_spec.h: finite,
-//    radii > 0, padding >= 0, the core's ranges), and the request error names the entry, the key
-//    and the value;
-//  - a spec it accepts reaches the core valid: paddedEllipse() passes invalidReason(), so that an
-//    accepted obstacle or query is really checked (invalid input never gets to the arithmetic);
+//    radii > 0, padding >= 0, the core's ranges, an ellipsoid's depth fields and radius_z = 0 only
+//    without a tilt), and the request error names the entry, the key and the value;
+//  - a spec it accepts reaches the core valid: paddedEllipse() (and paddedEllipsoid() of an
+//    ellipsoid) passes invalidReason(), so that an accepted obstacle or query is really checked
+//    (invalid input never gets to the arithmetic);
 //  - every registry change is all-or-nothing, links are never replaced or removed, names stay
 //    unique, and what a successful call says it did is what the registry holds afterwards.
 
@@ -48,9 +51,15 @@ std::string pick(FuzzInput& input, const char* const (&table)[N]) {
 bool sameBits(double x, double y) { return std::memcmp(&x, &y, sizeof x) == 0; }
 
 bool sameSpec(const app::EllipseSpec& a, const app::EllipseSpec& b) {
+  const bool same_part =
+      a.ellipsoid.has_value() == b.ellipsoid.has_value() &&
+      (!a.ellipsoid ||
+       (sameBits(a.ellipsoid->z, b.ellipsoid->z) && sameBits(a.ellipsoid->roll, b.ellipsoid->roll) &&
+        sameBits(a.ellipsoid->pitch, b.ellipsoid->pitch) &&
+        sameBits(a.ellipsoid->radius_z, b.ellipsoid->radius_z)));
   return a.name == b.name && a.frame_id == b.frame_id && sameBits(a.x, b.x) && sameBits(a.y, b.y) &&
          sameBits(a.angle, b.angle) && sameBits(a.radius_x, b.radius_x) &&
-         sameBits(a.radius_y, b.radius_y) && sameBits(a.padding, b.padding);
+         sameBits(a.radius_y, b.radius_y) && sameBits(a.padding, b.padding) && same_part;
 }
 
 /// Whether `spec` is stored under its name, from `source`, exactly as given.
@@ -62,9 +71,13 @@ bool storedAsGiven(const app::EllipseRegistry& registry, const app::EllipseSpec&
 }
 
 bool sameMsg(const Ellipse& a, const Ellipse& b) {
+  // A planar ellipse's depth fields: all zero, of either sign.
+  const auto same_depth = [](double x, double y) { return sameBits(x, y) || (x == 0.0 && y == 0.0); };
   return a.name == b.name && a.frame_id == b.frame_id && sameBits(a.x, b.x) && sameBits(a.y, b.y) &&
          sameBits(a.angle, b.angle) && sameBits(a.radius_x, b.radius_x) &&
-         sameBits(a.radius_y, b.radius_y) && sameBits(a.padding, b.padding);
+         sameBits(a.radius_y, b.radius_y) && sameBits(a.padding, b.padding) &&
+         same_depth(a.z, b.z) && same_depth(a.roll, b.roll) && same_depth(a.pitch, b.pitch) &&
+         same_depth(a.radius_z, b.radius_z);
 }
 
 Ellipse readMsg(FuzzInput& input) {
@@ -77,6 +90,12 @@ Ellipse readMsg(FuzzInput& input) {
   msg.radius_x = input.number();
   msg.radius_y = input.number();
   msg.padding = input.flag() ? 0.0 : input.number();
+  // Half planar (the four left at 0), half with each of the four a number or 0.
+  if (input.flag()) {
+    for (double* depth : {&msg.z, &msg.roll, &msg.pitch, &msg.radius_z}) {
+      *depth = input.flag() ? 0.0 : input.number();
+    }
+  }
   return msg;
 }
 
@@ -96,11 +115,25 @@ std::string expectedInvalidKey(const app::EllipseSpec& s, double global_padding)
   if (!std::isfinite(s.angle)) return "angle";
   if (radius_bad(s.radius_x)) return "radius_x";
   if (radius_bad(s.radius_y)) return "radius_y";
+  if (s.ellipsoid) {
+    const app::EllipsoidPart& d = *s.ellipsoid;
+    if (coordinate_bad(d.z)) return "z";
+    if (!std::isfinite(d.roll)) return "roll";
+    if (!std::isfinite(d.pitch)) return "pitch";
+    if (d.radius_z == 0.0 && d.z != 0.0) return "z";
+    if (d.radius_z == 0.0 && d.roll != 0.0) return "roll";
+    if (d.radius_z == 0.0 && d.pitch != 0.0) return "pitch";
+    if (radius_bad(d.radius_z)) return "radius_z";
+  }
   if (!(std::isfinite(s.padding) && s.padding >= 0.0) || s.padding > core::kMaxRadius) return "padding";
   const double padded_x = s.radius_x + s.padding + global_padding;
   const double padded_y = s.radius_y + s.padding + global_padding;
   if (!(padded_x >= core::kMinRadius && padded_x <= core::kMaxRadius)) return "radius_x";
   if (!(padded_y >= core::kMinRadius && padded_y <= core::kMaxRadius)) return "radius_y";
+  if (s.ellipsoid) {
+    const double padded_z = s.ellipsoid->radius_z + s.padding + global_padding;
+    if (!(padded_z >= core::kMinRadius && padded_z <= core::kMaxRadius)) return "radius_z";
+  }
   return "";
 }
 
@@ -133,6 +166,12 @@ std::string validate(const std::vector<Ellipse>& msgs, const std::vector<app::El
                  field + "[" + std::to_string(i) +
                      "] passed request validation but the core refuses it: " +
                      core::invalidReason(padded) + " (spec " + describe(padded) + ")");
+    if (specs[i].ellipsoid) {
+      const std::string refused = core::invalidReason(app::paddedEllipsoid(specs[i], global_padding));
+      FUZZ_REQUIRE(refused.empty(), field + "[" + std::to_string(i) +
+                                        "] passed request validation but the core refuses its "
+                                        "ellipsoid: " + refused);
+    }
   }
   return {};
 }
@@ -291,7 +330,20 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         const bool query_in_arm_link =
             std::any_of(check.query.begin(), check.query.end(),
                         [](const app::EllipseSpec& q) { return q.frame_id == "arm_link"; });
-        FUZZ_REQUIRE(outcome.error.empty() != query_in_arm_link,
+        // An ellipsoid's shadow is certified by growing it (core::shadowOnPlane()): with radii
+        // near kMaxRadius it can leave the core's range even at the identity, and a needle of
+        // axis ratio beyond 7e16 cannot be certified; the query is then refused naming it, as one
+        // seen edge-on is.
+        const bool shadow_out_of_range =
+            outcome.error_kind == app::ErrorKind::InvalidRequest &&
+            outcome.error.rfind("query[", 0) == 0 &&
+            (outcome.error.find("': its shadow is out of range (") != std::string::npos ||
+             outcome.error.find("': its shadow is too thin to certify (") != std::string::npos);
+        FUZZ_REQUIRE(!shadow_out_of_range ||
+                         std::any_of(check.query.begin(), check.query.end(),
+                                     [](const app::EllipseSpec& q) { return q.ellipsoid; }),
+                     "a planar query refused for its shadow: '" + outcome.error + "'");
+        FUZZ_REQUIRE(outcome.error.empty() != (query_in_arm_link || shadow_out_of_range),
                      "runCheck of a validated request: '" + outcome.error + "'");
         FUZZ_REQUIRE(outcome.error.rfind("internal error", 0) != 0,
                      "the core refused a validated scene: " + outcome.error);
