@@ -9,6 +9,9 @@ placed near tangency (t* = 1 -+ delta) and labelled by the 40-digit oracle
 (test/support/contact_scale_oracle.py); the polygon's vertices lie on the rim, as a user's
 `Point(0, 0).buffer(1, 16)` scaled and rotated would.
 
+Then one fixed set of 10,000 obstacles asked about 1,000 robot-sized queries: core.EllipseBatch
+(prepared once, far ellipses culled in SIMD registers) beside overlap_batch per query.
+
 usage: bench_python_overlap.py [--pairs N] [--repetitions R] [--tangent-pairs K]
 Run in the workspace's environment (source build/ws/devel/setup.bash; scripts/benchmark.sh does).
 """
@@ -133,6 +136,56 @@ def main():
             shapely_wrong = int((shapely_overlap(polygons(ta), polygons(tb)) != truth).sum())
             print("%-32s %8d %8d" % ("t* = 1 %s %g (%s)" % ("-" if side < 0 else "+", delta, what),
                                      core_wrong, shapely_wrong))
+
+    fixed_set(args.repetitions)
+
+
+def fixed_set(repetitions, obstacles=10000, queries=1000):
+    """Many questions against one set (a map's obstacles against candidate robot poses):
+    core.EllipseBatch, built once, beside overlap_batch on the query repeated against the set,
+    which prepares the set anew on every call."""
+    generator = numpy.random.default_rng(2025)
+    # Obstacles 0.05..1 m over a 100 m x 100 m floor; robot-sized queries anywhere on it.
+    radius_x = numpy.exp(generator.uniform(math.log(0.05), math.log(1.0), obstacles))
+    rows = numpy.column_stack([generator.uniform(-50, 50, obstacles),
+                               generator.uniform(-50, 50, obstacles), radius_x,
+                               radius_x / generator.uniform(1.0, 5.0, obstacles),
+                               generator.uniform(-math.pi, math.pi, obstacles)])
+    query_rows = numpy.column_stack([generator.uniform(-50, 50, queries),
+                                     generator.uniform(-50, 50, queries),
+                                     numpy.full(queries, 0.5), numpy.full(queries, 0.3),
+                                     generator.uniform(-math.pi, math.pi, queries)])
+    query_ellipses = [core.Ellipse(*row) for row in query_rows.tolist()]
+    build_seconds, batch = cpu_seconds(core.EllipseBatch, rows)
+
+    def with_batch():
+        return [batch.overlap_with(q) for q in query_ellipses]
+
+    def with_overlap_batch():
+        return [core.overlap_batch(numpy.broadcast_to(q, rows.shape), rows) for q in query_rows]
+
+    times = {"set": [], "pairs": []}
+    for _ in range(repetitions):
+        for name, function in (("set", with_batch), ("pairs", with_overlap_batch)):
+            seconds, answers = cpu_seconds(function)
+            times[name].append(seconds)
+            if name == "set":
+                expected = answers
+            else:
+                assert all((x == y).all() for x, y in zip(expected, answers))
+    pairs = obstacles * queries
+    hits = int(sum(x.sum() for x in expected))
+    print()
+    print("One set of %d obstacles, %d queries (%d overlapping pairs), CPU time, median of %d runs"
+          % (obstacles, queries, hits, repetitions))
+    print("%-52s %10s %12s %10s" % ("method", "total [s]", "ns per pair", "vs set"))
+    base = statistics.median(times["set"])
+    for name, label in (("set", "core.EllipseBatch(rows).overlap_with(query)"),
+                        ("pairs", "core.overlap_batch(query repeated, rows)")):
+        median = statistics.median(times[name])
+        print("%-52s %10.3f %12.2f %10.2f" % (label, median, 1e9 * median / pairs, median / base))
+    print("%-52s %10.3f %12.2f   (once, not in the rows above)"
+          % ("  building the EllipseBatch", build_seconds, 1e9 * build_seconds / obstacles))
 
 
 if __name__ == "__main__":

@@ -15,6 +15,7 @@ pybind11_add_module(ellipse_collision_python_core
   src/python/pair_functions.cpp
   src/python/ellipse_rows.cpp
   src/python/batch_functions.cpp
+  src/python/ellipse_batch.cpp
   src/python/enclosing_functions.cpp
   src/python/scene_functions.cpp)
 target_link_libraries(ellipse_collision_python_core PRIVATE ellipse_collision_core)

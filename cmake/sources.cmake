@@ -49,6 +49,7 @@ set(ELLIPSE_COLLISION_APP_SOURCES
   src/app/ellipse_registry.cpp
   src/app/ellipse_spec.cpp
   src/app/field_error.cpp
+  src/app/joint_chain.cpp
   src/app/link_fitting.cpp
   src/app/marker_layout.cpp
   src/app/obstacle_store.cpp

@@ -94,6 +94,7 @@ ellipse_collision_add_gtest(test_app LIBRARIES ellipse_collision_app quadmath SO
   test/app/test_obstacle_store.cpp
   test/app/test_obstacle_store_writer.cpp
   test/app/test_check_health.cpp
+  test/app/test_joint_chain.cpp
   test/app/test_link_fitting.cpp
   test/app/test_marker_layout.cpp
   test/app/test_path_request.cpp

@@ -12,7 +12,9 @@
 #   test      `bash scripts/test.sh` inside (chroot with /proc, /sys and /dev bound); installs with
 #             setup.sh, builds, runs every test, prints "N passed, N failed"
 #   run       `bash scripts/run.sh` inside, headless, for about a minute: the demo's screenshot file
-#             must appear and `rostopic echo -n 1 /ellipse_collision/collisions` must print a state
+#             must appear and `rostopic echo -n 1 /ellipse_collision/collisions` must print a state;
+#             then the install space (scripts/check_install.sh: `catkin_make install`, no links,
+#             the installed node answers from a clean environment)
 # Every mount is undone and the root removed on exit, on failure and on Ctrl-C (--keep keeps the
 # root for a look inside). Downloaded .deb files are cached beside the tarball, so a second run
 # does not download them again; the install step itself runs every time.
@@ -187,6 +189,13 @@ if ! ${skip_run}; then
   run_checks_failed=0
   # roscore of the demo on a port of its own; the screenshot where a user would look for it.
   if in_root 'cd /root/ellipse_collision && bash scripts/check_run.sh 60'; then
+    passed=$((passed + 1))
+  else
+    failed=$((failed + 1))
+    run_checks_failed=1
+  fi
+  # What a user who installs the package gets.
+  if in_root 'cd /root/ellipse_collision && bash scripts/check_install.sh'; then
     passed=$((passed + 1))
   else
     failed=$((failed + 1))

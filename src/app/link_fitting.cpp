@@ -87,6 +87,25 @@ bool ellipsoidSpec(const core::Ellipsoid& fitted, const std::vector<Eigen::Vecto
 
 }  // namespace
 
+const char* nameOf(LinkShape shape) {
+  switch (shape) {
+    case LinkShape::Planar:
+      return "planar";
+    case LinkShape::Ellipsoid:
+      return "ellipsoid";
+    case LinkShape::Auto:
+      break;
+  }
+  return "auto";
+}
+
+std::optional<LinkShape> linkShapeNamed(const std::string& name) {
+  for (const LinkShape shape : {LinkShape::Auto, LinkShape::Planar, LinkShape::Ellipsoid}) {
+    if (name == nameOf(shape)) return shape;
+  }
+  return std::nullopt;
+}
+
 LinkFitResult fitLinkEllipses(const std::vector<LinkGeometry>& links, double padding,
                               LinkShape shape) {
   LinkFitResult result;
@@ -99,7 +118,9 @@ LinkFitResult fitLinkEllipses(const std::vector<LinkGeometry>& links, double pad
     spec.name = link.name;
     spec.frame_id = link.name;
     spec.padding = padding;
-    if (shape == LinkShape::Ellipsoid) {
+    const bool ellipsoid =
+        shape == LinkShape::Ellipsoid || (shape == LinkShape::Auto && link.tilts);
+    if (ellipsoid) {
       const core::EnclosingEllipsoid fit = core::fitLinkEllipsoid(link.shapes);
       if (fit.ok) {
         if (!ellipsoidSpec(fit.ellipsoid, core::linkHullPoints(link.shapes).points, spec)) {

@@ -17,7 +17,9 @@ namespace ellipse_collision::core {
 namespace {
 
 using detail::roundedUp;
-using detail::WeightSolver;
+using detail::PointOrder;
+using detail::weightedMoments;
+using WeightSolver = detail::KhachiyanWeights<2>;
 
 using Vec2 = Eigen::Vector2d;
 using Mat2 = Eigen::Matrix2d;
@@ -96,20 +98,6 @@ struct Affine {
     return {apply(inner.origin), linear * inner.linear, det * inner.det};
   }
 };
-
-/// Weighted centre and covariance of the points under `u`.
-std::pair<Vec2, Mat2> weightedMoments(const std::vector<Vec2>& points, const std::vector<double>& u) {
-  Vec2 c = Vec2::Zero();
-  for (std::size_t i = 0; i < points.size(); ++i) c += u[i] * points[i];
-  Mat2 s = Mat2::Zero();
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    if (u[i] > 0.0) {
-      const Vec2 d = points[i] - c;
-      s.noalias() += u[i] * d * d.transpose();
-    }
-  }
-  return {c, s};
-}
 
 /// Lower-triangular L with L L^T = s (s symmetric positive definite).
 Mat2 cholesky(const Mat2& s) {
@@ -391,7 +379,7 @@ EnclosingEllipse minimumAreaEllipse(const std::vector<Eigen::Vector2d>& points) 
   // round. The weights are affine-invariant, so the second pass continues from the first.
   const Affine principal = principalFrame(hull);
   const std::vector<Vec2> z = intoFrame(principal, hull);
-  WeightSolver solver(hull.size());
+  WeightSolver solver(hull.size(), PointOrder::ConvexPolygon, kMaxOptimiserIterations);
   seedCore(z, solver);
   solver.solve(z, kCoarseGap);
   const Affine round = whiteningFrame(z, solver.weights());

@@ -1,7 +1,8 @@
 #pragma once
 
-// The dual problem of the minimum-area enclosing ellipse (minimumAreaEllipse(),
-// enclosing_ellipse.cpp), solved on a core set of points. Internal to the core (src/core).
+// The dual problem of the minimum-volume enclosing ellipse (minimumAreaEllipse(),
+// enclosing_ellipse.cpp) and ellipsoid (minimumVolumeEllipsoid(), enclosing_ellipsoid.cpp), one
+// solver for both dimensions, solved on a core set of points. Internal to the core (src/core).
 
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
@@ -13,40 +14,65 @@
 #include <utility>
 #include <vector>
 
-#include "ellipse_collision/core/enclosing_ellipse.h"
-
 namespace ellipse_collision::core::detail {
 
-using Vec2 = Eigen::Vector2d;
-using Vec3 = Eigen::Vector3d;
-using Mat3 = Eigen::Matrix3d;
-
-// The lifted dimension of Khachiyan's algorithm: points (x, y, 1) in R^3.
-constexpr double kLifted = 3.0;
-
-// Points added to the core set per round at most: the peaks of the violating runs, worst first,
-// so that a round settles several contact regions while the core stays small.
+// Points added to the core set per round at most: the worst violators (of a polygon, the peaks of
+// the violating runs), so that a round settles several contact regions while the core stays small.
 constexpr std::size_t kCoreAdditions = 16;
 
 // Recompute the moment matrix from the weights this often, so that rounding in the rank-one
 // updates cannot accumulate.
 constexpr int kRefreshInterval = 32;
 
-/// The lifted point (x, y, 1) of Khachiyan's algorithm.
-inline Vec3 lift(const Vec2& p) { return {p.x(), p.y(), 1.0}; }
+/// How the points given to KhachiyanWeights::solve() are arranged: it decides which violators
+/// join the core.
+enum class PointOrder {
+  /// The vertices of a convex polygon in order: the violators come in runs around each place where
+  /// the ellipse is too small, and only each run's peak joins (a dense polygon would otherwise
+  /// fill the core with neighbours of one contact point).
+  ConvexPolygon,
+  /// Any set (a 3D hull's vertices): the worst violators join.
+  Unordered,
+};
+
+/// Weighted centre and covariance of `points` under the weights `u` (summing to 1).
+template <int Dim>
+std::pair<Eigen::Matrix<double, Dim, 1>, Eigen::Matrix<double, Dim, Dim>> weightedMoments(
+    const std::vector<Eigen::Matrix<double, Dim, 1>>& points, const std::vector<double>& u) {
+  Eigen::Matrix<double, Dim, 1> c = Eigen::Matrix<double, Dim, 1>::Zero();
+  for (std::size_t i = 0; i < points.size(); ++i) c += u[i] * points[i];
+  Eigen::Matrix<double, Dim, Dim> s = Eigen::Matrix<double, Dim, Dim>::Zero();
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (u[i] > 0.0) {
+      const Eigen::Matrix<double, Dim, 1> d = points[i] - c;
+      s.noalias() += u[i] * d * d.transpose();
+    }
+  }
+  return {c, s};
+}
 
 /// The weights of Khachiyan's dual problem, max log det X(u), X(u) = sum u_i q_i q_i^T over the
-/// lifted points q_i = (p_i, 1), sum u_i = 1, u >= 0, restricted to a core set of indices.
+/// lifted points q_i = (p_i, 1) in R^(Dim+1), sum u_i = 1, u >= 0, restricted to a core set of
+/// indices.
 ///
 /// On the core, Khachiyan's algorithm with Todd–Yildirim away steps runs first: cheap steps that
 /// converge fast on most sets. When the optimal weights are not unique (many points on the
-/// optimal ellipse, as on co-circular sets) its linear rate can be poor; then a dual interior-
-/// point method finishes: Newton steps on log det X(u) + mu sum log u_i subject to sum u_i = 1,
-/// with mu driven to gap / core size, each step a Cholesky solve of the k x k Hessian (k the
-/// core size, which stays small: the core only gains the peak violator of each region).
-class WeightSolver {
+/// optimal ellipse, as on co-circular sets or a sphere's mesh) its linear rate can be poor; then a
+/// dual interior-point method finishes: Newton steps on log det X(u) + mu sum log u_i subject to
+/// sum u_i = 1, with mu driven to gap / core size, each step a Cholesky solve of the k x k Hessian
+/// (k the core size, which stays small: the core only gains the worst violators of each round).
+template <int Dim>
+class KhachiyanWeights {
  public:
-  explicit WeightSolver(std::size_t size) : u_(size, 0.0), in_core_(size, 0) {}
+  using Point = Eigen::Matrix<double, Dim, 1>;
+  using Lifted = Eigen::Matrix<double, Dim + 1, 1>;
+  using Moment = Eigen::Matrix<double, Dim + 1, Dim + 1>;
+  /// The lifted dimension, the value of omega_i = q_i^T X^-1 q_i at every contact point.
+  static constexpr double kLifted = Dim + 1;
+
+  /// For `size` points in `order`; solve() stops after `max_steps` steps in all.
+  KhachiyanWeights(std::size_t size, PointOrder order, int max_steps)
+      : u_(size, 0.0), in_core_(size, 0), order_(order), max_steps_(max_steps) {}
 
   void addToCore(std::size_t i) {
     if (in_core_[i]) return;
@@ -57,39 +83,43 @@ class WeightSolver {
     for (const std::size_t i : core_) u_[i] = 1.0 / static_cast<double>(core_.size());
   }
   const std::vector<double>& weights() const { return u_; }
+  /// Whether the moment matrix of the weighted core is invertible (its lifted points span
+  /// R^(Dim+1)).
+  bool momentInvertible(const std::vector<Point>& points) const {
+    return Eigen::FullPivLU<Moment>(moment(points)).rank() == Dim + 1;
+  }
 
-  /// Runs until every point satisfies omega_i <= 3 (1 + gap) (or the step budget is spent);
-  /// returns the achieved max omega_i / 3 - 1 over all points. `points` are the vertices of a
-  /// convex polygon in order.
-  double solve(const std::vector<Vec2>& points, double gap) {
+  /// Runs until every point satisfies omega_i <= kLifted (1 + gap) (or the step budget is spent);
+  /// returns the achieved max omega_i / kLifted - 1 over all points, arranged as `order` says.
+  double solve(const std::vector<Point>& points, double gap) {
     for (;;) {
       if (!solveCoreByKhachiyan(points, gap)) solveCoreByInteriorPoint(points, gap);
-      const Mat3 inverse = moment(points).inverse();
+      const Moment inverse = moment(points).inverse();
       omega_.resize(points.size());
       double worst = 0.0;
       for (std::size_t i = 0; i < points.size(); ++i) {
-        const Vec3 q = lift(points[i]);
+        const Lifted q = lift(points[i]);
         omega_[i] = q.dot(inverse * q);
         worst = std::max(worst, omega_[i]);
       }
-      // The points are the hull's vertices in order, so the violators come in runs around each
-      // place where the ellipse is too small; only each run's peak joins the core (a dense
-      // polygon would otherwise fill the core with neighbours of one contact point).
       std::vector<std::pair<double, std::size_t>> violators;
       const std::size_t n = points.size();
-      for (std::size_t i = 0; i < n; ++i) {
-        const double before = omega_[(i + n - 1) % n], after = omega_[(i + 1) % n];
-        if (!in_core_[i] && omega_[i] > kLifted * (1.0 + gap) && omega_[i] > before &&
-            omega_[i] >= after) {
-          violators.emplace_back(omega_[i], i);
+      if (order_ == PointOrder::ConvexPolygon) {  // each run's peak
+        for (std::size_t i = 0; i < n; ++i) {
+          const double before = omega_[(i + n - 1) % n], after = omega_[(i + 1) % n];
+          if (!in_core_[i] && omega_[i] > kLifted * (1.0 + gap) && omega_[i] > before &&
+              omega_[i] >= after) {
+            violators.emplace_back(omega_[i], i);
+          }
         }
       }
-      if (violators.empty()) {  // a run of equal values without a strict peak: take them all
+      // Unordered points, or a run of equal values without a strict peak: take them all.
+      if (violators.empty()) {
         for (std::size_t i = 0; i < n; ++i) {
           if (!in_core_[i] && omega_[i] > kLifted * (1.0 + gap)) violators.emplace_back(omega_[i], i);
         }
       }
-      if (violators.empty() || steps_ >= kMaxOptimiserIterations) return worst / kLifted - 1.0;
+      if (violators.empty() || steps_ >= max_steps_) return worst / kLifted - 1.0;
       const std::size_t count = std::min(kCoreAdditions, violators.size());
       std::partial_sort(violators.begin(), violators.begin() + count, violators.end(),
                         [](const auto& a, const auto& b) { return a.first > b.first; });
@@ -98,11 +128,18 @@ class WeightSolver {
   }
 
  private:
-  Mat3 moment(const std::vector<Vec2>& points) const {
-    Mat3 x = Mat3::Zero();
+  /// The lifted point (p, 1).
+  static Lifted lift(const Point& p) {
+    Lifted q;
+    q << p, 1.0;
+    return q;
+  }
+
+  Moment moment(const std::vector<Point>& points) const {
+    Moment x = Moment::Zero();
     for (const std::size_t i : core_) {
       if (u_[i] > 0.0) {
-        const Vec3 q = lift(points[i]);
+        const Lifted q = lift(points[i]);
         x.noalias() += u_[i] * q * q.transpose();
       }
     }
@@ -113,16 +150,16 @@ class WeightSolver {
   /// weighted one with the smallest, whichever is further from optimality, by the step that
   /// maximises log det X exactly. True when the core is optimal to `gap` within
   /// kKhachiyanSteps steps.
-  bool solveCoreByKhachiyan(const std::vector<Vec2>& points, double gap) {
-    Mat3 x = moment(points);
+  bool solveCoreByKhachiyan(const std::vector<Point>& points, double gap) {
+    Moment x = moment(points);
     int since_refresh = 0;
-    for (int round = 0; round < kKhachiyanSteps && steps_ < kMaxOptimiserIterations; ++round) {
+    for (int round = 0; round < kKhachiyanSteps && steps_ < max_steps_; ++round) {
       ++steps_;
-      const Mat3 inverse = x.inverse();
+      const Moment inverse = x.inverse();
       std::size_t up = core_.front(), down = core_.front();
       double omega_up = -1.0, omega_down = std::numeric_limits<double>::infinity();
       for (const std::size_t i : core_) {
-        const Vec3 q = lift(points[i]);
+        const Lifted q = lift(points[i]);
         const double omega = q.dot(inverse * q);
         if (omega > omega_up) omega_up = omega, up = i;
         if (u_[i] > 0.0 && omega < omega_down) omega_down = omega, down = i;
@@ -145,7 +182,7 @@ class WeightSolver {
       }
       for (const std::size_t i : core_) u_[i] *= 1.0 - step;
       u_[index] = drop ? 0.0 : u_[index] + step;
-      const Vec3 q = lift(points[index]);
+      const Lifted q = lift(points[index]);
       x = (1.0 - step) * x + step * q * q.transpose();
       if (drop || ++since_refresh == kRefreshInterval) {
         normaliseWeights();
@@ -166,7 +203,7 @@ class WeightSolver {
   /// or -inf outside the domain.
   static double barrier(const Eigen::MatrixXd& q, const Eigen::VectorXd& v, double mu) {
     if (v.minCoeff() <= 0.0) return -std::numeric_limits<double>::infinity();
-    Mat3 x = Mat3::Zero();
+    Moment x = Moment::Zero();
     for (Eigen::Index i = 0; i < q.rows(); ++i) {
       x.noalias() += v[i] * q.row(i).transpose() * q.row(i);
     }
@@ -175,22 +212,22 @@ class WeightSolver {
     return std::log(det) + mu * v.array().log().sum();
   }
 
-  void solveCoreByInteriorPoint(const std::vector<Vec2>& points, double gap) {
+  void solveCoreByInteriorPoint(const std::vector<Point>& points, double gap) {
     const Eigen::Index k = static_cast<Eigen::Index>(core_.size());
     const double size = static_cast<double>(k);
     normaliseWeights();
-    Eigen::MatrixXd q(k, 3);
+    Eigen::MatrixXd q(k, Dim + 1);
     for (Eigen::Index i = 0; i < k; ++i) q.row(i) = lift(points[core_[i]]).transpose();
-    // Warm start: mu from the current gap (omega_i <= 3 + k mu on the central path), weights
+    // Warm start: mu from the current gap (omega_i <= kLifted + k mu on the central path), weights
     // moved off the simplex's faces by about mu (where inactive weights sit on the path).
-    const Mat3 start_inverse = moment(points).inverse();
+    const Moment start_inverse = moment(points).inverse();
     double worst = 0.0;
     for (Eigen::Index i = 0; i < k; ++i) {
       worst = std::max(worst, q.row(i).dot(start_inverse * q.row(i).transpose()));
     }
-    // Stop at mu with k mu / 3 = gap / 10: the margin absorbs the inexact centring.
-    const double final_mu = 0.3 * gap / size;
-    double mu = std::clamp(3.0 * (worst / kLifted - 1.0) / size, final_mu, 1e-2 / size);
+    // Stop at mu with k mu / kLifted = gap / 10: the margin absorbs the inexact centring.
+    const double final_mu = (kLifted / 10.0) * gap / size;
+    double mu = std::clamp(kLifted * (worst / kLifted - 1.0) / size, final_mu, 1e-2 / size);
     Eigen::VectorXd v(k);
     for (Eigen::Index i = 0; i < k; ++i) v[i] = u_[core_[i]] + mu;
     v /= v.sum();
@@ -198,15 +235,15 @@ class WeightSolver {
     // Newton on max f(v) = log det X(v) + mu sum log v_i subject to sum v_i = 1: with
     // M = G o G + diag(mu / v^2) (G_ij = q_i^T X^-1 q_j, o the elementwise product), positive
     // definite, the step is d = M^-1 grad - nu M^-1 1 with nu making sum d_i = 0.
-    Eigen::MatrixXd qi(3, k), g(k, k), m(k, k);
+    Eigen::MatrixXd qi(Dim + 1, k), g(k, k), m(k, k);
     Eigen::VectorXd grad(k), a(k), b(k), d(k), md(k), trial(k);
     const Eigen::VectorXd ones = Eigen::VectorXd::Ones(k);
     Eigen::LLT<Eigen::MatrixXd> llt(k);
     for (;; mu = std::max(mu * kMuReduction, final_mu)) {
-      for (int newton = 0; newton < kNewtonStepsPerStage && steps_ < kMaxOptimiserIterations;
+      for (int newton = 0; newton < kNewtonStepsPerStage && steps_ < max_steps_;
            ++newton) {
         ++steps_;
-        Mat3 x = Mat3::Zero();
+        Moment x = Moment::Zero();
         for (Eigen::Index i = 0; i < k; ++i) x.noalias() += v[i] * q.row(i).transpose() * q.row(i);
         qi.noalias() = x.inverse() * q.transpose();
         g.noalias() = q * qi;
@@ -247,7 +284,7 @@ class WeightSolver {
         }
         v = trial / trial.sum();
       }
-      if (mu <= final_mu || steps_ >= kMaxOptimiserIterations) break;
+      if (mu <= final_mu || steps_ >= max_steps_) break;
     }
     for (Eigen::Index i = 0; i < k; ++i) u_[core_[i]] = v[i];
   }
@@ -269,6 +306,8 @@ class WeightSolver {
   std::vector<double> omega_;
   std::vector<char> in_core_;
   std::vector<std::size_t> core_;
+  PointOrder order_;
+  int max_steps_;
   int steps_{0};
 };
 

@@ -14,6 +14,8 @@ void bindValueTypes(pybind11::module_& module);
 void bindPairFunctions(pybind11::module_& module);
 /// The same on N pairs given as numpy arrays, looping in C++ without the GIL (batch_functions.cpp).
 void bindBatchFunctions(pybind11::module_& module);
+/// EllipseBatch: a fixed set of ellipses for many overlap questions (ellipse_batch.cpp).
+void bindEllipseBatch(pybind11::module_& module);
 /// minimum_area_ellipse and enclosing_ellipse_with_min_radius of points (enclosing_functions.cpp).
 void bindEnclosingFunctions(pybind11::module_& module);
 /// check_scene of named ellipses (scene_functions.cpp).

@@ -12,6 +12,7 @@ PYBIND11_MODULE(core, module) {
   ellipse_collision::python::bindValueTypes(module);
   ellipse_collision::python::bindPairFunctions(module);
   ellipse_collision::python::bindBatchFunctions(module);
+  ellipse_collision::python::bindEllipseBatch(module);
   ellipse_collision::python::bindEnclosingFunctions(module);
   ellipse_collision::python::bindSceneFunctions(module);
 }

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <map>
+#include <optional>
 #include <set>
 
 #include "ellipse_collision/app/collision_check.h"
@@ -251,11 +252,10 @@ app::LinkFitResult readLinksFromUrdf(const XmlRpcValue& value, const UrdfLinkFit
     options.padding = readInRange(value["padding"], where, "padding", 0.0, core::kMaxRadius);
   }
   if (value.hasMember("shape")) {
-    const std::string shape = readString(value["shape"], where, "shape");
-    if (shape != "planar" && shape != "ellipsoid") {
-      fail(where, "shape", "'planar' or 'ellipsoid'", "'" + shape + "'");
-    }
-    options.shape = shape == "ellipsoid" ? app::LinkShape::Ellipsoid : app::LinkShape::Planar;
+    const std::string name = readString(value["shape"], where, "shape");
+    const std::optional<app::LinkShape> shape = app::linkShapeNamed(name);
+    if (!shape) fail(where, "shape", app::kLinkShapeNames, "'" + name + "'");
+    options.shape = *shape;
   }
   if (!fit_urdf_links) throw ConfigError(where + ": no URDF reader in this program");
   try {

@@ -10,6 +10,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "ellipse_collision/app/joint_chain.h"
+
 namespace ellipse_collision {
 namespace {
 
@@ -131,6 +133,36 @@ core::CollisionShape toShape(const urdf::Collision& collision, const std::string
   return shape;
 }
 
+/// The joints from the model's root down to `link`, root first, as app::jointChainTilts() reads
+/// them.
+std::vector<app::ChainJoint> chainFromRoot(const urdf::Model& model, const urdf::LinkConstSharedPtr& link) {
+  std::vector<app::ChainJoint> chain;
+  for (urdf::LinkConstSharedPtr at = link; at && at->parent_joint;
+       at = model.getLink(at->parent_joint->parent_link_name)) {
+    const urdf::Joint& joint = *at->parent_joint;
+    app::ChainJoint step;
+    step.origin_rotation = toIsometry(joint.parent_to_joint_origin_transform).linear();
+    step.axis = Eigen::Vector3d(joint.axis.x, joint.axis.y, joint.axis.z);
+    switch (joint.type) {
+      case urdf::Joint::FIXED:
+        step.motion = app::ChainJoint::Motion::Fixed;
+        break;
+      case urdf::Joint::REVOLUTE:
+      case urdf::Joint::CONTINUOUS:
+        step.motion = app::ChainJoint::Motion::Revolute;
+        break;
+      case urdf::Joint::PRISMATIC:
+        step.motion = app::ChainJoint::Motion::Prismatic;
+        break;
+      default:  // floating, planar, unknown
+        step.motion = app::ChainJoint::Motion::Free;
+        break;
+    }
+    chain.insert(chain.begin(), step);
+  }
+  return chain;
+}
+
 std::vector<std::string> namesOf(const urdf::Model& model) {
   std::vector<std::string> names;
   for (const auto& entry : model.links_) names.push_back(entry.first);  // std::map: sorted
@@ -168,7 +200,7 @@ std::vector<app::LinkGeometry> readUrdfLinks(const std::string& urdf_xml, const 
   for (const std::string& name : names.empty() ? namesOf(model) : names) {
     const auto link = model.getLink(name);
     if (!link) throw UrdfError(source + ": '" + name + "' is not a link of the robot model");
-    app::LinkGeometry geometry{name, {}};
+    app::LinkGeometry geometry{name, {}, app::jointChainTilts(chainFromRoot(model, link))};
     // urdfdom puts the single <collision> into collision_array as well.
     for (std::size_t i = 0; i < link->collision_array.size(); ++i) {
       const std::string where =

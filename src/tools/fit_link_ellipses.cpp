@@ -26,9 +26,12 @@ constexpr const char* kUsage =
     "\n"
     "  --links a,b,...  only these links, in this order (default: every link, sorted by name)\n"
     "  --padding M      written as each entry's padding [m] (default 0)\n"
-    "  --shape S        planar (default): the ellipse above; ellipsoid: the minimum-volume\n"
-    "                   ellipsoid of the geometry in 3D (entries with z, roll, pitch, radius_z),\n"
-    "                   whose shadow covers the link however its frame tilts (arms)\n"
+    "  --shape S        auto (default): ellipsoid for the links whose frames can tilt (a\n"
+    "                   joint on the way from the root turns about a non-vertical axis, or a\n"
+    "                   fixed origin tilts the frame), planar for the others;\n"
+    "                   planar: the ellipse above; ellipsoid: the minimum-volume ellipsoid of\n"
+    "                   the geometry in 3D (entries with z, roll, pitch, radius_z), whose\n"
+    "                   shadow covers the link however its frame tilts (arms)\n"
     "\n"
     "Links without collision geometry are reported on standard error and skipped.\n"
     "Exit status: 0 success, 1 the URDF or a mesh cannot be read, 2 usage error.\n";
@@ -46,6 +49,21 @@ std::vector<std::string> splitComma(const std::string& text) {
   return parts;
 }
 
+/// What the printed entries are, for the comment above them.
+std::string shapeComment(ellipse_collision::app::LinkShape shape) {
+  switch (shape) {
+    case ellipse_collision::app::LinkShape::Planar:
+      return "minimum-area ellipses of the links' collision geometry, projected along each "
+             "link's z";
+    case ellipse_collision::app::LinkShape::Ellipsoid:
+      return "minimum-volume ellipsoids of the links' collision geometry";
+    case ellipse_collision::app::LinkShape::Auto:
+      break;
+  }
+  return "minimum-volume ellipsoids of the links whose frames can tilt, minimum-area ellipses "
+         "(along each link's z) of the others";
+}
+
 /// Parses the command line; returns false (after printing why) on a usage error.
 bool parseArguments(const std::vector<std::string>& args, Arguments& out) {
   for (std::size_t i = 0; i < args.size(); ++i) {
@@ -56,13 +74,14 @@ bool parseArguments(const std::vector<std::string>& args, Arguments& out) {
     } else if (arg == "--links" && has_value) {
       out.options.links = splitComma(args[++i]);
     } else if (arg == "--shape" && has_value) {
-      const std::string& shape = args[++i];
-      if (shape != "planar" && shape != "ellipsoid") {
-        std::cerr << "fit_link_ellipses: --shape '" << shape << "': expected planar or ellipsoid\n";
+      const std::string& name = args[++i];
+      const auto shape = ellipse_collision::app::linkShapeNamed(name);
+      if (!shape) {
+        std::cerr << "fit_link_ellipses: --shape '" << name << "': expected "
+                  << ellipse_collision::app::kLinkShapeNames << "\n";
         return false;
       }
-      out.options.shape = shape == "ellipsoid" ? ellipse_collision::app::LinkShape::Ellipsoid
-                                               : ellipse_collision::app::LinkShape::Planar;
+      out.options.shape = *shape;
     } else if (arg == "--padding" && has_value) {
       const std::string& text = args[++i];
       std::size_t used = 0;
@@ -125,11 +144,7 @@ int main(int argc, char** argv) {
     }
     std::cout << ellipse_collision::app::linksYaml(
         result.links,
-        {"fit_link_ellipses " + source +
-             (arguments.options.shape == ellipse_collision::app::LinkShape::Ellipsoid
-                  ? ": minimum-volume ellipsoids of the links' collision geometry"
-                  : ": minimum-area ellipses of the links' collision geometry, projected along "
-                    "each link's z"),
+        {"fit_link_ellipses " + source + ": " + shapeComment(arguments.options.shape),
                        "padding " + ellipse_collision::core::formatNumber(arguments.options.padding) +
                            " m; skipped: " + std::to_string(result.skipped.size()) + " links"});
   } catch (const ellipse_collision::UrdfError& error) {

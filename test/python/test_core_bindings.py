@@ -306,6 +306,59 @@ class BadInputIsRefused(unittest.TestCase):
         self.assertIn("warning_distance = -1", str(caught.exception))
 
 
+class EllipseBatchOfAFixedSet(unittest.TestCase):
+    """core.EllipseBatch answers as overlap() on every pair: far, near, overlapping and within
+    1e-9 of tangency (where the oracle decides)."""
+
+    def test_overlap_with_and_overlap_rows_agree_with_overlap(self):
+        generator = random.Random(21)
+        # Spread over 40 m: most of the set is far from any one query, which the culling decides.
+        obstacles = numpy.vstack([random_rows(generator, 600, spread=20.0),
+                                  random_rows(generator, 200, spread=2.0)])
+        batch = core.EllipseBatch(obstacles)
+        self.assertEqual(len(batch), 800)
+        hits = 0
+        for query_row in random_rows(generator, 40, spread=4.0):
+            query = ellipse(query_row)
+            answers = batch.overlap_with(query)
+            self.assertEqual(answers.dtype, numpy.bool_)
+            expected = [core.overlap(query, ellipse(row)) for row in obstacles]
+            self.assertEqual(answers.tolist(), expected)
+            hits += sum(expected)
+        self.assertGreater(hits, 100)
+        others = random_rows(generator, 800, spread=20.0)
+        numpy.testing.assert_array_equal(batch.overlap_rows(core.EllipseBatch(others)),
+                                         core.overlap_batch(obstacles, others))
+
+    def test_near_tangency_against_the_oracle(self):
+        generator = random.Random(22)
+        for delta in (1e-6, 1e-9):
+            for side in (-1, 1):
+                pairs = contact_scale_oracle.near_tangent_pairs(generator, 25, delta, side)
+                a = core.EllipseBatch(numpy.array([p[0] for p in pairs]))
+                b = core.EllipseBatch(numpy.array([p[1] for p in pairs]))
+                self.assertEqual(a.overlap_rows(b).tolist(), [side < 0] * len(pairs))
+                for ra, rb, _ in pairs:
+                    one = core.EllipseBatch(numpy.array([rb]))
+                    self.assertEqual(one.overlap_with(ellipse(ra)).tolist(), [side < 0])
+
+    def test_bad_rows_and_sizes_are_refused(self):
+        rows = random_rows(random.Random(23), 3)
+        rows[2, 3] = -1.0
+        with self.assertRaises(ValueError) as caught:
+            core.EllipseBatch(rows)
+        self.assertEqual(str(caught.exception), "rows[2]: radius_y = -1 must be > 0")
+        with self.assertRaises(ValueError) as caught:
+            core.EllipseBatch(numpy.zeros((2, 5), dtype=numpy.float32))
+        self.assertIn("rows: dtype float32, expected float64", str(caught.exception))
+        good = core.EllipseBatch(random_rows(random.Random(24), 3))
+        with self.assertRaises(ValueError) as caught:
+            good.overlap_rows(core.EllipseBatch(random_rows(random.Random(25), 2)))
+        self.assertIn("3 ellipses and the other 2", str(caught.exception))
+        self.assertEqual(core.EllipseBatch(numpy.zeros((0, 5))).overlap_with(
+            core.Ellipse(0.0, 0.0, 1.0, 1.0)).shape, (0,))
+
+
 class BatchArrays(unittest.TestCase):
     def test_strided_views_give_the_answers_of_contiguous_copies(self):
         generator = random.Random(9)

@@ -460,6 +460,53 @@ TEST(LinksFromUrdf, AppendsFittedLinksToConfiguredOnes) {
   EXPECT_EQ(config.allowed_pairs.size(), 1u);
 }
 
+/// Which fitted links of `path` are ellipsoids, under `shape`.
+std::map<std::string, bool> ellipsoidLinks(const std::string& path, app::LinkShape shape) {
+  app::LinkFitOptions options;
+  options.shape = shape;
+  std::map<std::string, bool> ellipsoid;
+  for (const auto& [name, spec] : fitFile(path, options)) ellipsoid[name] = spec.ellipsoid.has_value();
+  return ellipsoid;
+}
+
+TEST(LinksFromUrdf, DefaultShapeFitsEllipsoidsForLinksThatTiltAndPlanarEllipsesForTheRest) {
+  // The default is auto. The arm's links sit behind a pitching and a rolling shoulder.
+  EXPECT_EQ(app::LinkFitOptions{}.shape, app::LinkShape::Auto);
+  const std::string arm = kFixtures + "two_link_arm.urdf";
+  EXPECT_EQ(ellipsoidLinks(arm, app::LinkShape::Auto),
+            (std::map<std::string, bool>{{"forearm", true}, {"upper_arm", true}}));
+  // ... and equal what shape: ellipsoid fits.
+  EXPECT_EQ(fitFile(arm, {}).at("upper_arm").ellipsoid->radius_z,
+            fitFile(arm, {{}, 0.0, app::LinkShape::Ellipsoid}).at("upper_arm").ellipsoid->radius_z);
+  // The demo robot turns every joint about a vertical axis: planar, the same as shape: planar.
+  const std::string demo = std::string(ELLIPSE_COLLISION_SOURCE_DIR) + "/demo/urdf/demo_robot.urdf";
+  const auto automatic = fitFile(demo, {}), planar = fitFile(demo, {{}, 0.0, app::LinkShape::Planar});
+  ASSERT_FALSE(automatic.empty());
+  ASSERT_EQ(automatic.size(), planar.size());
+  for (const auto& [name, spec] : automatic) {
+    EXPECT_FALSE(spec.ellipsoid) << name;
+    EXPECT_EQ(spec.radius_x, planar.at(name).radius_x) << name;
+    EXPECT_EQ(spec.radius_y, planar.at(name).radius_y) << name;
+  }
+  // Fixed mounts: yawed, or upside down, stay planar; rolled by 90 degrees it is an ellipsoid.
+  const std::string mounts = R"(<robot name="mounts"><link name="base"/>
+    <link name="yawed"><collision><geometry><box size="0.2 0.1 0.05"/></geometry></collision></link>
+    <link name="flipped"><collision><geometry><box size="0.2 0.1 0.05"/></geometry></collision></link>
+    <link name="rolled"><collision><geometry><box size="0.2 0.1 0.05"/></geometry></collision></link>
+    <joint name="a" type="fixed"><parent link="base"/><child link="yawed"/>
+      <origin rpy="0 0 1.2"/></joint>
+    <joint name="b" type="fixed"><parent link="base"/><child link="flipped"/>
+      <origin rpy="3.141592653589793 0 0"/></joint>
+    <joint name="c" type="fixed"><parent link="base"/><child link="rolled"/>
+      <origin rpy="1.5707963267948966 0 0"/></joint></robot>)";
+  std::map<std::string, bool> ellipsoid;
+  for (const auto& spec : fitUrdfLinks(mounts, "mounts", {}).links) {
+    ellipsoid[spec.name] = spec.ellipsoid.has_value();
+  }
+  EXPECT_EQ(ellipsoid,
+            (std::map<std::string, bool>{{"flipped", false}, {"rolled", true}, {"yawed", false}}));
+}
+
 std::string configErrorOf(const XmlRpc::XmlRpcValue& params) {
   try {
     parseNodeConfig(params, fitFixture);
@@ -480,6 +527,12 @@ TEST(LinksFromUrdf, ErrorsNameTheParameter) {
   params["links_from_urdf"]["padding"] = -1.0;
   EXPECT_NE(configErrorOf(params).find("key 'padding'"), std::string::npos);
   params["links_from_urdf"]["padding"] = 0.0;
+  params["links_from_urdf"]["shape"] = "sideways";
+  EXPECT_NE(configErrorOf(params).find("key 'shape': expected 'auto', 'planar' or 'ellipsoid'"),
+            std::string::npos)
+      << configErrorOf(params);
+  params["links_from_urdf"]["shape"] = "auto";
+  EXPECT_EQ(configErrorOf(params), "");
   params["links_from_urdf"]["link"] = "typo";
   EXPECT_NE(configErrorOf(params).find("unknown key 'link'"), std::string::npos);
   XmlRpc::XmlRpcValue no_reader;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,13 +14,24 @@ namespace ellipse_collision::app {
 struct LinkGeometry {
   std::string name;                           ///< link name, also its tf frame
   std::vector<core::CollisionShape> shapes;   ///< empty: the link has no collision geometry
+  /// Its frame can tilt against the model's root at some joint value (jointChainTilts()).
+  bool tilts{false};
 };
 
 /// The form of a fitted link: Planar, the minimum-area ellipse of the geometry projected along
 /// the link's z axis (right for links that only turn about z: a mobile base); Ellipsoid, the
 /// minimum-volume ellipsoid of the geometry in 3D, whose shadow covers the link however its frame
-/// tilts at run time (an arm's links).
-enum class LinkShape { Planar, Ellipsoid };
+/// tilts at run time (an arm's links); Auto, Ellipsoid for the links that can tilt
+/// (LinkGeometry::tilts) and Planar, the tighter fit, for the others.
+enum class LinkShape { Auto, Planar, Ellipsoid };
+
+/// The names of the link shapes in configurations and on command lines: "auto", "planar",
+/// "ellipsoid".
+const char* nameOf(LinkShape shape);
+/// The shape called `name` (nameOf()), or nothing.
+std::optional<LinkShape> linkShapeNamed(const std::string& name);
+/// The accepted names, for messages: "'auto', 'planar' or 'ellipsoid'".
+constexpr const char* kLinkShapeNames = "'auto', 'planar' or 'ellipsoid'";
 
 /// What to fit: `links` names the links to fit, in this order (empty: every link of the model, in
 /// the model's order); `padding` [m] is written into every fitted entry's own padding field, so
@@ -27,7 +39,7 @@ enum class LinkShape { Planar, Ellipsoid };
 struct LinkFitOptions {
   std::vector<std::string> links;
   double padding{0.0};
-  LinkShape shape{LinkShape::Planar};
+  LinkShape shape{LinkShape::Auto};
 };
 
 /// The fitted link ellipses, the links that were skipped and why, or an error.
@@ -62,9 +74,10 @@ std::vector<std::string> selectedLinks(const std::vector<std::string>& model_lin
 /// LinkShape::Ellipsoid fits core::fitLinkEllipsoid() instead (EllipseSpec::ellipsoid set; its
 /// orientation written as yaw = angle, pitch, roll, then grown by core::growToContain() so that
 /// the ellipsoid the fields describe is still certified); a link whose geometry spans no volume (a
-/// flat plate) gets the planar fit.
+/// flat plate) gets the planar fit. LinkShape::Auto fits the links that tilt so and the others
+/// planar.
 LinkFitResult fitLinkEllipses(const std::vector<LinkGeometry>& links, double padding,
-                              LinkShape shape = LinkShape::Planar);
+                              LinkShape shape = LinkShape::Auto);
 
 /// The `links:` YAML block of config/ellipse_collision.yaml for `specs`: one flow mapping per
 /// entry (ellipsoid links with z, roll, pitch and radius_z too) with every number printed so that it reads back to the same double
