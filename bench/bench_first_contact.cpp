@@ -39,7 +39,6 @@
 #include "first_contact_oracle.h"
 #include "random_source.h"
 #include "reference_methods.h"
-#include "conservative_advancement.h"
 #include "rotating_contact.h"
 
 namespace ellipse_collision::core::bench {
@@ -301,10 +300,8 @@ void compareRotation(int mixed, int grazing, double min_seconds) {
     const Case& c = cases[i];
     const FirstContact r = firstContact(c.a, c.ma, c.b, c.mb, kHorizon);
     // The same pair through the rotating path directly, for its distance() count.
-    detail::RotatingPair p{c.a, c.b, c.mb.velocity - c.ma.velocity, c.ma.angular_velocity,
-                           c.mb.angular_velocity};
-    p.a.center = Eigen::Vector2d::Zero();
-    p.b.center = c.b.center - c.a.center;
+    const detail::RotatingPair p = detail::rotatingPair(c.a, c.ma.velocity, Eigen::Vector2d::Zero(),
+                                                        c.ma.angular_velocity, c.b, c.mb);
     detail::RotationWork work;
     if (!overlap(c.a, c.b)) detail::rotatingContact(p, kHorizon, &work);
     *calls = work.capped ? detail::kMaxRotationSteps : work.distance_calls;
@@ -316,7 +313,7 @@ void compareRotation(int mixed, int grazing, double min_seconds) {
     return Verdict{r.contact, r.time};
   };
   const RotationScore s_new = scoreRotation(cases, counted_new, detail::kMaxRotationSteps);
-  const RotationScore s_old = scoreRotation(cases, counted_old, detail::kMaxAdvancements);
+  const RotationScore s_old = scoreRotation(cases, counted_old, kPlainAdvancementCap);
   auto timed_new = [](std::size_t i) {
     const Case& c = cases[i];
     return firstContact(c.a, c.ma, c.b, c.mb, kHorizon);

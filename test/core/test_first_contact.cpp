@@ -426,9 +426,8 @@ int checkTipGrazing(Generator& g, Report& report, double max_ratio, int pairs) {
       ++report.asymmetric;
       ADD_FAILURE() << "not symmetric: " << describe(c);
     }
-    detail::RotatingPair pair{c.a, c.b, Eigen::Vector2d::Zero(), omega, 0.0};
-    pair.a.center = Eigen::Vector2d::Zero();
-    pair.b.center = c.b.center - c.a.center;
+    const detail::RotatingPair pair = detail::rotatingPair(
+        c.a, Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero(), omega, c.b, c.mb);
     detail::RotationWork work;
     const FirstContact direct = detail::rotatingContact(pair, c.horizon, &work);
     EXPECT_FALSE(work.capped) << describe(c);
