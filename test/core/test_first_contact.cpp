@@ -492,29 +492,21 @@ TEST(FirstContact, EccentricPairsGrazingWhileTurningAreFoundWithinTheResolution)
   // the radii from touching); plain conservative advancement reached its cap on 81 of the 90.
   Generator g(1315);
   GrazingTally tally("rotation: eccentric pairs grazing");
-  constexpr int kPasses = 90;
-  for (int tries = 0; tally.passes() < kPasses && tries < 3000; ++tries) {
-    const int k = tally.passes();
-    const double depth = kGrazingDepths[k % 3];
-    const bool touching = (k / 3) % 2;
-    TurningPass p;
-    if (!drawMotionPass(g, touching ? 1.0 - depth : 1.0 + depth, &p)) continue;
-    ASSERT_EQ(invalidMotionReason(p.a, p.motion_a, p.b, p.motion_b, p.horizon), "") << p.text;
-    const FirstContact ours = firstContact(p.a, p.motion_a, p.b, p.motion_b, p.horizon);
-    EXPECT_TRUE(sameResult(ours, firstContact(p.b, p.motion_b, p.a, p.motion_a, p.horizon)))
-        << p.text;
-    tally.check(ours, p.pass, depth, p.horizon, p.text);
-    // The same pair through the rotating path directly, for its work.
-    detail::RotationWork work;
-    const FirstContact direct = detail::rotatingContact(
-        detail::rotatingPair(p.a, p.motion_a.velocity, Eigen::Vector2d::Zero(),
-                             p.motion_a.angular_velocity, p.b, p.motion_b),
-        p.horizon, &work);
-    EXPECT_EQ(direct.contact, ours.contact) << p.text;
-    tally.work(work.distance_calls, work.capped, p.text);
-  }
-  EXPECT_EQ(tally.passes(), kPasses);
-  EXPECT_EQ(tally.wrong(), 0);
+  checkGrazingPasses(
+      tally, g, drawMotionPass,
+      [](const TurningPass& p) {
+        EXPECT_EQ(invalidMotionReason(p.a, p.motion_a, p.b, p.motion_b, p.horizon), "") << p.text;
+        const FirstContact ours = firstContact(p.a, p.motion_a, p.b, p.motion_b, p.horizon);
+        EXPECT_TRUE(sameResult(ours, firstContact(p.b, p.motion_b, p.a, p.motion_a, p.horizon)))
+            << p.text;
+        return ours;
+      },
+      [](const TurningPass& p, detail::RotationWork* work) {
+        return detail::rotatingContact(
+            detail::rotatingPair(p.a, p.motion_a.velocity, Eigen::Vector2d::Zero(),
+                                 p.motion_a.angular_velocity, p.b, p.motion_b),
+            p.horizon, work);
+      });
 }
 
 TEST(FirstContact, ExtremeSizesAndFarCentresMatchOracle) {

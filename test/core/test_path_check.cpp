@@ -154,25 +154,16 @@ TEST(PathCheck, EccentricOffsetLinkGrazingWhileTurningIsFoundWithinTheResolution
   // 15 passes clear by 1e-8 reported in contact.
   ellipse_collision::test::RandomSource rng(15);
   test::GrazingTally tally("segment: eccentric link grazing");
-  constexpr int kPasses = 90;
-  for (int tries = 0; tally.passes() < kPasses && tries < 3000; ++tries) {
-    const int k = tally.passes();
-    const double depth = test::kGrazingDepths[k % 3];
-    const bool touching = (k / 3) % 2;
-    test::TurningPass p;
-    if (!test::drawSegmentPass(rng, touching ? 1.0 - depth : 1.0 + depth, &p)) continue;
-    ASSERT_EQ(invalidSegmentReason(p.b, p.motion_b, p.horizon), "") << p.text;
-    const FirstContact got = segmentContact(p.a, p.segment, p.b, p.motion_b);
-    tally.check(got, p.pass, depth, p.horizon, p.text);
-    // The same pass through the rotating path directly, for its work.
-    detail::RotationWork work;
-    const FirstContact direct = detail::rotatingContact(
-        detail::segmentPair(p.a, p.segment, p.b, p.motion_b), p.horizon, &work);
-    EXPECT_EQ(direct.contact, got.contact) << p.text;
-    tally.work(work.distance_calls, work.capped, p.text);
-  }
-  EXPECT_EQ(tally.passes(), kPasses);
-  EXPECT_EQ(tally.wrong(), 0);
+  test::checkGrazingPasses(
+      tally, rng, test::drawSegmentPass,
+      [](const test::TurningPass& p) {
+        EXPECT_EQ(invalidSegmentReason(p.b, p.motion_b, p.horizon), "") << p.text;
+        return segmentContact(p.a, p.segment, p.b, p.motion_b);
+      },
+      [](const test::TurningPass& p, detail::RotationWork* work) {
+        return detail::rotatingContact(detail::segmentPair(p.a, p.segment, p.b, p.motion_b),
+                                       p.horizon, work);
+      });
 }
 
 TEST(PathCheck, TimedPathMeetsAMovingObstacleAtTheOracleTime) {

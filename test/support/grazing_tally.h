@@ -1,7 +1,8 @@
 #pragma once
 
 // One tally of first-contact answers on grazing passes (grazing_passes.h) against the quad
-// oracle, shared by test_first_contact, test_velocity_gate and test_path_check.
+// oracle, and the loop that draws and checks them, shared by test_first_contact,
+// test_velocity_gate and test_path_check (which see src/core's rotating_contact.h).
 #include <gtest/gtest.h>
 #include <quadmath.h>
 
@@ -11,6 +12,8 @@
 
 #include "ellipse_collision/core/first_contact.h"
 #include "grazing_passes.h"
+#include "random_source.h"
+#include "rotating_contact.h"
 
 namespace ellipse_collision::core::test {
 
@@ -78,5 +81,28 @@ class GrazingTally {
   int passes_ = 0, contacts_ = 0, wrong_ = 0, conservative_ = 0, most_calls_ = 0, capped_ = 0;
   double worst_early_ = 0.0, worst_late_ = 0.0;
 };
+
+/// Draws `count` passes with `draw(rng, target, &pass)` (grazing_passes.h) at kGrazingDepths in
+/// turn, touching and clear alternately by threes, and checks each: `answer(pass)`, the public
+/// call, against the oracle, and `direct(pass, &work)`, the rotating path on the same pass, for
+/// the same verdict and its work.
+template <class Draw, class Answer, class Direct>
+void checkGrazingPasses(GrazingTally& tally, ellipse_collision::test::RandomSource& rng, Draw draw,
+                        Answer answer, Direct direct, int count = 90) {
+  for (int tries = 0; tally.passes() < count && tries < 3000; ++tries) {
+    const int k = tally.passes();
+    const double depth = kGrazingDepths[k % 3];
+    const bool touching = (k / 3) % 2;
+    TurningPass p;
+    if (!draw(rng, touching ? 1.0 - depth : 1.0 + depth, &p)) continue;
+    const FirstContact got = answer(p);
+    tally.check(got, p.pass, depth, p.horizon, p.text);
+    detail::RotationWork work;
+    EXPECT_EQ(direct(p, &work).contact, got.contact) << p.text;
+    tally.work(work.distance_calls, work.capped, p.text);
+  }
+  EXPECT_EQ(tally.passes(), count);
+  EXPECT_EQ(tally.wrong(), 0);
+}
 
 }  // namespace ellipse_collision::core::test
