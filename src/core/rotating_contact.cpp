@@ -96,13 +96,16 @@ SeparationAlong separationAlong(const SinCosPair& trig, const Ellipse& a, const 
 constexpr int kDirectionSteps = 3;
 
 struct Separation {
-  SeparationAlong best, last;
+  SeparationAlong best;
+  double last_rate;  // of the last direction tried
   Eigen::Vector2d last_direction;
 };
 
-Separation bestSeparation(const Ellipse& a, const Ellipse& b,
-                          const Eigen::Vector2d& centre_velocity, double wa, double wb,
-                          Eigen::Vector2d u) {
+// Inlined into the steps, as before they had two forms (advance()): the call cost 1 % of the
+// benchmark's rotating mix.
+[[gnu::always_inline]] inline Separation bestSeparation(const Ellipse& a, const Ellipse& b,
+                                                        const Eigen::Vector2d& centre_velocity,
+                                                        double wa, double wb, Eigen::Vector2d u) {
   const SinCosPair trig = sinCosPair(a.angle, b.angle);
   SeparationAlong best = separationAlong(trig, a, b, centre_velocity, wa, wb, u);
   SeparationAlong current = best;
@@ -114,14 +117,15 @@ Separation bestSeparation(const Ellipse& a, const Ellipse& b,
     current = separationAlong(trig, a, b, centre_velocity, wa, wb, u);
     if (current.value - current.rounding > best.value - best.rounding) best = current;
   }
-  return {best, current, u};
+  return {best, current.rate, u};
 }
 
-/// f(u, t) (rotating_contact.cpp's comment) less its rounding, evaluated in long double from the
-/// pair's motion (poses, arc and angles at t in long double too), rounded down to a double: for
-/// gaps below the double allowance. u need not be of unit length (f is positively homogeneous
-/// in u).
-double preciseSeparation(const RotatingPair& p, double t, const Eigen::Vector2d& u) {
+/// f(u, t) (the comment above) less its rounding, evaluated in long double from the pair's
+/// motion (poses, arc and angles at t in long double too), rounded down to a double: for gaps
+/// below the double allowance. u need not be of unit length (f is positively homogeneous in u).
+/// Out of line: the steps need it only near a tangency.
+[[gnu::noinline]] double preciseSeparation(const RotatingPair& p, double t,
+                                           const Eigen::Vector2d& u) {
   using Long = long double;
   const Long time = t;
   const auto exact = [](double high, double low) { return Long(high) + low; };
@@ -152,27 +156,24 @@ double preciseSeparation(const RotatingPair& p, double t, const Eigen::Vector2d&
 // reverse, the direction between them; the normal of a's rim at its witness point is then taken.
 constexpr double kWitnessGap = 1e-10;
 
-/// The unit direction from a to b along which they are farthest apart (the maximiser of the
-/// support-function dual), from the witness points of `c`: the gap between them, or for a tiny
-/// gap the outward normal of a's rim at point_a (its witness point is a's support point in that
-/// direction). NaN when there is none.
-Eigen::Vector2d witnessDirection(const Ellipse& a, const Ellipse& b, const Clearance& c) {
-  const Eigen::Vector2d gap = c.point_b - c.point_a;
-  const double gap_length = gap.norm();
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  if (gap_length > kWitnessGap * (boundingRadius(a) + boundingRadius(b))) return gap / gap_length;
+/// The unit outward normal of a's rim at its point `x`, or false when there is none. At a witness
+/// point it is the direction from a to b along which they are farthest apart (the maximiser of
+/// the support-function dual, whose support point the witness point is).
+bool rimNormal(const Ellipse& a, const Eigen::Vector2d& x, Eigen::Vector2d* normal) {
   const SinCos trig = sinCos(a.angle);
-  const Eigen::Vector2d d = c.point_a - a.center;
+  const Eigen::Vector2d d = x - a.center;
   // In a's axes the rim is (x / r_x)^2 + (y / r_y)^2 = 1, whose gradient is the normal.
   const double nx = (trig.cos * d.x() + trig.sin * d.y()) / (a.radius_x * a.radius_x);
   const double ny = (trig.cos * d.y() - trig.sin * d.x()) / (a.radius_y * a.radius_y);
-  const Eigen::Vector2d normal(trig.cos * nx - trig.sin * ny, trig.sin * nx + trig.cos * ny);
-  const double length = normal.norm();
-  return length > 0.0 ? Eigen::Vector2d(normal / length) : Eigen::Vector2d(nan, nan);
+  const Eigen::Vector2d n(trig.cos * nx - trig.sin * ny, trig.sin * nx + trig.cos * ny);
+  const double length = n.norm();
+  if (!(length > 0.0)) return false;
+  *normal = n / length;
+  return true;
 }
 
 // The double separation is evaluated again in long double where its rounding allowance costs
-// more than 1/64 of it (gaps below ~1e-13 of the radii).
+// more than 1/64 of it (gaps below ~1e-13 of the radii) and the steps would stop.
 constexpr double kPreciseBelow = 64.0;
 
 /// The positive root of value + rate s - curvature s^2 / 2 (value > 0, curvature > 0; a curvature
@@ -192,28 +193,15 @@ bool turns(const Ellipse& e, double omega) { return omega != 0.0 && e.radius_x !
 
 }  // namespace
 
-Ellipse RotatingPair::aAt(double t) const {
-  Ellipse e = a;
-  e.angle = a.angle + wa * t;
-  return e;
+Eigen::Vector2d RotatingPair::arcAt(double t) const {
+  const Displacement<double> arc = arcDisplacement(a_arc_velocity.x(), a_arc_velocity.y(), wa, t);
+  return {arc.x, arc.y};
 }
 
-Ellipse RotatingPair::bAt(double t) const {
-  Ellipse e = b;
-  e.center = b.center + w * t;
-  if (hasArc()) {
-    const Displacement<double> arc = arcDisplacement(a_arc_velocity.x(), a_arc_velocity.y(), wa, t);
-    e.center -= Eigen::Vector2d(arc.x, arc.y);
-  }
-  e.angle = b.angle + wb * t;
-  return e;
-}
-
-Eigen::Vector2d RotatingPair::centreVelocityAt(double t) const {
-  if (!hasArc()) return w;
+Eigen::Vector2d RotatingPair::arcVelocityAt(double t) const {
   const SinCos turn = sinCos(wa * t);
-  return w - Eigen::Vector2d(turn.cos * a_arc_velocity.x() - turn.sin * a_arc_velocity.y(),
-                             turn.sin * a_arc_velocity.x() + turn.cos * a_arc_velocity.y());
+  return {turn.cos * a_arc_velocity.x() - turn.sin * a_arc_velocity.y(),
+          turn.sin * a_arc_velocity.x() + turn.cos * a_arc_velocity.y()};
 }
 
 RotatingPair rotatingPair(const Ellipse& a, const Eigen::Vector2d& a_velocity,
@@ -251,49 +239,67 @@ FirstContact apartAtZero(FirstContact contact, double horizon) {
   return contact;
 }
 
-FirstContact rotatingContact(const RotatingPair& p, double horizon, RotationWork* work,
-                             double until) {
-  RotationWork local;
-  RotationWork& done = work ? *work : local;
-  done = {};
-  // Rounding of R - r is harmless: it is exact (Sterbenz) when r >= R / 2, and tiny against R.
-  const double approach_speed = largestCentreSpeed(p.w, p.a_arc_velocity, p.wa * horizon) +
-                                std::fabs(p.wa) * (boundingRadius(p.a) - inscribedRadius(p.a)) +
-                                std::fabs(p.wb) * (boundingRadius(p.b) - inscribedRadius(p.b));
-  if (!(approach_speed > 0.0)) return {};
-  double curvature = sweepCurvature(p.a, p.wa) + sweepCurvature(p.b, p.wb);
-  if (p.hasArc()) curvature += std::fabs(p.wa) * p.a_arc_velocity.norm();
-  // A curvature bound below the normal range (an angular velocity whose square underflows) or
-  // overflowed is not trusted: then the steps are the plain ones. A pair with no turn at all
-  // (spinning circles, no arc) has f linear in t: its curvature 0 is exact.
-  const bool linear = !turns(p.a, p.wa) && !turns(p.b, p.wb) && !p.hasArc();
-  const bool second_order = linear || (curvature >= std::numeric_limits<double>::min() &&
-                                       curvature <= std::numeric_limits<double>::max());
-  const double graze = kGrazeDistance * (inscribedRadius(p.a) + inscribedRadius(p.b));
+namespace {
+
+/// What the steps of one pair need besides the pair.
+struct StepBounds {
+  double approach_speed;  ///< V [m/s]
+  double curvature;       ///< M [m/s^2]
+  bool second_order;
+  double graze;     ///< the grazing band [m]
+  double tiny_gap;  ///< below it the witness direction is a's normal [m]
+};
+
+/// The steps of rotatingContact(); kArc: the pair has an arc (RotatingPair::hasArc()), so that
+/// firstContact()'s pairs run without its branches.
+template <bool kArc>
+FirstContact advance(const RotatingPair& p, const StepBounds& k, double horizon, double until,
+                     RotationWork& done) {
+  const auto bAt = [&p](double t) {
+    Ellipse e = p.b;
+    e.center = p.b.center + p.w * t;
+    if constexpr (kArc) e.center -= p.arcAt(t);
+    e.angle = p.b.angle + p.wb * t;
+    return e;
+  };
   const double resolution = kRotationResolution * horizon;
   double t = 0.0;
   for (int i = 0; i < kMaxRotationSteps; ++i) {
-    const Ellipse a = p.aAt(t), b = p.bAt(t);
+    const Ellipse a = p.aAt(t), b = bAt(t);
     const Clearance c = distance(a, b);
     ++done.distance_calls;
     if (!c.separated) return {true, t};
     // Plain steps cannot resolve a grazing band; they stop there.
-    if (!second_order && c.distance <= graze) return {true, t};
-    double step = c.distance * kStepShrink / approach_speed;
-    const Eigen::Vector2d direction = witnessDirection(a, b, c);
-    if (second_order && direction.allFinite()) {
-      const Separation s = bestSeparation(a, b, p.centreVelocityAt(t), p.wa, p.wb, direction);
-      double value = s.best.value - s.best.rounding, rate = s.best.rate;
-      if (!(value > kPreciseBelow * s.best.rounding)) {
-        const double precise = preciseSeparation(p, t, s.last_direction);
-        if (precise > value) value = precise, rate = s.last.rate;
+    if (!k.second_order && c.distance <= k.graze) return {true, t};
+    double step = c.distance * kStepShrink / k.approach_speed;
+    // The direction between the witness points, or for a tiny gap a's normal at its own.
+    Eigen::Vector2d direction = c.point_b - c.point_a;
+    const double gap = direction.norm();
+    const bool directed =
+        gap > k.tiny_gap ? (direction /= gap, true) : rimNormal(a, c.point_a, &direction);
+    bool blurred = false;  // the separation's rounding allowance costs much of it
+    double last_rate = 0.0;
+    Eigen::Vector2d last_direction;
+    if (k.second_order && directed) {
+      Eigen::Vector2d centre_velocity = p.w;
+      if constexpr (kArc) centre_velocity -= p.arcVelocityAt(t);
+      const Separation s = bestSeparation(a, b, centre_velocity, p.wa, p.wb, direction);
+      const double value = s.best.value - s.best.rounding;
+      blurred = !(value > kPreciseBelow * s.best.rounding);
+      last_rate = s.last_rate, last_direction = s.last_direction;
+      if (value > 0.0) {
+        step = std::max(step, kStepShrink * quadraticStep(value, s.best.rate, k.curvature));
       }
-      if (value > 0.0) step = std::max(step, kStepShrink * quadraticStep(value, rate, curvature));
     }
     if (step < resolution) {
       const double probe = std::min(t + resolution, horizon);
-      if (overlap(p.aAt(probe), p.bAt(probe))) return {true, t};
-      if (c.distance <= graze) return {true, t};  // a tangency within the grazing band
+      if (overlap(p.aAt(probe), bAt(probe))) return {true, t};
+      // The long double separation, where the double one's rounding holds the steps back.
+      const double precise = blurred ? preciseSeparation(p, t, last_direction) : 0.0;
+      if (precise > 0.0) {
+        step = std::max(step, kStepShrink * quadraticStep(precise, last_rate, k.curvature));
+      }
+      if (step < resolution && c.distance <= k.graze) return {true, t};  // a tangency in the band
     }
     const double next = t + step;
     if (next > until && until < horizon) return {};  // any contact comes after `until`
@@ -309,6 +315,34 @@ FirstContact rotatingContact(const RotatingPair& p, double horizon, RotationWork
   }
   done.capped = true;
   return {true, t};  // safety cap: no contact before t is certified, claim contact at t
+}
+
+}  // namespace
+
+FirstContact rotatingContact(const RotatingPair& p, double horizon, RotationWork* work,
+                             double until) {
+  RotationWork local;
+  RotationWork& done = work ? *work : local;
+  done = {};
+  StepBounds k;
+  // Rounding of R - r is harmless: it is exact (Sterbenz) when r >= R / 2, and tiny against R.
+  k.approach_speed = (p.hasArc() ? largestCentreSpeed(p.w, p.a_arc_velocity, p.wa * horizon)
+                                 : std::hypot(p.w.x(), p.w.y())) +
+                     std::fabs(p.wa) * (boundingRadius(p.a) - inscribedRadius(p.a)) +
+                     std::fabs(p.wb) * (boundingRadius(p.b) - inscribedRadius(p.b));
+  if (!(k.approach_speed > 0.0)) return {};
+  k.curvature = sweepCurvature(p.a, p.wa) + sweepCurvature(p.b, p.wb);
+  if (p.hasArc()) k.curvature += std::fabs(p.wa) * p.a_arc_velocity.norm();
+  // A curvature bound below the normal range (an angular velocity whose square underflows) or
+  // overflowed is not trusted: then the steps are the plain ones. A pair with no turn at all
+  // (spinning circles, no arc) has f linear in t: its curvature 0 is exact.
+  const bool linear = !turns(p.a, p.wa) && !turns(p.b, p.wb) && !p.hasArc();
+  k.second_order = linear || (k.curvature >= std::numeric_limits<double>::min() &&
+                              k.curvature <= std::numeric_limits<double>::max());
+  k.graze = kGrazeDistance * (inscribedRadius(p.a) + inscribedRadius(p.b));
+  k.tiny_gap = kWitnessGap * (boundingRadius(p.a) + boundingRadius(p.b));
+  return p.hasArc() ? advance<true>(p, k, horizon, until, done)
+                    : advance<false>(p, k, horizon, until, done);
 }
 
 }  // namespace ellipse_collision::core::detail

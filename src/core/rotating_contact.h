@@ -38,11 +38,24 @@ struct RotatingPair {
     double a_angle{0.0};
   } low;
 
-  Ellipse aAt(double t) const;
-  Ellipse bAt(double t) const;
+  Ellipse aAt(double t) const {
+    Ellipse e = a;
+    e.angle = a.angle + wa * t;
+    return e;
+  }
+  Ellipse bAt(double t) const {
+    Ellipse e = b;
+    e.center = b.center + w * t;
+    if (hasArc()) e.center -= arcAt(t);
+    e.angle = b.angle + wb * t;
+    return e;
+  }
   /// dp/dt at t: w - R(wa t) a_arc_velocity [m/s].
-  Eigen::Vector2d centreVelocityAt(double t) const;
+  Eigen::Vector2d centreVelocityAt(double t) const { return hasArc() ? w - arcVelocityAt(t) : w; }
   bool hasArc() const { return a_arc_velocity.x() != 0.0 || a_arc_velocity.y() != 0.0; }
+  /// The arc's displacement of a's centre at t, and its velocity there [m, m/s].
+  Eigen::Vector2d arcAt(double t) const;
+  Eigen::Vector2d arcVelocityAt(double t) const;
 };
 
 /// The pair of `a`, whose centre moves at `a_velocity` plus `a_arc_velocity` turning at `wa` and
