@@ -39,9 +39,11 @@ namespace ellipse_collision::core::detail {
 // sqrt(2 g / M) (a few steps for the whole pass instead of sqrt(size / g)); into an exact
 // tangency they shrink geometrically. f is evaluated in double with a rounding allowance of
 // 16 eps of its terms; a pass within ~1e-14 of the radii of touching leaves nothing of f above
-// that allowance, and f is then evaluated again in long double (64-bit significand), where the
-// allowance is 2048 times smaller: a contact grazed 1e-12 deep is crossed at ~1e-7 m/s, and the
-// double allowance alone would stop the steps up to ~1e-8 of the horizon before it.
+// that allowance, and where the steps would then stop short of a contact f is evaluated again in
+// long double (64-bit significand), where the allowance is 2048 times smaller: a contact grazed
+// 1e-12 deep is crossed at ~1e-7 m/s, and the double allowance alone stopped the steps up to
+// ~6e-8 of the horizon before it. Below gaps of 1e-10 of the radii the witness points' rounding
+// can turn, or reverse, the direction between them: a's rim normal at its point is taken.
 // Stopping: once a step is below the resolution (kRotationResolution * horizon), overlap() one
 // resolution ahead; if the pair overlaps there, the first contact lies within the resolution
 // after t and t is the answer (never late, at most one resolution early). If not and the distance
