@@ -274,15 +274,17 @@ FirstContact advance(const RotatingPair& p, const StepBounds& k, double horizon,
     // Plain steps cannot resolve a grazing band; they stop there.
     if (!k.second_order && c.distance <= k.graze) return {true, t};
     double step = c.distance * kStepShrink / k.approach_speed;
+    // A first-order step past `until` or the horizon decides as any longer one would: the gate's
+    // search stops most pairs so, and the second order is not needed there.
+    const bool decided = step >= resolution && t + step > std::min(until, horizon);
     // The direction between the witness points, or for a tiny gap a's normal at its own.
     Eigen::Vector2d direction = c.point_b - c.point_a;
     const double gap = direction.norm();
-    const bool directed =
-        gap > k.tiny_gap ? (direction /= gap, true) : rimNormal(a, c.point_a, &direction);
     bool blurred = false;  // the separation's rounding allowance costs much of it
     double last_rate = 0.0;
     Eigen::Vector2d last_direction;
-    if (k.second_order && directed) {
+    if (k.second_order && !decided &&
+        (gap > k.tiny_gap ? (direction /= gap, true) : rimNormal(a, c.point_a, &direction))) {
       Eigen::Vector2d centre_velocity = p.w;
       if constexpr (kArc) centre_velocity -= p.arcVelocityAt(t);
       const Separation s = bestSeparation(a, b, centre_velocity, p.wa, p.wb, direction);
