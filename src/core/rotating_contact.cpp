@@ -234,13 +234,6 @@ double largestCentreSpeed(const Eigen::Vector2d& w, const Eigen::Vector2d& v, do
   return std::max((w - v).norm(), (w - v_end).norm()) * (1.0 + 1e-12);
 }
 
-FirstContact apartAtZero(FirstContact contact, double horizon) {
-  if (contact.contact && contact.time == 0.0) {
-    contact.time = std::min(horizon, std::numeric_limits<double>::denorm_min());
-  }
-  return contact;
-}
-
 namespace {
 
 /// What the steps of one pair need besides the pair.

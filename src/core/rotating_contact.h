@@ -1,6 +1,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <limits>
 
 #include "ellipse_collision/core/ellipse.h"
@@ -116,6 +117,11 @@ inline double split(long double exact, double* low) {
 
 /// Time 0 means overlapping now (firstContact()'s rule): a contact found at 0 for a pair that
 /// overlap() calls apart is reported at the first time after 0.
-FirstContact apartAtZero(FirstContact contact, double horizon);
+inline FirstContact apartAtZero(FirstContact contact, double horizon) {
+  if (contact.contact && contact.time == 0.0) {
+    contact.time = std::min(horizon, std::numeric_limits<double>::denorm_min());
+  }
+  return contact;
+}
 
 }  // namespace ellipse_collision::core::detail
