@@ -14,10 +14,13 @@
 // Then a rotating mix (makeRotatingCases()): firstContact()'s second-order steps beside the plain
 // conservative advancement it replaced (plainAdvancementFirstContact(), reference_methods.h),
 // timed in alternating rounds, with each method's distance() calls, pairs at its step cap, and
-// how early or late it answers against the oracle.
+// how early or late it answers against the oracle; and the same for turning passes from head-on
+// to grazing 1e-12 deep (compareTurningPasses()) of each caller of the rotating method:
+// firstContact(), twistContact() (a link's centre on an arc) and segmentContact() (an offset
+// link's centre on a line plus an arc).
 //
 // Extra flag: --pairs=N (default 5000; --pairs=64 for a smoke run, which also shrinks the
-// rotating mix to 28 pairs).
+// rotating mix to 28 pairs and the turning passes to 14 per caller).
 
 #include <benchmark/benchmark.h>
 #include <quadmath.h>
@@ -36,10 +39,12 @@
 
 #include "ellipse_collision/core/first_contact.h"
 #include "ellipse_collision/core/overlap.h"
+#include "ellipse_collision/core/path_motion.h"
+#include "ellipse_collision/core/velocity_gate.h"
 #include "first_contact_oracle.h"
+#include "grazing_passes.h"
 #include "random_source.h"
 #include "reference_methods.h"
-#include "conservative_advancement.h"
 #include "rotating_contact.h"
 
 namespace ellipse_collision::core::bench {
@@ -184,16 +189,16 @@ void registerMethod(const std::string& name, const std::vector<Case>& cases, Met
 /// CPU seconds per pair of `method` over all cases, for the summary: whole passes over the cases
 /// for at least `min_seconds` of CPU time.
 template <typename Method>
-double secondsPerPair(const std::vector<Case>& cases, Method method, double min_seconds) {
+double secondsPerPair(std::size_t count, Method method, double min_seconds) {
   int rounds = 0;
   const std::clock_t start = std::clock();
   double elapsed = 0.0;
   do {
-    for (std::size_t i = 0; i < cases.size(); ++i) benchmark::DoNotOptimize(method(i));
+    for (std::size_t i = 0; i < count; ++i) benchmark::DoNotOptimize(method(i));
     ++rounds;
     elapsed = static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC;
   } while (elapsed < min_seconds);
-  return elapsed / (rounds * static_cast<double>(cases.size()));
+  return elapsed / (rounds * static_cast<double>(count));
 }
 
 double median(std::vector<double> values) {
@@ -291,6 +296,15 @@ RotationScore scoreRotation(const std::vector<Case>& cases, Method method, int c
   return s;
 }
 
+/// One line of a rotating table.
+void printScore(const char* name, double seconds, const RotationScore& s) {
+  std::printf(
+      "  %-30s %9.3f us/pair  distance() calls mean %7.1f max %5d, at the cap %3d  "
+      "misclassified %d (false %d)  worst early %.3g, worst late %.3g (of h)\n",
+      name, seconds * 1e6, s.mean_calls, s.most_calls, s.capped, s.wrong, s.false_alarms,
+      s.worst_early, s.worst_late);
+}
+
 /// The rotating mix: both methods timed in alternating rounds, then one table.
 void compareRotation(int mixed, int grazing, double min_seconds) {
   static std::vector<Case> cases;
@@ -301,10 +315,8 @@ void compareRotation(int mixed, int grazing, double min_seconds) {
     const Case& c = cases[i];
     const FirstContact r = firstContact(c.a, c.ma, c.b, c.mb, kHorizon);
     // The same pair through the rotating path directly, for its distance() count.
-    detail::RotatingPair p{c.a, c.b, c.mb.velocity - c.ma.velocity, c.ma.angular_velocity,
-                           c.mb.angular_velocity};
-    p.a.center = Eigen::Vector2d::Zero();
-    p.b.center = c.b.center - c.a.center;
+    const detail::RotatingPair p = detail::rotatingPair(c.a, c.ma.velocity, Eigen::Vector2d::Zero(),
+                                                        c.ma.angular_velocity, c.b, c.mb);
     detail::RotationWork work;
     if (!overlap(c.a, c.b)) detail::rotatingContact(p, kHorizon, &work);
     *calls = work.capped ? detail::kMaxRotationSteps : work.distance_calls;
@@ -316,7 +328,7 @@ void compareRotation(int mixed, int grazing, double min_seconds) {
     return Verdict{r.contact, r.time};
   };
   const RotationScore s_new = scoreRotation(cases, counted_new, detail::kMaxRotationSteps);
-  const RotationScore s_old = scoreRotation(cases, counted_old, detail::kMaxAdvancements);
+  const RotationScore s_old = scoreRotation(cases, counted_old, kPlainAdvancementCap);
   auto timed_new = [](std::size_t i) {
     const Case& c = cases[i];
     return firstContact(c.a, c.ma, c.b, c.mb, kHorizon);
@@ -327,22 +339,146 @@ void compareRotation(int mixed, int grazing, double min_seconds) {
   };
   std::vector<double> t_new, t_old;
   for (int round = 0; round < kSummaryRounds; ++round) {
-    t_new.push_back(secondsPerPair(cases, timed_new, min_seconds));
-    t_old.push_back(secondsPerPair(cases, timed_old, min_seconds));
+    t_new.push_back(secondsPerPair(cases.size(), timed_new, min_seconds));
+    t_old.push_back(secondsPerPair(cases.size(), timed_old, min_seconds));
   }
   std::printf("\nRotating mix: %d pairs of the benchmark's kind turning at up to 3 rad/s and %d "
               "eccentric tips grazing a disc (gaps +-1e-6, +-1e-8, +-3e-9), horizon %g s; %d in "
               "contact per the oracle, %d in the grazing band (excluded); CPU time per pair, median "
               "of %d rounds\n",
               mixed, grazing, kHorizon, contacts, in_band, kSummaryRounds);
-  auto line = [](const char* name, double seconds, const RotationScore& s) {
-    std::printf("  %-30s %9.3f us/pair  distance() calls mean %7.1f max %5d, at the cap %3d  "
-                "misclassified %d (false %d)  worst early %.3g, worst late %.3g (of h)\n",
-                name, seconds * 1e6, s.mean_calls, s.most_calls, s.capped, s.wrong,
-                s.false_alarms, s.worst_early, s.worst_late);
-  };
-  line("ours (second-order steps)", median(t_new), s_new);
-  line("plain advancement (before)", median(t_old), s_old);
+  printScore("ours (second-order steps)", median(t_new), s_new);
+  printScore("plain advancement (before)", median(t_old), s_old);
+  std::printf("  speed ratio: before / ours = %.1fx\n", median(t_old) / median(t_new));
+}
+
+// ---- turning passes: links on arcs (twistContact(), segmentContact()) and turning pairs --------
+// Passes drawn by grazing_passes.h for each caller of the rotating path, made to pass at smallest
+// contact scales 1 -+ {0.5, 1e-2, 1e-4, 1e-6, 1e-8, 1e-10, 1e-12} (head-on to grazing 1e-12 deep,
+// and as far clear): an eccentric link (axis ratio 3..30) against an eccentric obstacle (1..20)
+// that translates and turns. Oracle: oracleGrazingPass(), the quad gauge of the exact motion
+// bisected on the falling side of the single dip. Each caller's new path beside the plain
+// conservative advancement it replaced (reference_methods.h), timed in alternating rounds.
+constexpr double kPassDepths[] = {0.5, 1e-2, 1e-4, 1e-6, 1e-8, 1e-10, 1e-12};
+
+enum class PassKind { kMotion, kTwist, kSegment };
+
+std::vector<test::TurningPass> makePasses(PassKind kind, int per_depth) {
+  ellipse_collision::test::RandomSource rng(kind == PassKind::kMotion  ? 31
+                                            : kind == PassKind::kTwist ? 32
+                                                                       : 33);
+  std::vector<test::TurningPass> passes;
+  for (const double depth : kPassDepths) {
+    for (int i = 0; i < 2 * per_depth; ++i) {
+      const double target = i % 2 ? 1.0 - depth : 1.0 + depth;
+      test::TurningPass p;
+      bool found = false;
+      while (!found) {
+        found = kind == PassKind::kMotion  ? test::drawMotionPass(rng, target, &p)
+                : kind == PassKind::kTwist ? test::drawTwistPass(rng, target, &p)
+                                           : test::drawSegmentPass(rng, target, &p);
+      }
+      passes.push_back(p);
+    }
+  }
+  return passes;
+}
+
+/// The new path's answer for pass `p` and, when `work` is given, its work.
+FirstContact newAnswer(PassKind kind, const test::TurningPass& p, detail::RotationWork* work) {
+  if (work) {
+    // The same pass through the rotating path directly (the passes are apart at t = 0).
+    const detail::RotatingPair pair =
+        kind == PassKind::kMotion
+            ? detail::rotatingPair(p.a, p.motion_a.velocity, Eigen::Vector2d::Zero(),
+                                   p.motion_a.angular_velocity, p.b, p.motion_b)
+        : kind == PassKind::kTwist ? detail::twistPair(p.a, p.twist, p.b, p.motion_b)
+                                   : detail::segmentPair(p.a, p.segment, p.b, p.motion_b);
+    detail::rotatingContact(pair, p.horizon, work);
+  }
+  switch (kind) {
+    case PassKind::kMotion:
+      return firstContact(p.a, p.motion_a, p.b, p.motion_b, p.horizon);
+    case PassKind::kTwist:
+      return twistContact(p.a, p.twist, p.b, p.motion_b, p.horizon);
+    case PassKind::kSegment:
+      return segmentContact(p.a, p.segment, p.b, p.motion_b);
+  }
+  return {};
+}
+
+FirstContact plainAnswer(PassKind kind, const test::TurningPass& p, int* calls) {
+  switch (kind) {
+    case PassKind::kMotion:
+      return plainAdvancementFirstContact(p.a, p.motion_a, p.b, p.motion_b, p.horizon, calls);
+    case PassKind::kTwist:
+      return plainAdvancementTwistContact(p.a, p.twist, p.b, p.motion_b, p.horizon, calls);
+    case PassKind::kSegment:
+      return plainAdvancementSegmentContact(p.a, p.segment, p.b, p.motion_b, calls);
+  }
+  return {};
+}
+
+/// Scores `method(i, &calls, &capped)` on the passes: a clear pass within the 1e-9 band may be
+/// reported in contact (not counted as wrong); every other must be classified right, and a
+/// contact's error is measured against the oracle's.
+template <typename Method>
+RotationScore scorePasses(const std::vector<test::TurningPass>& passes, Method method) {
+  RotationScore s;
+  for (std::size_t i = 0; i < passes.size(); ++i) {
+    int calls = 0;
+    bool capped = false;
+    const FirstContact r = method(i, &calls, &capped);
+    s.mean_calls += calls;
+    s.most_calls = std::max(s.most_calls, calls);
+    s.capped += capped;
+    const test::OracleGrazingPass& o = passes[i].pass;
+    if (!o.contact && fabsq(o.scale - 1) <= kBand) continue;
+    if (r.contact != o.contact) {
+      ++s.wrong;
+      s.false_alarms += r.contact;
+    } else if (r.contact) {
+      const double error = static_cast<double>((static_cast<__float128>(r.time) - o.contact_time) /
+                                               passes[i].horizon);
+      s.worst_late = std::max(s.worst_late, error);
+      s.worst_early = std::max(s.worst_early, -error);
+    }
+  }
+  s.mean_calls /= static_cast<double>(passes.size());
+  return s;
+}
+
+void compareTurningPasses(PassKind kind, const char* title, int per_depth, double min_seconds) {
+  static std::vector<test::TurningPass> passes;
+  static PassKind kind_now;
+  passes = makePasses(kind, per_depth);
+  kind_now = kind;
+  int contacts = 0;
+  for (const test::TurningPass& p : passes) contacts += p.pass.contact;
+  const RotationScore s_new = scorePasses(passes, [](std::size_t i, int* calls, bool* capped) {
+    detail::RotationWork work;
+    const FirstContact r = newAnswer(kind_now, passes[i], &work);
+    *calls = work.distance_calls, *capped = work.capped;
+    return r;
+  });
+  const RotationScore s_old = scorePasses(passes, [](std::size_t i, int* calls, bool* capped) {
+    const FirstContact r = plainAnswer(kind_now, passes[i], calls);
+    *capped = *calls >= kPlainAdvancementCap;
+    return r;
+  });
+  auto timed_new = [](std::size_t i) { return newAnswer(kind_now, passes[i], nullptr); };
+  auto timed_old = [](std::size_t i) { return plainAnswer(kind_now, passes[i], nullptr); };
+  std::vector<double> t_new, t_old;
+  for (int round = 0; round < kSummaryRounds; ++round) {
+    t_new.push_back(secondsPerPair(passes.size(), timed_new, min_seconds));
+    t_old.push_back(secondsPerPair(passes.size(), timed_old, min_seconds));
+  }
+  std::printf(
+      "\n%s: %zu passes at smallest contact scales 1 -+ {0.5 .. 1e-12} (%d per depth and "
+      "side), %d in contact per the oracle; CPU time per pass, median of %d rounds\n",
+      title, passes.size(), per_depth, contacts, kSummaryRounds);
+  printScore("ours (second-order steps)", median(t_new), s_new);
+  printScore("plain advancement (before)", median(t_old), s_old);
   std::printf("  speed ratio: before / ours = %.1fx\n", median(t_old) / median(t_new));
 }
 
@@ -407,10 +543,10 @@ int main(int argc, char** argv) {
   const double min_seconds = cases.size() < 1000 ? 0.01 : 0.2;
   std::vector<double> t_ours, t_secant, t_fcl, t_sampling;
   for (int round = 0; round < kSummaryRounds; ++round) {
-    t_ours.push_back(secondsPerPair(cases, ours, min_seconds));
-    t_secant.push_back(secondsPerPair(cases, secant, min_seconds));
-    t_fcl.push_back(secondsPerPair(cases, fcl_naive, min_seconds));
-    t_sampling.push_back(secondsPerPair(cases, sampling, min_seconds));
+    t_ours.push_back(secondsPerPair(cases.size(), ours, min_seconds));
+    t_secant.push_back(secondsPerPair(cases.size(), secant, min_seconds));
+    t_fcl.push_back(secondsPerPair(cases.size(), fcl_naive, min_seconds));
+    t_sampling.push_back(secondsPerPair(cases.size(), sampling, min_seconds));
   }
   std::printf("\nSummary: %zu pairs under translation, horizon %g s, %d in contact per the oracle, "
               "%d in the grazing band (excluded); CPU time per pair, median of %d rounds\n",
@@ -430,5 +566,12 @@ int main(int argc, char** argv) {
               median(t_sampling) / ours_median);
   // A smoke run keeps the rotating mix small too (its oracle scans 2000 samples per pair).
   compareRotation(cases.size() < 1000 ? 16 : 300, cases.size() < 1000 ? 12 : 60, min_seconds);
+  const int per_depth = cases.size() < 1000 ? 1 : 4;
+  compareTurningPasses(PassKind::kMotion, "Turning pairs (firstContact())", per_depth, min_seconds);
+  compareTurningPasses(PassKind::kTwist, "Links on arcs under a twist (twistContact())", per_depth,
+                       min_seconds);
+  compareTurningPasses(PassKind::kSegment,
+                       "Offset links along a turning path segment (segmentContact())", per_depth,
+                       min_seconds);
   return 0;
 }

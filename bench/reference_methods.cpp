@@ -8,9 +8,10 @@
 #include <tuple>
 #include <utility>
 
+#include "ellipse_collision/core/distance.h"
 #include "ellipse_collision/core/eigenvalue_test.h"
 #include "ellipse_collision/core/overlap.h"
-#include "conservative_advancement.h"
+#include "rotating_contact.h"
 
 namespace ellipse_collision::core::bench {
 namespace {
@@ -224,21 +225,75 @@ FirstContact secantFirstContact(const Ellipse& a, const Motion& motion_a, const 
   return contact;
 }
 
-FirstContact plainAdvancementFirstContact(const Ellipse& a, const Motion& motion_a,
-                                          const Ellipse& b, const Motion& motion_b,
-                                          double horizon, int* distance_calls) {
+// ---- plain conservative advancement: rotating first contacts before the second-order steps ----
+// Steps of D / V on the exact distance (Mirtich 1996; Zhang, Lee, Kim, Manocha 2006), V a bound on
+// how fast the rims approach (rotating_contact.cpp derives it): certified never late, but near a
+// grazing pass the steps shrink with the gap (about sqrt(size / gap) of them), so the pair is
+// reported in contact once the distance is within the grazing band, or at the cap.
+namespace plain {
+
+/// The first contact in [0, horizon] of `pair_at(t)` (a std::pair of ellipses at time t), whose
+/// rims approach no faster than `approach_speed`; `inscribed_sum` = r_a + r_b sets the band.
+template <class PairAt>
+FirstContact advance(PairAt&& pair_at, double approach_speed, double inscribed_sum,
+                     double horizon) {
+  if (!(approach_speed > 0.0)) {
+    const auto [a, b] = pair_at(0.0);
+    if (distance(a, b).separated) return {};
+    return {true, 0.0};
+  }
+  const double graze = detail::kGrazeDistance * inscribed_sum;
+  double t = 0.0;
+  for (int i = 0; i < kPlainAdvancementCap; ++i) {
+    const auto [a, b] = pair_at(t);
+    const Clearance c = distance(a, b);
+    if (!c.separated) return {true, t};
+    if (c.distance <= graze) return {true, t};  // within the band around tangency
+    const double next = t + c.distance * detail::kStepShrink / approach_speed;
+    if (next > horizon) {
+      if (t == horizon) return {};
+      t = horizon;
+      continue;
+    }
+    if (!(next > t)) return {true, t};
+    t = next;
+  }
+  return {true, t};  // the cap: contact claimed at the last certified-safe time
+}
+
+/// `advance()` counting the pairs asked for, apart at t = 0 (time 0 only for overlap now).
+template <class PairAt>
+FirstContact counted(const Ellipse& a, const Ellipse& b, PairAt&& pair_at, double approach_speed,
+                     double horizon, int* distance_calls) {
   int calls = 0;
   if (distance_calls) *distance_calls = 0;
   if (overlap(a, b)) return {true, 0.0};
   if (!(horizon > 0.0)) return {};
+  const FirstContact contact = advance(
+      [&](double t) {
+        ++calls;
+        return pair_at(t);
+      },
+      approach_speed, inscribedRadius(a) + inscribedRadius(b), horizon);
+  if (distance_calls) *distance_calls = calls;
+  return detail::apartAtZero(contact, horizon);
+}
+
+double sweepSpeed(const Ellipse& e, double omega) {
+  return std::fabs(omega) * (boundingRadius(e) - inscribedRadius(e));
+}
+
+}  // namespace plain
+
+FirstContact plainAdvancementFirstContact(const Ellipse& a, const Motion& motion_a,
+                                          const Ellipse& b, const Motion& motion_b, double horizon,
+                                          int* distance_calls) {
   const Eigen::Vector2d w = motion_b.velocity - motion_a.velocity;
   const Eigen::Vector2d p0 = b.center - a.center;
   const double wa = motion_a.angular_velocity, wb = motion_b.angular_velocity;
-  const double approach_speed = std::hypot(w.x(), w.y()) +
-                                std::fabs(wa) * (boundingRadius(a) - inscribedRadius(a)) +
-                                std::fabs(wb) * (boundingRadius(b) - inscribedRadius(b));
+  const double approach_speed =
+      std::hypot(w.x(), w.y()) + plain::sweepSpeed(a, wa) + plain::sweepSpeed(b, wb);
   auto pair_at = [&](double t) {
-    ++calls;
     Ellipse at = a, bt = b;
     at.center = Eigen::Vector2d::Zero();
     at.angle = a.angle + wa * t;
@@ -246,14 +301,39 @@ FirstContact plainAdvancementFirstContact(const Ellipse& a, const Motion& motion
     bt.angle = b.angle + wb * t;
     return std::make_pair(at, bt);
   };
-  FirstContact contact = detail::advanceConservatively(pair_at, approach_speed,
-                                                       inscribedRadius(a) + inscribedRadius(b),
-                                                       horizon);
-  if (contact.contact && contact.time == 0.0) {
-    contact.time = std::min(horizon, std::numeric_limits<double>::denorm_min());
-  }
-  if (distance_calls) *distance_calls = calls;
-  return contact;
+  return plain::counted(a, b, pair_at, approach_speed, horizon, distance_calls);
+}
+
+FirstContact plainAdvancementTwistContact(const Ellipse& link, const Twist& twist,
+                                          const Ellipse& obstacle, const Motion& obstacle_motion,
+                                          double horizon, int* distance_calls) {
+  const Eigen::Vector2d link_velocity(twist.vx - twist.wz * link.center.y(),
+                                      twist.vy + twist.wz * link.center.x());
+  const double approach_speed =
+      detail::largestCentreSpeed(obstacle_motion.velocity, link_velocity, twist.wz * horizon) +
+      plain::sweepSpeed(link, twist.wz) +
+      plain::sweepSpeed(obstacle, obstacle_motion.angular_velocity);
+  auto pair_at = [&](double t) {
+    return std::make_pair(linkAfter(link, twist, t), movedBy(obstacle, obstacle_motion, t));
+  };
+  return plain::counted(link, obstacle, pair_at, approach_speed, horizon, distance_calls);
+}
+
+FirstContact plainAdvancementSegmentContact(const Ellipse& link_in_moving,
+                                            const SegmentMotion& motion, const Ellipse& obstacle,
+                                            const Motion& obstacle_motion, int* distance_calls) {
+  const double w = motion.yaw_rate;
+  const double approach_speed = (motion.velocity - obstacle_motion.velocity).norm() +
+                                std::fabs(w) * link_in_moving.center.norm() +
+                                plain::sweepSpeed(link_in_moving, w) +
+                                plain::sweepSpeed(obstacle, obstacle_motion.angular_velocity);
+  auto pair_at = [&](double t) {
+    return std::make_pair(
+        placeAt(link_in_moving, motion.start + motion.velocity * t, motion.start_yaw + w * t),
+        movedBy(obstacle, obstacle_motion, t));
+  };
+  return plain::counted(placeAt(link_in_moving, motion.start, motion.start_yaw), obstacle, pair_at,
+                        approach_speed, motion.duration, distance_calls);
 }
 
 }  // namespace ellipse_collision::core::bench

@@ -8,6 +8,8 @@
 
 #include "ellipse_collision/core/ellipse.h"
 #include "ellipse_collision/core/first_contact.h"
+#include "ellipse_collision/core/path_motion.h"
+#include "ellipse_collision/core/velocity_gate.h"
 
 namespace ellipse_collision::core::bench {
 
@@ -40,14 +42,32 @@ bool seedReadmeOverlap(const Ellipse& a, const Ellipse& b);
 FirstContact secantFirstContact(const Ellipse& a, const Motion& motion_a, const Ellipse& b,
                                 const Motion& motion_b, double horizon);
 
+/// The step cap of plain conservative advancement below.
+constexpr int kPlainAdvancementCap = 20000;
+
 /// firstContact() for a rotating pair as the project computed it before the second-order steps:
 /// overlap() at t = 0, then plain conservative advancement on the exact distance() in a's frame
-/// (conservative_advancement.h: steps of D / V, a grazing band of 5e-10 (r_a + r_b), at most
-/// 20000 steps, contact at the last certified-safe time at the cap). `distance_calls`, when
-/// given, receives the number of distance() calls. Kept so that bench_first_contact times the old
-/// method beside the new one.
+/// (steps of D / V, a grazing band of 5e-10 (r_a + r_b), at most kPlainAdvancementCap steps,
+/// contact at the last certified-safe time at the cap). `distance_calls`, when given, receives the
+/// number of distance() calls. Kept so that bench_first_contact times the old method beside the
+/// new one.
 FirstContact plainAdvancementFirstContact(const Ellipse& a, const Motion& motion_a,
                                           const Ellipse& b, const Motion& motion_b,
                                           double horizon, int* distance_calls = nullptr);
+
+/// twistContact() for a turning frame (wz != 0) as the project computed it before the
+/// second-order steps: the same plain advancement on linkAfter() and movedBy() poses, with the
+/// bound max |v_o - R(s) v_c| + |wz| (R_l - r_l) + |w_o| (R_o - r_o).
+FirstContact plainAdvancementTwistContact(const Ellipse& link, const Twist& twist,
+                                          const Ellipse& obstacle, const Motion& obstacle_motion,
+                                          double horizon, int* distance_calls = nullptr);
+
+/// segmentContact() for an offset link that turns, as the project computed it before the
+/// second-order steps: the same plain advancement on placeAt() poses, with the bound
+/// |v - v_o| + |w| |c| + |w| (R_l - r_l) + |w_o| (R_o - r_o).
+FirstContact plainAdvancementSegmentContact(const Ellipse& link_in_moving,
+                                            const SegmentMotion& motion, const Ellipse& obstacle,
+                                            const Motion& obstacle_motion,
+                                            int* distance_calls = nullptr);
 
 }  // namespace ellipse_collision::core::bench

@@ -38,9 +38,10 @@ ellipse_collision_add_benchmark(bench_distance bench/bench_distance.cpp LIBRARIE
 # First contact under translation beside the secant method it replaced, FCL's continuousCollide
 # and sampling overlap() at 100 steps, misclassifications and time errors against the quad oracle.
 ellipse_collision_add_benchmark(bench_first_contact bench/bench_first_contact.cpp
-  bench/reference_methods.cpp test/support/first_contact_oracle.cpp LIBRARIES fcl)
-# src/core for conservative_advancement.h and rotating_contact.h: the rotating mix runs the plain
-# advancement beside the new steps and counts both methods' distance() calls.
+  bench/reference_methods.cpp test/support/first_contact_oracle.cpp
+  test/support/grazing_passes.cpp LIBRARIES fcl)
+# src/core for rotating_contact.h: the rotating mixes run the plain advancement beside the new
+# steps and count both methods' distance() calls.
 target_include_directories(bench_first_contact PRIVATE ${PROJECT_SOURCE_DIR}/src/core)
 
 # The gate through ROS: command in to command out of the running node, beside a plain relay.

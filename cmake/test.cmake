@@ -49,21 +49,28 @@ ellipse_collision_add_gtest(test_performance_core LIBRARIES ellipse_collision_co
 # First time of contact of moving ellipses against the quad-precision oracle.
 ellipse_collision_add_gtest(test_first_contact LIBRARIES ellipse_collision_core quadmath SOURCES
   test/core/test_first_contact.cpp
-  test/support/first_contact_oracle.cpp)
-# src/core for rotating_contact.h: the grazing test counts the rotating path's work.
+  test/support/first_contact_oracle.cpp
+  test/support/grazing_passes.cpp)
+# src/core for rotating_contact.h: the grazing tests count the rotating path's work.
 target_include_directories(test_first_contact PRIVATE ${PROJECT_SOURCE_DIR}/src/core)
 
 # Continuous path checks against the quad oracle and brute force over every pair.
 ellipse_collision_add_gtest(test_path_check LIBRARIES ellipse_collision_core quadmath SOURCES
   test/core/test_path_check.cpp
   test/core/test_contact_prediction.cpp
-  test/support/first_contact_oracle.cpp)
+  test/support/first_contact_oracle.cpp
+  test/support/grazing_passes.cpp)
+# src/core for rotating_contact.h: the grazing test counts the rotating path's work.
+target_include_directories(test_path_check PRIVATE ${PROJECT_SOURCE_DIR}/src/core)
 
 # The velocity gate: poses and first contacts under a twist against quad-precision arcs, the
 # translation oracle and dense overlap() scans; the gate's decisions against the same scans.
 ellipse_collision_add_gtest(test_velocity_gate LIBRARIES ellipse_collision_core quadmath SOURCES
   test/core/test_velocity_gate.cpp
-  test/support/first_contact_oracle.cpp)
+  test/support/first_contact_oracle.cpp
+  test/support/grazing_passes.cpp)
+# src/core for rotating_contact.h: the grazing test counts the rotating path's work.
+target_include_directories(test_velocity_gate PRIVATE ${PROJECT_SOURCE_DIR}/src/core)
 
 # Ellipsoids: the shadow against projected surface samples, the minimum-volume fit against
 # closed forms and their affine images, in quad precision.

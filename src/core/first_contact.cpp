@@ -262,19 +262,14 @@ FirstContact firstContact(const Ellipse& a, const Motion& motion_a, const Ellips
   if (!a_turns && !b_turns) {
     contact = translationContact(a, b, motion_b.velocity - motion_a.velocity, horizon);
   } else {
-    detail::RotatingPair p{a, b, motion_b.velocity - motion_a.velocity, motion_a.angular_velocity,
-                           motion_b.angular_velocity};
-    p.a.center = Eigen::Vector2d::Zero();
-    p.b.center = b.center - a.center;
-    contact = detail::rotatingContact(p, horizon);
+    contact =
+        detail::rotatingContact(detail::rotatingPair(a, motion_a.velocity, Eigen::Vector2d::Zero(),
+                                                     motion_a.angular_velocity, b, motion_b),
+                                horizon);
   }
   // overlap() said they are apart at t = 0; a pair whose contact scale there is within rounding
-  // of 1 can still be found touching "at 0" by the gauge. Time 0 means overlapping now (the
-  // documented rule), so such a contact is reported at the first time after 0 (fuzzer finding).
-  if (contact.contact && contact.time == 0.0) {
-    contact.time = std::min(horizon, std::numeric_limits<double>::denorm_min());
-  }
-  return contact;
+  // of 1 can still be found touching "at 0" by the gauge (fuzzer finding).
+  return detail::apartAtZero(contact, horizon);
 }
 
 }  // namespace ellipse_collision::core

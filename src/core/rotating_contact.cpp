@@ -6,35 +6,52 @@
 
 #include "ellipse_collision/core/distance.h"
 #include "ellipse_collision/core/overlap.h"
-#include "conservative_advancement.h"
+#include "arc_motion.h"
 #include "sin_cos.h"
 
 namespace ellipse_collision::core::detail {
 
-// Conservative advancement with second-order steps. Plain conservative advancement
-// (conservative_advancement.h) steps by D / V, the distance over a bound on its rate: near a
-// grazing pass the steps shrink with the gap, about sqrt(size / gap) of them, and a pass within
-// ~1e-8 of touching reaches any reasonable cap. Here each step also uses the shape of the
-// separation along the current witness direction.
+// Conservative advancement (Mirtich 1996; Zhang, Lee, Kim, Manocha 2006) on the exact distance,
+// with second-order steps.
 // For a fixed unit u the support-function dual (distance.h) gives, at every t,
 //   D(t) >= f(u, t) = u . p(t) - h_a(u, t) - h_b(u, t),
-// and f(u, t) > 0 means u separates the pair (no overlap). p(t) = p0 + w t is linear; an ellipse
-// of semi-axes R >= r turning at omega has d2h/dt2 = omega^2 (rho - h), rho = r_x^2 r_y^2 / h^3
-// its radius of curvature at normal u (h + h'' = rho for a support function, and turning the
-// shape by theta turns its normal angle by -theta), so d2f/dt2 >= -M with
-//   M = omega_a^2 (R_a^2 / r_a - r_a) + omega_b^2 (R_b^2 / r_b - r_b).
-// By Taylor's theorem f(u, t + s) >= f + f' s - M s^2 / 2 for s >= 0, so no contact happens
-// before the positive root of that quadratic, taken at the witness direction u of the distance at
-// t (where f(u, t) = D(t)). The step is the larger of that root and D / V; both are certified.
+// and f(u, t) > 0 means u separates the pair (no overlap); D(t) is the largest f over u.
+// First order: p'(t) = w - R(wa t) v_arc (v_arc: a_arc_velocity), whose length over the turn is
+// at most V_p = max over s in [0, wa horizon] of |w - R(s) v_arc| (largestCentreSpeed()); an
+// ellipse of semi-axes R >= r turning at omega has |dh/dt| = |omega| |dh/dphi| <= |omega| (R - r)
+// (the largest distance from the centre to a normal line of the ellipse is R - r). A maximum of
+// functions with a common Lipschitz constant has it too, so |D'| <= V = V_p + |wa| (R_a - r_a) +
+// |wb| (R_b - r_b) and no contact happens in [t, t + D(t) / V).
+// Second order, along the witness direction u of the distance at t (where f(u, t) = D(t)):
+//   f'' = u . p'' - h_a'' - h_b''.
+// p''(t) = -wa z x R(wa t) v_arc is the centripetal acceleration of a's centre on its arc, of
+// length |wa| |v_arc| (= wa^2 times the arc's radius), so u . p'' >= -|wa| |v_arc|. An ellipse
+// turning at omega has h'' = omega^2 (rho - h), rho = r_x^2 r_y^2 / h^3 its radius of curvature
+// at normal u (h + h'' = rho for a support function of the normal angle, and turning the shape by
+// theta turns its normal angle by -theta), and rho - h <= R^2 / r - r. So f'' >= -M with
+//   M = |wa| |v_arc| + omega_a^2 (R_a^2 / r_a - r_a) + omega_b^2 (R_b^2 / r_b - r_b),
+// and by Taylor's theorem f(u, t + s) >= f + f' s - M s^2 / 2 for s >= 0, with the exact rate
+// f' = u . p'(t) - omega_a dh_a/dtheta_a - omega_b dh_b/dtheta_b at t (theta the ellipse's
+// angle). No contact happens before the positive root of that quadratic. The step is the larger
+// of that root and D / V; both are certified.
 // Approaching a transversal contact the root is a Newton step from the left (quadratic
 // convergence, never past the contact); through a grazing pass of gap g the steps stay about
 // sqrt(2 g / M) (a few steps for the whole pass instead of sqrt(size / g)); into an exact
-// tangency they shrink geometrically.
+// tangency they shrink geometrically. f is evaluated in double with a rounding allowance of
+// 16 eps of its terms; a pass within ~1e-14 of the radii of touching leaves nothing of f above
+// that allowance, and where the steps would then stop short of a contact f is evaluated again in
+// long double (64-bit significand), where the allowance is 2048 times smaller: a contact grazed
+// 1e-12 deep is crossed at ~1e-7 m/s, and the double allowance alone stopped the steps up to
+// ~6e-8 of the horizon before it. Below gaps of 1e-10 of the radii the witness points' rounding
+// can turn, or reverse, the direction between them: a's rim normal at its point is taken.
 // Stopping: once a step is below the resolution (kRotationResolution * horizon), overlap() one
 // resolution ahead; if the pair overlaps there, the first contact lies within the resolution
 // after t and t is the answer (never late, at most one resolution early). If not and the distance
-// is within the grazing band of conservative_advancement.h, the pair is at a tangency within the
-// band and reported in contact at t. Otherwise the steps go on.
+// is within the grazing band (kGrazeDistance of r_a + r_b), the pair is at a tangency within the
+// band and reported in contact at t: the contact scale is then within kGrazeDistance of 1 (the
+// Minkowski sum contains the disc of radius r_a + r_b). Otherwise the steps go on.
+// Where M is below the normal range (an angular velocity whose square underflows) or overflows
+// it is not trusted, and the steps are the plain D / V ones, stopped in the grazing band.
 namespace {
 
 // The separation along a fixed unit u at the current poses, its rates in time and in the angle of
@@ -58,7 +75,8 @@ SupportRates supportRates(const Ellipse& e, const SinCos& trig, const Eigen::Vec
 }
 
 SeparationAlong separationAlong(const SinCosPair& trig, const Ellipse& a, const Ellipse& b,
-                                const RotatingPair& p, const Eigen::Vector2d& u) {
+                                const Eigen::Vector2d& centre_velocity, double wa, double wb,
+                                const Eigen::Vector2d& u) {
   const SupportRates sa = supportRates(a, trig.first, u);
   const SupportRates sb = supportRates(b, trig.second, u);
   const Eigen::Vector2d centres = b.center - a.center;
@@ -67,7 +85,7 @@ SeparationAlong separationAlong(const SinCosPair& trig, const Ellipse& a, const 
   constexpr double kEps = std::numeric_limits<double>::epsilon();
   const double value = along - sa.h - sb.h;
   // h'' = rho - h for a support function of the normal angle, so f'' = -f - rho_a - rho_b.
-  return {value, u.dot(p.w) - p.wa * sa.dh_dangle - p.wb * sb.dh_dangle,
+  return {value, u.dot(centre_velocity) - wa * sa.dh_dangle - wb * sb.dh_dangle,
           16.0 * kEps * (std::fabs(along) + sa.h + sb.h), across + sa.dh_dangle + sb.dh_dangle,
           -value - sa.curvature_radius - sb.curvature_radius};
 }
@@ -75,26 +93,93 @@ SeparationAlong separationAlong(const SinCosPair& trig, const Ellipse& a, const 
 // The distance's witness direction is accurate to ~1e-9 relative only down to gaps of ~1e-6 of
 // the radii (distance.h); closer, its error costs the lower bound more than the gap itself. A
 // few Newton steps on the angle of u (f is concave there) restore it; any u gives a valid bound,
-// and the best one tried is kept.
+// and the best one tried is kept, with the last one tried (the most accurate direction when
+// rounding blurs which is best).
 constexpr int kDirectionSteps = 3;
 
-SeparationAlong bestSeparation(const Ellipse& a, const Ellipse& b, const RotatingPair& p,
-                               Eigen::Vector2d u) {
+struct Separation {
+  SeparationAlong best;
+  double last_rate;  // of the last direction tried
+  Eigen::Vector2d last_direction;
+};
+
+// Inlined into the steps, as before they had two forms (advance()): the call cost 1 % of the
+// benchmark's rotating mix.
+[[gnu::always_inline]] inline Separation bestSeparation(const Ellipse& a, const Ellipse& b,
+                                                        const Eigen::Vector2d& centre_velocity,
+                                                        double wa, double wb, Eigen::Vector2d u) {
   const SinCosPair trig = sinCosPair(a.angle, b.angle);
-  SeparationAlong best = separationAlong(trig, a, b, p, u);
+  SeparationAlong best = separationAlong(trig, a, b, centre_velocity, wa, wb, u);
   SeparationAlong current = best;
   for (int i = 0; i < kDirectionSteps && current.curvature < 0.0; ++i) {
     const double turn = -current.slope / current.curvature;
     if (!(std::fabs(turn) < 0.5)) break;
     const double c = std::cos(turn), s = std::sin(turn);
     u = Eigen::Vector2d(c * u.x() - s * u.y(), s * u.x() + c * u.y());
-    current = separationAlong(trig, a, b, p, u);
+    current = separationAlong(trig, a, b, centre_velocity, wa, wb, u);
     if (current.value - current.rounding > best.value - best.rounding) best = current;
   }
-  return best;
+  return {best, current.rate, u};
 }
 
-/// The positive root of value + rate s - curvature s^2 / 2 (value > 0, curvature > 0).
+/// f(u, t) (the comment above) less its rounding, evaluated in long double from the pair's
+/// motion (poses, arc and angles at t in long double too), rounded down to a double: for gaps
+/// below the double allowance. u need not be of unit length (f is positively homogeneous in u).
+/// Out of line: the steps need it only near a tangency.
+[[gnu::noinline]] double preciseSeparation(const RotatingPair& p, double t,
+                                           const Eigen::Vector2d& u) {
+  using Long = long double;
+  const Long time = t;
+  const auto exact = [](double high, double low) { return Long(high) + low; };
+  Long px = exact(p.b.center.x(), p.low.b_center.x()) + exact(p.w.x(), p.low.w.x()) * time;
+  Long py = exact(p.b.center.y(), p.low.b_center.y()) + exact(p.w.y(), p.low.w.y()) * time;
+  if (p.hasArc()) {
+    const Displacement<Long> arc =
+        arcDisplacement<Long>(exact(p.a_arc_velocity.x(), p.low.a_arc_velocity.x()),
+                              exact(p.a_arc_velocity.y(), p.low.a_arc_velocity.y()), p.wa, time);
+    px -= arc.x;
+    py -= arc.y;
+  }
+  const auto support = [&](const Ellipse& e, double angle_low, double omega) {
+    const Long angle = exact(e.angle, angle_low) + Long(omega) * time;
+    const Long c = std::cos(angle), s = std::sin(angle);
+    const Long ax = u.x() * c + u.y() * s, ay = u.y() * c - u.x() * s;
+    const Long rx = e.radius_x, ry = e.radius_y;
+    return std::sqrt(rx * rx * ax * ax + ry * ry * ay * ay);
+  };
+  const Long ha = support(p.a, p.low.a_angle, p.wa), hb = support(p.b, 0.0, p.wb);
+  const Long along = u.x() * px + u.y() * py;
+  const Long rounding = 16 * std::numeric_limits<Long>::epsilon() * (std::fabs(along) + ha + hb);
+  // Shrunk by 2^-52 against the rounding to double.
+  return static_cast<double>(along - ha - hb - rounding) * (1.0 - 0x1p-52);
+}
+
+// Below this gap, relative to R_a + R_b, the witness points' rounding (~eps R) can turn, or even
+// reverse, the direction between them; the normal of a's rim at its witness point is then taken.
+constexpr double kWitnessGap = 1e-10;
+
+/// The unit outward normal of a's rim at its point `x`, or false when there is none. At a witness
+/// point it is the direction from a to b along which they are farthest apart (the maximiser of
+/// the support-function dual, whose support point the witness point is).
+bool rimNormal(const Ellipse& a, const Eigen::Vector2d& x, Eigen::Vector2d* normal) {
+  const SinCos trig = sinCos(a.angle);
+  const Eigen::Vector2d d = x - a.center;
+  // In a's axes the rim is (x / r_x)^2 + (y / r_y)^2 = 1, whose gradient is the normal.
+  const double nx = (trig.cos * d.x() + trig.sin * d.y()) / (a.radius_x * a.radius_x);
+  const double ny = (trig.cos * d.y() - trig.sin * d.x()) / (a.radius_y * a.radius_y);
+  const Eigen::Vector2d n(trig.cos * nx - trig.sin * ny, trig.sin * nx + trig.cos * ny);
+  const double length = n.norm();
+  if (!(length > 0.0)) return false;
+  *normal = n / length;
+  return true;
+}
+
+// The double separation is evaluated again in long double where its rounding allowance costs
+// more than 1/64 of it (gaps below ~1e-13 of the radii) and the steps would stop.
+constexpr double kPreciseBelow = 64.0;
+
+/// The positive root of value + rate s - curvature s^2 / 2 (value > 0, curvature > 0; a curvature
+/// of 0 gives the linear root, or infinity).
 double quadraticStep(double value, double rate, double curvature) {
   const double root = std::sqrt(rate * rate + 2.0 * curvature * value);
   // Each form where it has no cancellation.
@@ -106,60 +191,115 @@ double sweepCurvature(const Ellipse& e, double omega) {
   return omega * omega * (big * (big / small) - small);
 }
 
+bool turns(const Ellipse& e, double omega) { return omega != 0.0 && e.radius_x != e.radius_y; }
+
 }  // namespace
 
-Ellipse RotatingPair::aAt(double t) const {
-  Ellipse e = a;
-  e.angle = a.angle + wa * t;
-  return e;
+Eigen::Vector2d RotatingPair::arcAt(double t) const {
+  const Displacement<double> arc = arcDisplacement(a_arc_velocity.x(), a_arc_velocity.y(), wa, t);
+  return {arc.x, arc.y};
 }
 
-Ellipse RotatingPair::bAt(double t) const {
-  Ellipse e = b;
-  e.center = b.center + w * t;
-  e.angle = b.angle + wb * t;
-  return e;
+Eigen::Vector2d RotatingPair::arcVelocityAt(double t) const {
+  const SinCos turn = sinCos(wa * t);
+  return {turn.cos * a_arc_velocity.x() - turn.sin * a_arc_velocity.y(),
+          turn.sin * a_arc_velocity.x() + turn.cos * a_arc_velocity.y()};
 }
 
-FirstContact rotatingContact(const RotatingPair& p, double horizon, RotationWork* work) {
-  RotationWork local;
-  RotationWork& done = work ? *work : local;
-  done = {};
-  // Rounding of R - r is harmless: it is exact (Sterbenz) when r >= R / 2, and tiny against R.
-  const double approach_speed =
-      std::hypot(p.w.x(), p.w.y()) +
-      std::fabs(p.wa) * (boundingRadius(p.a) - inscribedRadius(p.a)) +
-      std::fabs(p.wb) * (boundingRadius(p.b) - inscribedRadius(p.b));
-  if (!(approach_speed > 0.0)) return {};
-  const double curvature = sweepCurvature(p.a, p.wa) + sweepCurvature(p.b, p.wb);
-  // A curvature bound below the normal range (an angular velocity whose square underflows) or
-  // overflowed is not trusted: then the steps are the plain ones.
-  const bool second_order = curvature >= std::numeric_limits<double>::min() &&
-                            curvature <= std::numeric_limits<double>::max();
-  const double graze = kGrazeDistance * (inscribedRadius(p.a) + inscribedRadius(p.b));
+RotatingPair rotatingPair(const Ellipse& a, const Eigen::Vector2d& a_velocity,
+                          const Eigen::Vector2d& a_arc_velocity, double wa, const Ellipse& b,
+                          const Motion& motion_b) {
+  RotatingPair p{
+      a, b, motion_b.velocity - a_velocity, wa, motion_b.angular_velocity, a_arc_velocity, {}};
+  p.a.center = Eigen::Vector2d::Zero();
+  using Long = long double;
+  for (int i = 0; i < 2; ++i) {
+    p.b.center[i] = split(Long(b.center[i]) - a.center[i], &p.low.b_center[i]);
+    p.w[i] = split(Long(motion_b.velocity[i]) - a_velocity[i], &p.low.w[i]);
+  }
+  return p;
+}
+
+// |w - R(s) v|^2 = |w|^2 + |v|^2 - 2 |w| |v| cos(alpha + s), largest where alpha + s is nearest
+// an odd multiple of pi.
+double largestCentreSpeed(const Eigen::Vector2d& w, const Eigen::Vector2d& v, double turn) {
+  const double a = std::hypot(w.x(), w.y()), c = std::hypot(v.x(), v.y());
+  if (a == 0.0 || c == 0.0) return a + c;
+  constexpr double kPi = 3.14159265358979323846;
+  const double alpha = std::atan2(w.x() * v.y() - w.y() * v.x(), w.dot(v));
+  const double lo = alpha + std::min(0.0, turn) - 1e-9, hi = alpha + std::max(0.0, turn) + 1e-9;
+  if (std::ceil((lo - kPi) / (2.0 * kPi)) <= (hi - kPi) / (2.0 * kPi)) return a + c;
+  const double c_end = std::cos(turn), s_end = std::sin(turn);
+  const Eigen::Vector2d v_end(c_end * v.x() - s_end * v.y(), s_end * v.x() + c_end * v.y());
+  return std::max((w - v).norm(), (w - v_end).norm()) * (1.0 + 1e-12);
+}
+
+namespace {
+
+/// What the steps of one pair need besides the pair.
+struct StepBounds {
+  double approach_speed;  ///< V [m/s]
+  double curvature;       ///< M [m/s^2]
+  bool second_order;
+  double graze;     ///< the grazing band [m]
+  double tiny_gap;  ///< below it the witness direction is a's normal [m]
+};
+
+/// The steps of rotatingContact(); kArc: the pair has an arc (RotatingPair::hasArc()), so that
+/// firstContact()'s pairs run without its branches.
+template <bool kArc>
+FirstContact advance(const RotatingPair& p, const StepBounds& k, double horizon, double until,
+                     RotationWork& done) {
+  const auto bAt = [&p](double t) {
+    Ellipse e = p.b;
+    e.center = p.b.center + p.w * t;
+    if constexpr (kArc) e.center -= p.arcAt(t);
+    e.angle = p.b.angle + p.wb * t;
+    return e;
+  };
   const double resolution = kRotationResolution * horizon;
   double t = 0.0;
   for (int i = 0; i < kMaxRotationSteps; ++i) {
-    const Ellipse a = p.aAt(t), b = p.bAt(t);
+    const Ellipse a = p.aAt(t), b = bAt(t);
     const Clearance c = distance(a, b);
     ++done.distance_calls;
     if (!c.separated) return {true, t};
-    // Plain steps cannot resolve a grazing band; they stop there, as conservative_advancement.h.
-    if (!second_order && c.distance <= graze) return {true, t};
-    double step = c.distance * kStepShrink / approach_speed;
-    const Eigen::Vector2d gap = c.point_b - c.point_a;
-    const double gap_length = gap.norm();
-    if (second_order && gap_length > 0.0) {
-      const SeparationAlong s = bestSeparation(a, b, p, gap / gap_length);
-      const double value = s.value - s.rounding;
-      if (value > 0.0) step = std::max(step, kStepShrink * quadraticStep(value, s.rate, curvature));
+    // Plain steps cannot resolve a grazing band; they stop there.
+    if (!k.second_order && c.distance <= k.graze) return {true, t};
+    double step = c.distance * kStepShrink / k.approach_speed;
+    // A first-order step past `until` or the horizon decides as any longer one would: the gate's
+    // search stops most pairs so, and the second order is not needed there.
+    const bool decided = step >= resolution && t + step > std::min(until, horizon);
+    // The direction between the witness points, or for a tiny gap a's normal at its own.
+    Eigen::Vector2d direction = c.point_b - c.point_a;
+    const double gap = direction.norm();
+    bool blurred = false;  // the separation's rounding allowance costs much of it
+    double last_rate = 0.0;
+    Eigen::Vector2d last_direction;
+    if (k.second_order && !decided &&
+        (gap > k.tiny_gap ? (direction /= gap, true) : rimNormal(a, c.point_a, &direction))) {
+      Eigen::Vector2d centre_velocity = p.w;
+      if constexpr (kArc) centre_velocity -= p.arcVelocityAt(t);
+      const Separation s = bestSeparation(a, b, centre_velocity, p.wa, p.wb, direction);
+      const double value = s.best.value - s.best.rounding;
+      blurred = !(value > kPreciseBelow * s.best.rounding);
+      last_rate = s.last_rate, last_direction = s.last_direction;
+      if (value > 0.0) {
+        step = std::max(step, kStepShrink * quadraticStep(value, s.best.rate, k.curvature));
+      }
     }
     if (step < resolution) {
       const double probe = std::min(t + resolution, horizon);
-      if (overlap(p.aAt(probe), p.bAt(probe))) return {true, t};
-      if (c.distance <= graze) return {true, t};  // a tangency within the grazing band
+      if (overlap(p.aAt(probe), bAt(probe))) return {true, t};
+      // The long double separation, where the double one's rounding holds the steps back.
+      const double precise = blurred ? preciseSeparation(p, t, last_direction) : 0.0;
+      if (precise > 0.0) {
+        step = std::max(step, kStepShrink * quadraticStep(precise, last_rate, k.curvature));
+      }
+      if (step < resolution && c.distance <= k.graze) return {true, t};  // a tangency in the band
     }
     const double next = t + step;
+    if (next > until && until < horizon) return {};  // any contact comes after `until`
     if (next > horizon) {
       // [t, horizon] is certified clear unless the horizon itself touches: the last interval is
       // shortened to end exactly at the horizon and checked there.
@@ -172,6 +312,34 @@ FirstContact rotatingContact(const RotatingPair& p, double horizon, RotationWork
   }
   done.capped = true;
   return {true, t};  // safety cap: no contact before t is certified, claim contact at t
+}
+
+}  // namespace
+
+FirstContact rotatingContact(const RotatingPair& p, double horizon, RotationWork* work,
+                             double until) {
+  RotationWork local;
+  RotationWork& done = work ? *work : local;
+  done = {};
+  StepBounds k;
+  // Rounding of R - r is harmless: it is exact (Sterbenz) when r >= R / 2, and tiny against R.
+  k.approach_speed = (p.hasArc() ? largestCentreSpeed(p.w, p.a_arc_velocity, p.wa * horizon)
+                                 : std::hypot(p.w.x(), p.w.y())) +
+                     std::fabs(p.wa) * (boundingRadius(p.a) - inscribedRadius(p.a)) +
+                     std::fabs(p.wb) * (boundingRadius(p.b) - inscribedRadius(p.b));
+  if (!(k.approach_speed > 0.0)) return {};
+  k.curvature = sweepCurvature(p.a, p.wa) + sweepCurvature(p.b, p.wb);
+  if (p.hasArc()) k.curvature += std::fabs(p.wa) * p.a_arc_velocity.norm();
+  // A curvature bound below the normal range (an angular velocity whose square underflows) or
+  // overflowed is not trusted: then the steps are the plain ones. A pair with no turn at all
+  // (spinning circles, no arc) has f linear in t: its curvature 0 is exact.
+  const bool linear = !turns(p.a, p.wa) && !turns(p.b, p.wb) && !p.hasArc();
+  k.second_order = linear || (k.curvature >= std::numeric_limits<double>::min() &&
+                              k.curvature <= std::numeric_limits<double>::max());
+  k.graze = kGrazeDistance * (inscribedRadius(p.a) + inscribedRadius(p.b));
+  k.tiny_gap = kWitnessGap * (boundingRadius(p.a) + boundingRadius(p.b));
+  return p.hasArc() ? advance<true>(p, k, horizon, until, done)
+                    : advance<false>(p, k, horizon, until, done);
 }
 
 }  // namespace ellipse_collision::core::detail

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace ellipse_collision::core {
 namespace test {
@@ -169,7 +170,131 @@ OracleFirstContact rotation(const Ellipse& a, const Motion& ma, const Ellipse& b
   return {false, 0, static_cast<quad>(min_scale)};
 }
 
+template <typename T>
+T cast(quad x) {
+  return static_cast<T>(x);
+}
+
+// The displacement c(t) - c0 of a rigid motion (OracleRigidMotion) at t.
+template <typename T>
+void displacement(const OracleRigidMotion& m, T t, T* dx, T* dy) {
+  const T vx = cast<T>(m.vx), vy = cast<T>(m.vy), ux = cast<T>(m.ux), uy = cast<T>(m.uy);
+  const T w = cast<T>(m.turn_rate);
+  T along = t, across = 0;  // sin(W t) / W and (1 - cos(W t)) / W, written without cancellation
+  if (w != 0) {
+    T s, c, s_half, c_half;
+    sinCos(w * t, &s, &c);
+    sinCos(w * t / 2, &s_half, &c_half);
+    along = s / w;
+    across = 2 * s_half * s_half / w;
+  }
+  *dx = vx * t + along * ux - across * uy;
+  *dy = vy * t + along * uy + across * ux;
+}
+
+template <typename T>
+T rigidGaugeAt(const Ellipse& a, const OracleRigidMotion& ma, const Ellipse& b,
+               const OracleRigidMotion& mb, T t) {
+  T dax, day, dbx, dby;
+  displacement(ma, t, &dax, &day);
+  displacement(mb, t, &dbx, &dby);
+  const T px = cast<T>(mb.x - ma.x) + (dbx - dax);
+  const T py = cast<T>(mb.y - ma.y) + (dby - day);
+  const auto shape = [t](const Ellipse& e, const OracleRigidMotion& m) {
+    T s, c;
+    sinCos(cast<T>(m.angle) + cast<T>(m.turn_rate) * t, &s, &c);
+    const T rx = e.radius_x, ry = e.radius_y;
+    return Shape<T>{c, s, rx * rx, ry * ry};
+  };
+  return Sum<T>{shape(a, ma), shape(b, mb)}.gauge(px, py);
+}
+
 }  // namespace
+
+OracleRigidMotion oracleMotionOf(const Ellipse& e, const Motion& m) {
+  OracleRigidMotion r;
+  r.x = e.center.x(), r.y = e.center.y(), r.angle = e.angle;
+  r.vx = m.velocity.x(), r.vy = m.velocity.y();
+  r.turn_rate = m.angular_velocity;
+  return r;
+}
+
+Ellipse oraclePoseAt(const Ellipse& e, const OracleRigidMotion& m, quad t) {
+  quad dx, dy;
+  displacement(m, t, &dx, &dy);
+  Ellipse at = e;
+  at.center = {static_cast<double>(m.x + dx), static_cast<double>(m.y + dy)};
+  at.angle = static_cast<double>(m.angle + m.turn_rate * t);
+  return at;
+}
+
+Eigen::Vector2d oracleVelocityAt(const OracleRigidMotion& m, quad t) {
+  quad s, c;
+  sincosq(m.turn_rate * t, &s, &c);
+  return {static_cast<double>(m.vx + c * m.ux - s * m.uy),
+          static_cast<double>(m.vy + s * m.ux + c * m.uy)};
+}
+
+quad oracleRigidScaleAt(const Ellipse& a, const OracleRigidMotion& ma, const Ellipse& b,
+                        const OracleRigidMotion& mb, quad t) {
+  return rigidGaugeAt<quad>(a, ma, b, mb, t);
+}
+
+OracleGrazingPass oracleGrazingPass(Ellipse& a, const OracleRigidMotion& ma, Ellipse& b,
+                                    const OracleRigidMotion& mb, double horizon, double target,
+                                    int samples) {
+  using ld = long double;
+  const auto scaleAt = [&](quad t) { return rigidGaugeAt<quad>(a, ma, b, mb, t); };
+  std::vector<ld> scanned(samples + 1);
+  int smallest = 0;
+  for (int i = 0; i <= samples; ++i) {
+    scanned[i] = rigidGaugeAt<ld>(a, ma, b, mb, static_cast<ld>(horizon) * i / samples);
+    if (scanned[i] < scanned[smallest]) smallest = i;
+  }
+  OracleGrazingPass pass;
+  if (smallest == 0 || smallest == samples) return pass;
+  for (int i = 0; i < samples; ++i) {
+    if (i < smallest ? !(scanned[i + 1] < scanned[i]) : !(scanned[i + 1] > scanned[i])) {
+      return pass;
+    }
+  }
+  // Golden section on the samples either side of the smallest.
+  const quad step = static_cast<quad>(horizon) / samples;
+  quad lo = step * (smallest - 1), hi = step * (smallest + 1);
+  const quad ratio = (sqrtq(5) - 1) / 2;
+  quad x1 = hi - ratio * (hi - lo), x2 = lo + ratio * (hi - lo);
+  quad f1 = scaleAt(x1), f2 = scaleAt(x2);
+  // The scale is quadratic about its smallest: a time within 1e-18 of the horizon gives the
+  // scale to ~1e-36, and the bisection below gives the contact to 2^-64 of the dip.
+  for (int k = 0; k < 120 && hi - lo > static_cast<quad>(1e-18) * horizon; ++k) {
+    if (f1 < f2) {
+      hi = x2, x2 = x1, f2 = f1;
+      x1 = hi - ratio * (hi - lo), f1 = scaleAt(x1);
+    } else {
+      lo = x1, x1 = x2, f1 = f2;
+      x2 = lo + ratio * (hi - lo), f2 = scaleAt(x2);
+    }
+  }
+  pass.time = f1 < f2 ? x1 : x2;
+  const quad radius_scale = (f1 < f2 ? f1 : f2) / static_cast<quad>(target);
+  for (Ellipse* e : {&a, &b}) {
+    e->radius_x = static_cast<double>(e->radius_x * radius_scale);
+    e->radius_y = static_cast<double>(e->radius_y * radius_scale);
+  }
+  pass.found = true;
+  pass.scale = scaleAt(pass.time);
+  pass.contact = pass.scale <= 1;
+  if (pass.contact) {
+    quad before = 0, after = pass.time;
+    if (scaleAt(before) <= 1) return pass.contact_time = 0, pass;
+    for (int k = 0; k < 64; ++k) {
+      const quad mid = (before + after) / 2;
+      (scaleAt(mid) <= 1 ? after : before) = mid;
+    }
+    pass.contact_time = after;
+  }
+  return pass;
+}
 
 quad oracleScaleAt(const Ellipse& a, const Motion& ma, const Ellipse& b, const Motion& mb, quad t) {
   return gaugeAt<quad>(a, ma, b, mb, t);

@@ -33,5 +33,51 @@ OracleFirstContact oracleFirstContact(const Ellipse& a, const Motion& motion_a, 
 __float128 oracleScaleAt(const Ellipse& a, const Motion& motion_a, const Ellipse& b,
                          const Motion& motion_b, __float128 t);
 
+/// A rigid planar motion in quad precision, more general than Motion: the centre at
+///   c(t) = c0 + v t + (sin(W t) u + (1 - cos(W t)) u_perp) / W    (u_perp: u turned +90 deg)
+/// (a constant velocity v plus a velocity u, at t = 0, that turns at W: the centre on an arc about
+/// a point that moves at v), the angle at angle0 + W t. A Motion {v, w} is u = 0, W = w; a body
+/// fixed to a frame turning at W (a twist, a turning path segment) has u = W z x (c0 - pivot).
+struct OracleRigidMotion {
+  __float128 x{0}, y{0}, angle{0};  ///< c0 [m], angle0 [rad]
+  __float128 vx{0}, vy{0};          ///< v [m/s]
+  __float128 ux{0}, uy{0};          ///< u [m/s]
+  __float128 turn_rate{0};          ///< W [rad/s]
+};
+
+/// `e` (centre, angle) moving by `m`.
+OracleRigidMotion oracleMotionOf(const Ellipse& e, const Motion& m);
+
+/// Contact scale at t of two ellipses with the radii of `a` and `b` (their centres and angles are
+/// taken from `motion_a` and `motion_b`), in quad precision (the boundary gauge above).
+__float128 oracleRigidScaleAt(const Ellipse& a, const OracleRigidMotion& motion_a, const Ellipse& b,
+                              const OracleRigidMotion& motion_b, __float128 t);
+
+/// `e`'s radii at the centre and angle of `motion` at time t, rounded to double.
+Ellipse oraclePoseAt(const Ellipse& e, const OracleRigidMotion& motion, __float128 t);
+
+/// The velocity of `motion`'s centre at time t [m/s], rounded to double.
+Eigen::Vector2d oracleVelocityAt(const OracleRigidMotion& motion, __float128 t);
+
+/// A pass made to graze (see oracleGrazingPass()).
+struct OracleGrazingPass {
+  bool found{false};           ///< false: the pass is not a single dip inside [0, horizon]
+  __float128 time{0};          ///< of the smallest contact scale [s]
+  __float128 scale{0};         ///< the smallest contact scale, after the radii were scaled
+  bool contact{false};         ///< scale <= 1
+  __float128 contact_time{0};  ///< the first contact [s] when `contact`
+};
+
+/// Scales the radii of `a` and `b` alike so that the smallest contact scale of the pair over
+/// [0, horizon] becomes `target` (the gauge of the Minkowski sum is inversely proportional to a
+/// common scale of both ellipses, while the motions stay). The scale is scanned on `samples`
+/// intervals in long double; the pass must fall at every sample up to its smallest and rise at
+/// every one after it, inside the interval (else nothing is changed and `found` is false). The
+/// smallest is refined by golden section in quad, and the first contact bisected in quad on
+/// [0, time] (a single crossing: the scale falls there).
+OracleGrazingPass oracleGrazingPass(Ellipse& a, const OracleRigidMotion& motion_a, Ellipse& b,
+                                    const OracleRigidMotion& motion_b, double horizon,
+                                    double target, int samples = 400);
+
 }  // namespace test
 }  // namespace ellipse_collision::core

@@ -83,13 +83,15 @@ std::string invalidMotionReason(const Ellipse& ellipse, const Motion& motion, do
 ///    the larger of D / V and the root of a second-order Taylor bound of the separation along the
 ///    witness direction); never `clear` for a pair that touches (outside a 1e-9 band around
 ///    grazing). The steps stop once overlap() confirms a contact 2.5e-10 * horizon ahead, so
-///    outside the band the time is within that of the first contact (tested within 1e-9 of the
-///    horizon of the quad oracle, passes within 3e-9 relative of grazing included); inside the
-///    band a pair that only grazes may be reported in contact, its time unresolved. A
-///    grazing pass costs a few steps, not sqrt(size / gap) of them: at most 54 distance() calls
-///    per pair on the tests and the benchmark for axis ratios to 100, growing about as the square
-///    root of the axis ratio (929 at 1e4). A safety cap of 20000 steps, never reached there, would
-///    report contact at the last certified-safe time. Spinning circles count as translating.
+///    the time is within that of the first contact (tested within 1e-9 of the horizon of the quad
+///    oracle, touching passes grazing 1e-8 to 1e-12 deep included: within ~1e-13 of the radii of
+///    a tangency the separation is evaluated in long double); inside the band a pair that only
+///    grazes may be reported in contact, its time unresolved. A grazing pass costs a few steps,
+///    not sqrt(size / gap) of them: at most 54 distance() calls per pair on the benchmark's mix
+///    for axis ratios to 100, 200 on the tests' passes grazing 1e-12 deep, growing about as the
+///    square root of the axis ratio (929 at 1e4). A safety cap of 20000 steps, never reached
+///    there, would report contact at the last certified-safe time. Spinning circles count as
+///    translating.
 /// Exactly symmetric: swapping (a, motion_a) with (b, motion_b) gives the same bits.
 /// Precondition: invalidMotionReason(a, motion_a, b, motion_b, horizon) is empty; otherwise the
 /// result is unspecified (but the call returns).
