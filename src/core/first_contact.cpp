@@ -33,10 +33,11 @@ namespace {
 // and falls after. So the line meets K iff |sigma| <= h_K(n) (closed form: the grazing decision),
 // and the entry normal is the one root of f. It is found by Newton's method safeguarded by
 // bisection (Numerical Recipes' rtsafe: bisect when the step leaves the bracket or fails to halve)
-// on s = tan(psi / 2) in [-1, 1], u taken unnormalised as (s^2 - 1, 2 s): no trigonometry in the
-// loop. The search stops when the entry is certified to `kEntryTolerance`: F at every normal
-// tried is a lower bound, and the chord between the boundary points of the bracket's ends, which
-// lies in K, crosses the path at an upper bound. The exit is the entry of the reversed path.
+// on s = tan(psi / 2) in [-1, 1] (near s = +-1 on 1 - |s|: NormalParameter), u taken unnormalised
+// as (s^2 - 1, 2 s): no trigonometry in the loop. The search stops when the entry is certified to
+// `kEntryTolerance`: F at every normal tried is a lower bound, and the chord between the boundary
+// points of the bracket's ends, which lies in K, crosses the path at an upper bound. The exit is
+// the entry of the reversed path.
 // Double precision resolves the entry only to the pair's extent E = |p0 . d| + h_K(n): the
 // normal's components carry an absolute rounding of ~eps, and h_E(u) one of ~eps times the
 // largest radius; on a needle's flat side (axis ratio q) one ulp of the normal moves the support
@@ -92,48 +93,83 @@ struct PathPair {
   }
 };
 
+/// Where the search for the entry normal u = (s^2 - 1, 2 s) (path frame, unnormalised) stands: its
+/// variable v, and s as a function of v. The search starts on v = s, whose doubles are 1.1e-16
+/// apart near s = +-1. There u is within a small angle of +-n: the path meets K's boundary at a
+/// shallow angle theta to its tangent, and the entry moves along the path by the normal's error
+/// times rho / cos theta (rho: K's radius of curvature). On a needle's flat side (rho = q rx) a
+/// normal resolved to 1.1e-16 rad left the supporting lines at the nearest normals crossing the
+/// path early by ~rho 1e-32 / cos theta (fuzzer findings: axis ratio 1.4e14 met at 3.7e-7 rad,
+/// answers 6e-11 s early where 1e-17 s was documented). So once the bracket lies within
+/// [1/2, 1] (or [-1, -1/2]) the search goes on in v = 1 - |s|, exact there (Sterbenz), whose
+/// doubles near 0 resolve the normal's angle from +-n to eps of itself.
+struct NormalParameter {
+  double s0 = 0.0, s1 = 1.0;  ///< s = s0 + s1 v: (0, 1) while v = s, then (1, -1) or (-1, 1)
+
+  struct Normal {
+    double cos_l;  ///< -u . d = L cos psi, L = |u| = 1 + s^2 = 2 - cos_l
+    double un;     ///< u . n = L sin psi
+  };
+  /// 1 - s^2 as (1 - s)(1 + s): near an end the small factor is v itself, exact.
+  Normal at(double v) const {
+    return {((1.0 - s0) - s1 * v) * ((1.0 + s0) + s1 * v), 2.0 * (s0 + s1 * v)};
+  }
+  bool fromEnd() const { return s0 != 0.0; }
+  /// From here on v = 1 - |s|, measured from the end s = `end` (+-1).
+  void startFromEnd(double end) { s0 = end, s1 = -end; }
+  /// v for a given s; exact for s in the half of the end (Sterbenz).
+  double toV(double s) const { return (s - s0) * s1; }
+};
+
 /// The distance [m] along the path from p0 to where it enters K, at most
 /// kTranslationExtentTolerance * (|x0| + h_K(n)) less than the true one and never more beyond
 /// rounding, or any value above `reach` [m] when the entry is beyond it. Precondition: the line
 /// meets K (|sigma| <= h_K(n)).
 double entryDistance(const PathPair& p, double reach) {
-  // The bracket's ends as normals (s) and boundary points; s = -1, 1 are the normals -n, n.
-  double lo = -1.0, hi = 1.0;
+  // The bracket's ends as values of v where f < 0 and f > 0 (ordered as s while v = s) and their
+  // boundary points; s = -1, 1 are the normals -n, n.
+  double below = -1.0, above = 1.0;
   Eigen::Vector2d k_lo = p.boundaryPoint(0.0, -1.0), k_hi = p.boundaryPoint(0.0, 1.0);
   // Start where the path enters the disc of K's half-width across it: exact for two circles.
   const double width = k_hi.y();
   const double sine = std::clamp(p.sigma / width, -1.0, 1.0);
   // Strictly inside (-1, 1), where u . d < 0 and F is defined; the steps stay inside the bracket.
   constexpr double kInside = 1.0 - std::numeric_limits<double>::epsilon();
-  double s = std::clamp(sine / (1.0 + std::sqrt((1.0 - sine) * (1.0 + sine))), -kInside, kInside);
+  double v = std::clamp(sine / (1.0 + std::sqrt((1.0 - sine) * (1.0 + sine))), -kInside, kInside);
+  NormalParameter chart;
   const double tolerance = kEntryTolerance * (std::fabs(p.x0) + width);
   double lower = -std::numeric_limits<double>::infinity();
-  double last_step = hi - lo;
+  double last_step = above - below;
   for (int step = 0; step < kMaxEntrySteps; ++step) {
-    const double s2 = s * s;
-    const double cos_l = 1.0 - s2;  // -u . d = L cos psi, L = |u| = 1 + s^2
-    const double un = 2.0 * s;
-    const SupportOnPath sa = supportOnPath(p.a, -cos_l, un), sb = supportOnPath(p.b, -cos_l, un);
-    lower = std::max(lower, (un * p.sigma - cos_l * p.x0 - sa.h - sb.h) / cos_l);  // F |w|
+    const NormalParameter::Normal u = chart.at(v);
+    const SupportOnPath sa = supportOnPath(p.a, -u.cos_l, u.un),
+                        sb = supportOnPath(p.b, -u.cos_l, u.un);
+    lower = std::max(lower, (u.un * p.sigma - u.cos_l * p.x0 - sa.h - sb.h) / u.cos_l);  // F |w|
     if (lower > reach) break;
     const Eigen::Vector2d k(sa.k_d + sb.k_d, sa.k_n + sb.k_n);
     const double f = k.y() - p.sigma;
     if (f == 0.0) return std::max(lower, k.x() - p.x0);  // k is the entry point
-    (f < 0.0 ? lo : hi) = s;
+    (f < 0.0 ? below : above) = v;
     (f < 0.0 ? k_lo : k_hi) = k;
     const double upper =
         k_lo.x() + (p.sigma - k_lo.y()) * ((k_hi.x() - k_lo.x()) / (k_hi.y() - k_lo.y())) - p.x0;
     if (upper - lower <= tolerance) break;
-    // df/ds = f'(psi) dpsi/ds = cos psi (rho_A + rho_B) 2 / L = 2 cos_l L (rho_A + rho_B) / L^3.
-    const double slope = 2.0 * cos_l * (1.0 + s2) *
+    // df/ds = f'(psi) dpsi/ds = cos psi (rho_A + rho_B) 2 / L = 2 cos_l L (rho_A + rho_B) / L^3,
+    // L = 2 - cos_l; the step in v divides by df/dv = df/ds s1.
+    const double slope = 2.0 * u.cos_l * (2.0 - u.cos_l) *
                          (sa.curvature_radius_over_l3 + sb.curvature_radius_over_l3);
-    double next = s - f / slope;
-    if (!(next > lo && next < hi) || std::fabs(next - s) > 0.5 * last_step) {
-      next = lo + 0.5 * (hi - lo);
+    if (!chart.fromEnd() && (below >= 0.5 || above <= -0.5)) {
+      chart.startFromEnd(below >= 0.5 ? 1.0 : -1.0);
+      below = chart.toV(below), above = chart.toV(above), v = chart.toV(v);
+    }
+    const double lo = std::min(below, above), hi = std::max(below, above);
+    double next = v - f / (slope * chart.s1);
+    if (!(next > lo && next < hi) || std::fabs(next - v) > 0.5 * last_step) {
+      next = below + 0.5 * (above - below);
     }
     if (!(next > lo && next < hi)) break;  // the bracket holds adjacent doubles
-    last_step = std::fabs(next - s);
-    s = next;
+    last_step = std::fabs(next - v);
+    v = next;
   }
   return lower;
 }
