@@ -38,14 +38,19 @@ namespace {
 // `kEntryTolerance`: F at every normal tried is a lower bound, and the chord between the boundary
 // points of the bracket's ends, which lies in K, crosses the path at an upper bound. The exit is
 // the entry of the reversed path.
-// Double precision resolves the entry only to the pair's extent E = |p0 . d| + h_K(n): the
-// normal's components carry an absolute rounding of ~eps, and h_E(u) one of ~eps times the
-// largest radius; on a needle's flat side (axis ratio q) one ulp of the normal moves the support
-// point by ~ulp q rx, and the chord and supporting lines of adjacent normals stay apart by up to
-// ~ulp^2 q rx (fuzzer findings, q = 1.4e14: up to 0.25 eps E early, 1.5e-3 of the horizon). The
-// entry is early by at most kTranslationExtentTolerance * E (tested to q = 1e18: 5 eps E), late
-// by F's rounding only (measured up to 2 eps E). No margin is taken off: an exact crossing (e.g.
-// dyadic sizes, as the velocity gate's tests use) stays exact.
+// Double precision places the path relative to K only to the pair's extent E = |p0 . d| + h_K(n):
+// p0, d, the normal's components and the ellipses' sin and cos carry roundings of ~eps, h_E(u) one
+// of ~eps times the largest radius. Where the path meets K's boundary at an angle theta to its
+// normal there, a shift of the path across itself moves the entry along it by tan theta times as
+// much: the problem's conditioning, which grows as the path grazes K or runs nearly along a
+// needle's flat side. The normal is resolved finely enough not to add to it: on a needle's flat
+// side (axis ratio q) one ulp of the normal moves the support point by ~ulp q rx, and the chord
+// and supporting lines of adjacent normals stay apart by up to ~ulp^2 q rx (fuzzer findings,
+// q = 1.4e14: up to 0.25 eps E early, 1.5e-3 of the horizon, and met at 3.7e-7 rad, see
+// NormalParameter). The entry is early by at most kTranslationExtentTolerance * E / cos theta
+// (tested to q = 1e18: 5 eps E), late by F's rounding only (measured up to 3 eps E / cos theta).
+// No margin is taken off: an exact crossing (e.g. dyadic sizes, as the velocity gate's tests
+// use) stays exact.
 constexpr int kMaxEntrySteps = 100;
 // Width of the certified interval [m] relative to E, about the rounding of F.
 constexpr double kEntryTolerance = 4.0 * std::numeric_limits<double>::epsilon();
@@ -122,9 +127,10 @@ struct NormalParameter {
 };
 
 /// The distance [m] along the path from p0 to where it enters K, at most
-/// kTranslationExtentTolerance * (|x0| + h_K(n)) less than the true one and never more beyond
-/// rounding, or any value above `reach` [m] when the entry is beyond it. Precondition: the line
-/// meets K (|sigma| <= h_K(n)).
+/// kTranslationExtentTolerance * (|x0| + h_K(n)) / cos theta less than the true one and never more
+/// beyond rounding (theta: the angle between the path and K's normal at the entry), or any value
+/// above `reach` [m] when the entry is beyond it. Precondition: the line meets K
+/// (|sigma| <= h_K(n)).
 double entryDistance(const PathPair& p, double reach) {
   // The bracket's ends as values of v where f < 0 and f > 0 (ordered as s while v = s) and their
   // boundary points; s = -1, 1 are the normals -n, n.

@@ -812,7 +812,8 @@ TEST(FirstContact, TinyAgainstLargeSlowPairsWithinTheDocumentedBound) {
     worst_late[kind] = std::max(worst_late[kind], error.conditioned);
     smallest_cosine[kind] = std::min(smallest_cosine[kind], error.cosine);
     beyond_head_on[kind] += error.head_on < -1.0 || error.head_on > kLateShareOfExtentBound;
-    EXPECT_LE(error.conditioned, kLateShareOfExtentBound) << kinds[kind] << ", late: " << describe(c);
+    EXPECT_LE(error.conditioned, kLateShareOfExtentBound)
+        << kinds[kind] << ", late: " << describe(c);
     EXPECT_GE(error.conditioned, -1.0) << kinds[kind] << ", early: " << describe(c);
   }
   for (int kind = 0; kind < 3; ++kind) {
