@@ -131,6 +131,13 @@ void check(const Case& c, Report& report, int rotation_samples = 2000,
   }
 }
 
+/// h_E(n) = |(radius_x (n . e_x), radius_y (n . e_y))|: ellipse e's half-width across a line of
+/// unit normal n.
+double halfWidthAcross(const Ellipse& e, const Eigen::Vector2d& n) {
+  const double c = std::cos(e.angle), s = std::sin(e.angle);
+  return std::hypot(e.radius_x * (c * n.x() + s * n.y()), e.radius_y * (c * n.y() - s * n.x()));
+}
+
 class Generator : public ellipse_collision::test::RandomSource {
  public:
   using RandomSource::RandomSource;
@@ -149,12 +156,7 @@ class Generator : public ellipse_collision::test::RandomSource {
                const Eigen::Vector2d& base_velocity) {
     const Eigen::Vector2d w = direction() * speed;
     const Eigen::Vector2d n(-w.y() / speed, w.x() / speed);
-    auto support = [&](const Ellipse& e) {
-      const double c = std::cos(e.angle), s = std::sin(e.angle);
-      const double along_x = c * n.x() + s * n.y(), along_y = c * n.y() - s * n.x();
-      return std::hypot(e.radius_x * along_x, e.radius_y * along_y);
-    };
-    const double h = support(a) + support(b);
+    const double h = halfWidthAcross(a, n) + halfWidthAcross(b, n);
     b.center = a.center + n * (scale * h) - w * when;
     return {a, b, {base_velocity, 0.0}, {base_velocity + w, 0.0}, horizon};
   }
@@ -552,12 +554,8 @@ double extentTimeBound(const Case& c) {
   const Eigen::Vector2d w = c.mb.velocity - c.ma.velocity;
   const double speed = w.norm();
   const Eigen::Vector2d d = w / speed, n(-d.y(), d.x());
-  auto support = [&](const Ellipse& e) {
-    const double cs = std::cos(e.angle), sn = std::sin(e.angle);
-    return std::hypot(e.radius_x * (cs * n.x() + sn * n.y()),
-                      e.radius_y * (cs * n.y() - sn * n.x()));
-  };
-  const double extent = std::fabs((c.b.center - c.a.center).dot(d)) + support(c.a) + support(c.b);
+  const double extent = std::fabs((c.b.center - c.a.center).dot(d)) + halfWidthAcross(c.a, n) +
+                        halfWidthAcross(c.b, n);
   return kExtentTolerance * extent / speed;
 }
 
@@ -751,13 +749,8 @@ bool placeForEntry(const Ellipse& a, Ellipse& b, const Eigen::Vector2d& w, doubl
                    double travel) {
   const double speed = w.norm();
   const Eigen::Vector2d d = w / speed, n(-d.y(), d.x());
-  auto halfWidth = [&](const Ellipse& e) {
-    const double cs = std::cos(e.angle), sn = std::sin(e.angle);
-    return std::hypot(e.radius_x * (cs * n.x() + sn * n.y()),
-                      e.radius_y * (cs * n.y() - sn * n.x()));
-  };
   const double far = 2.0 * (boundingRadius(a) + boundingRadius(b)) + 1.0;
-  b.center = a.center + n * (scale * (halfWidth(a) + halfWidth(b))) - d * far;
+  b.center = a.center + n * (scale * (halfWidthAcross(a, n) + halfWidthAcross(b, n))) - d * far;
   const OracleFirstContact o = oracleFirstContact(a, {}, b, {w, 0.0}, 4.0 * far / speed);
   if (!o.contact || !(o.time > 0)) return false;
   b.center += w * (static_cast<double>(o.time) - travel / speed);
