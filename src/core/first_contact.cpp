@@ -98,32 +98,138 @@ struct PathPair {
   }
 };
 
-/// Where the search for the entry normal u = (s^2 - 1, 2 s) (path frame, unnormalised) stands: its
-/// variable v, and s as a function of v. The search starts on v = s, whose doubles are 1.1e-16
-/// apart near s = +-1. There u is within a small angle of +-n: the path meets K's boundary at a
-/// shallow angle theta to its tangent, and the entry moves along the path by the normal's error
-/// times rho / cos theta (rho: K's radius of curvature). On a needle's flat side (rho = q rx) a
-/// normal resolved to 1.1e-16 rad left the supporting lines at the nearest normals crossing the
-/// path early by ~rho 1e-32 / cos theta (fuzzer findings: axis ratio 1.4e14 met at 3.7e-7 rad,
-/// answers 6e-11 s early where 1e-17 s was documented). So once the bracket lies within
-/// [1/2, 1] (or [-1, -1/2]) the search goes on in v = 1 - |s|, exact there (Sterbenz), whose
-/// doubles near 0 resolve the normal's angle from +-n to eps of itself.
-struct NormalParameter {
-  double s0 = 0.0, s1 = 1.0;  ///< s = s0 + s1 v: (0, 1) while v = s, then (1, -1) or (-1, 1)
+/// The entry normal u = (s^2 - 1, 2 s) (path frame, unnormalised) as a function of the search
+/// variable v: its components -u . d = L cos psi and u . n = L sin psi, and L = |u| = 1 + s^2.
+struct NormalOnPath {
+  double cos_l, un, l;
+};
 
-  struct Normal {
-    double cos_l;  ///< -u . d = L cos psi, L = |u| = 1 + s^2 = 2 - cos_l
-    double un;     ///< u . n = L sin psi
-  };
-  /// 1 - s^2 as (1 - s)(1 + s): near an end the small factor is v itself, exact.
-  Normal at(double v) const {
-    return {((1.0 - s0) - s1 * v) * ((1.0 + s0) + s1 * v), 2.0 * (s0 + s1 * v)};
+/// The search starts on v = s itself (CentreChart), whose doubles are 1.1e-16 apart near s = +-1.
+/// There u is within a small angle of +-n: the path meets K's boundary at a shallow angle theta to
+/// its tangent, and the entry moves along the path by the normal's error times rho / cos theta
+/// (rho: K's radius of curvature). On a needle's flat side (rho = q rx) a normal resolved to
+/// 1.1e-16 rad left the supporting lines at the nearest normals crossing the path early by
+/// ~rho 1e-32 / cos theta (fuzzer findings: axis ratio 1.4e14 met at 3.7e-7 rad, answers 6e-11 s
+/// early where 1e-17 s was documented). So when the bracket holds adjacent doubles within
+/// [1/2, 1] (or [-1, -1/2]) uncertified, the search goes on in v = 1 - |s| (EndChart), exact
+/// there (Sterbenz), whose doubles near 0 resolve the normal's angle from +-n to eps of itself.
+struct CentreChart {
+  static constexpr bool kCentre = true;
+  static constexpr double kDsDv = 1.0;
+  static NormalOnPath at(double v) {
+    const double v2 = v * v;
+    return {1.0 - v2, 2.0 * v, 1.0 + v2};
   }
-  bool fromEnd() const { return s0 != 0.0; }
-  /// From here on v = 1 - |s|, measured from the end s = `end` (+-1).
-  void startFromEnd(double end) { s0 = end, s1 = -end; }
-  /// v for a given s; exact for s in the half of the end (Sterbenz).
-  double toV(double s) const { return (s - s0) * s1; }
+};
+
+/// v = 1 - |s| from the end s = kEnd (+1 or -1): s = kEnd (1 - v).
+template <int kEnd>
+struct EndChart {
+  static constexpr bool kCentre = false;
+  static constexpr double kDsDv = -kEnd;
+  static NormalOnPath at(double v) {
+    const double cos_l = v * (2.0 - v);  // 1 - s^2 = (1 - s)(1 + s), the small factor v exact
+    return {cos_l, 2.0 * kEnd * (1.0 - v), 2.0 - cos_l};
+  }
+  static double fromS(double s) { return 1.0 - kEnd * s; }  // exact for s in the end's half
+};
+
+/// The safeguarded Newton search for the root of f on the normal: the bracket [lo, hi] and the
+/// iterate v in the current chart's variable, the boundary points k_lo, k_hi of the bracket's ends
+/// where f < 0 and f > 0, and the best lower bound on the entry.
+struct EntrySearch {
+  EntrySearch(const PathPair& path, double reach_distance)
+      : p(path),
+        reach(reach_distance),
+        k_lo(path.boundaryPoint(0.0, -1.0)),  // s = -1, 1 are the normals -n, n
+        k_hi(path.boundaryPoint(0.0, 1.0)) {
+    // Start where the path enters the disc of K's half-width across it: exact for two circles.
+    const double width = k_hi.y();
+    const double sine = std::clamp(p.sigma / width, -1.0, 1.0);
+    // Strictly inside (-1, 1), where u . d < 0 and F is defined; the steps stay inside the bracket.
+    constexpr double kInside = 1.0 - std::numeric_limits<double>::epsilon();
+    v = std::clamp(sine / (1.0 + std::sqrt((1.0 - sine) * (1.0 + sine))), -kInside, kInside);
+    tolerance = kEntryTolerance * (std::fabs(p.x0) + width);
+  }
+
+  const PathPair& p;
+  double reach;
+  Eigen::Vector2d k_lo, k_hi;
+  double lo = -1.0, hi = 1.0, v, tolerance;
+  double lower = -std::numeric_limits<double>::infinity();
+  double last_step = 2.0;
+
+  /// Steps on `Chart` until the entry is certified, beyond `reach`, or the bracket holds adjacent
+  /// doubles (true: `lower` is the answer), except on the centre chart with the bracket within an
+  /// end's half, where the end's chart resolves the normal further (false). At most
+  /// kMaxEntrySteps samples on each chart.
+  template <typename Chart>
+  bool run() {
+    for (int step = 0; step < kMaxEntrySteps; ++step) {
+      if (sample<Chart>()) return true;
+      if (!advance<Chart>()) return !Chart::kCentre || (lo < 0.5 && hi > -0.5);
+    }
+    return true;
+  }
+
+  /// Goes on from the end s = kEnd, whose half holds the bracket. The bracket's ends were sampled
+  /// on the centre chart, whose normals (1 - s^2 rounded) need not be the end chart's at the same
+  /// v: both are sampled again, within the bracket of the normals s = kEnd, -kEnd (v = 0, 2),
+  /// where f = +-h_K(n) - sigma on any chart.
+  template <int kEnd>
+  void runFromEnd() {
+    using Chart = EndChart<kEnd>;
+    const double from_lo = Chart::fromS(lo), from_hi = Chart::fromS(hi);
+    lo = 0.0, hi = 2.0;
+    for (const double start : {from_lo, from_hi}) {
+      if (!(start > lo && start < hi)) continue;  // an end, or on the side of one sampled closer
+      v = start;
+      if (sample<Chart>()) return;
+    }
+    last_step = hi - lo;
+    if (advance<Chart>()) run<Chart>();
+  }
+
+ private:
+  double f = 0.0, slope = 0.0;  // at the last sample, df/ds
+
+  /// Samples F and f at v: true when `lower` is the answer (certified to `tolerance`, beyond
+  /// `reach`, or the boundary point on the path).
+  template <typename Chart>
+  bool sample() {
+    const NormalOnPath u = Chart::at(v);
+    const SupportOnPath sa = supportOnPath(p.a, -u.cos_l, u.un),
+                        sb = supportOnPath(p.b, -u.cos_l, u.un);
+    lower = std::max(lower, (u.un * p.sigma - u.cos_l * p.x0 - sa.h - sb.h) / u.cos_l);  // F |w|
+    if (lower > reach) return true;
+    const Eigen::Vector2d k(sa.k_d + sb.k_d, sa.k_n + sb.k_n);
+    f = k.y() - p.sigma;
+    if (f == 0.0) {  // k is the entry point
+      lower = std::max(lower, k.x() - p.x0);
+      return true;
+    }
+    ((f < 0.0) == (Chart::kDsDv > 0.0) ? lo : hi) = v;  // f rises with s
+    (f < 0.0 ? k_lo : k_hi) = k;
+    const double upper =
+        k_lo.x() + (p.sigma - k_lo.y()) * ((k_hi.x() - k_lo.x()) / (k_hi.y() - k_lo.y())) - p.x0;
+    // df/ds = f'(psi) dpsi/ds = cos psi (rho_A + rho_B) 2 / L = 2 cos_l L (rho_A + rho_B) / L^3.
+    slope = 2.0 * u.cos_l * u.l * (sa.curvature_radius_over_l3 + sb.curvature_radius_over_l3);
+    return upper - lower <= tolerance;
+  }
+
+  /// The next v: a Newton step on f, or bisection when it leaves the bracket or fails to halve;
+  /// false when the bracket holds adjacent doubles.
+  template <typename Chart>
+  bool advance() {
+    double next = v - f / (slope * Chart::kDsDv);
+    if (!(next > lo && next < hi) || std::fabs(next - v) > 0.5 * last_step) {
+      next = lo + 0.5 * (hi - lo);
+    }
+    if (!(next > lo && next < hi)) return false;
+    last_step = std::fabs(next - v);
+    v = next;
+    return true;
+  }
 };
 
 /// The distance [m] along the path from p0 to where it enters K, at most
@@ -132,52 +238,15 @@ struct NormalParameter {
 /// above `reach` [m] when the entry is beyond it. Precondition: the line meets K
 /// (|sigma| <= h_K(n)).
 double entryDistance(const PathPair& p, double reach) {
-  // The bracket's ends as values of v where f < 0 and f > 0 (ordered as s while v = s) and their
-  // boundary points; s = -1, 1 are the normals -n, n.
-  double below = -1.0, above = 1.0;
-  Eigen::Vector2d k_lo = p.boundaryPoint(0.0, -1.0), k_hi = p.boundaryPoint(0.0, 1.0);
-  // Start where the path enters the disc of K's half-width across it: exact for two circles.
-  const double width = k_hi.y();
-  const double sine = std::clamp(p.sigma / width, -1.0, 1.0);
-  // Strictly inside (-1, 1), where u . d < 0 and F is defined; the steps stay inside the bracket.
-  constexpr double kInside = 1.0 - std::numeric_limits<double>::epsilon();
-  double v = std::clamp(sine / (1.0 + std::sqrt((1.0 - sine) * (1.0 + sine))), -kInside, kInside);
-  NormalParameter chart;
-  const double tolerance = kEntryTolerance * (std::fabs(p.x0) + width);
-  double lower = -std::numeric_limits<double>::infinity();
-  double last_step = above - below;
-  for (int step = 0; step < kMaxEntrySteps; ++step) {
-    const NormalParameter::Normal u = chart.at(v);
-    const SupportOnPath sa = supportOnPath(p.a, -u.cos_l, u.un),
-                        sb = supportOnPath(p.b, -u.cos_l, u.un);
-    lower = std::max(lower, (u.un * p.sigma - u.cos_l * p.x0 - sa.h - sb.h) / u.cos_l);  // F |w|
-    if (lower > reach) break;
-    const Eigen::Vector2d k(sa.k_d + sb.k_d, sa.k_n + sb.k_n);
-    const double f = k.y() - p.sigma;
-    if (f == 0.0) return std::max(lower, k.x() - p.x0);  // k is the entry point
-    (f < 0.0 ? below : above) = v;
-    (f < 0.0 ? k_lo : k_hi) = k;
-    const double upper =
-        k_lo.x() + (p.sigma - k_lo.y()) * ((k_hi.x() - k_lo.x()) / (k_hi.y() - k_lo.y())) - p.x0;
-    if (upper - lower <= tolerance) break;
-    // df/ds = f'(psi) dpsi/ds = cos psi (rho_A + rho_B) 2 / L = 2 cos_l L (rho_A + rho_B) / L^3,
-    // L = 2 - cos_l; the step in v divides by df/dv = df/ds s1.
-    const double slope = 2.0 * u.cos_l * (2.0 - u.cos_l) *
-                         (sa.curvature_radius_over_l3 + sb.curvature_radius_over_l3);
-    if (!chart.fromEnd() && (below >= 0.5 || above <= -0.5)) {
-      chart.startFromEnd(below >= 0.5 ? 1.0 : -1.0);
-      below = chart.toV(below), above = chart.toV(above), v = chart.toV(v);
+  EntrySearch search(p, reach);
+  if (!search.run<CentreChart>()) {
+    if (search.lo >= 0.5) {
+      search.runFromEnd<1>();
+    } else {
+      search.runFromEnd<-1>();
     }
-    const double lo = std::min(below, above), hi = std::max(below, above);
-    double next = v - f / (slope * chart.s1);
-    if (!(next > lo && next < hi) || std::fabs(next - v) > 0.5 * last_step) {
-      next = below + 0.5 * (above - below);
-    }
-    if (!(next > lo && next < hi)) break;  // the bracket holds adjacent doubles
-    last_step = std::fabs(next - v);
-    v = next;
   }
-  return lower;
+  return search.lower;
 }
 
 FirstContact translationContact(const Ellipse& a, const Ellipse& b, const Eigen::Vector2d& w,
