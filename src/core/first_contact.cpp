@@ -33,11 +33,11 @@ namespace {
 // and falls after. So the line meets K iff |sigma| <= h_K(n) (closed form: the grazing decision),
 // and the entry normal is the one root of f. It is found by Newton's method safeguarded by
 // bisection (Numerical Recipes' rtsafe: bisect when the step leaves the bracket or fails to halve)
-// on s = tan(psi / 2) in [-1, 1] (near s = +-1 on 1 - |s|: NormalParameter), u taken unnormalised
-// as (s^2 - 1, 2 s): no trigonometry in the loop. The search stops when the entry is certified to
-// `kEntryTolerance`: F at every normal tried is a lower bound, and the chord between the boundary
-// points of the bracket's ends, which lies in K, crosses the path at an upper bound. The exit is
-// the entry of the reversed path.
+// on s = tan(psi / 2) in [-1, 1] (where that stalls near s = +-1, on 1 - |s|: EndChart), u taken
+// unnormalised as (s^2 - 1, 2 s): no trigonometry in the loop. The search stops when the entry is
+// certified to `kEntryTolerance`: F at every normal tried is a lower bound, and the chord between
+// the boundary points of the bracket's ends, which lies in K, crosses the path at an upper bound.
+// The exit is the entry of the reversed path.
 // Double precision places the path relative to K only to the pair's extent E = |p0 . d| + h_K(n):
 // p0, d, the normal's components and the ellipses' sin and cos carry roundings of ~eps, h_E(u) one
 // of ~eps times the largest radius. Where the path meets K's boundary at an angle theta to its
@@ -47,11 +47,11 @@ namespace {
 // side (axis ratio q) one ulp of the normal moves the support point by ~ulp q rx, and the chord
 // and supporting lines of adjacent normals stay apart by up to ~ulp^2 q rx (fuzzer findings,
 // q = 1.4e14: up to 0.25 eps E early, 1.5e-3 of the horizon, and met at 3.7e-7 rad, see
-// NormalParameter). The entry is early by at most kTranslationExtentTolerance * E / cos theta
+// CentreChart). The entry is early by at most kTranslationExtentTolerance * E / cos theta
 // (tested to q = 1e18: 5 eps E), late by F's rounding only (measured up to 3 eps E / cos theta).
 // No margin is taken off: an exact crossing (e.g. dyadic sizes, as the velocity gate's tests
 // use) stays exact.
-constexpr int kMaxEntrySteps = 100;
+constexpr int kMaxEntrySteps = 100;  // samples per chart of the normal
 // Width of the certified interval [m] relative to E, about the rounding of F.
 constexpr double kEntryTolerance = 4.0 * std::numeric_limits<double>::epsilon();
 
