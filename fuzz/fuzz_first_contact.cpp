@@ -19,6 +19,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <string>
 
 #include "ellipse_collision/core/eigenvalue_test.h"
@@ -87,7 +88,9 @@ double extentTimeBound(const core::Ellipse& a, const core::Motion& ma, const cor
     return std::hypot(e.radius_x * (c * n.x() + s * n.y()), e.radius_y * (c * n.y() - s * n.x()));
   };
   const double extent = std::fabs((b.center - a.center).dot(d)) + halfWidth(a) + halfWidth(b);
-  return core::kTranslationExtentTolerance * extent / (speed * entryCosine(a, b, entry, d));
+  // Divided one at a time: speed * cos theta underflows to 0 for a subnormal speed.
+  const double cosine = std::max(entryCosine(a, b, entry, d), std::numeric_limits<double>::min());
+  return core::kTranslationExtentTolerance * extent / speed / cosine;
 }
 
 bool sameBits(double x, double y) { return std::memcmp(&x, &y, sizeof x) == 0; }
