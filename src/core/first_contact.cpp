@@ -33,19 +33,25 @@ namespace {
 // and falls after. So the line meets K iff |sigma| <= h_K(n) (closed form: the grazing decision),
 // and the entry normal is the one root of f. It is found by Newton's method safeguarded by
 // bisection (Numerical Recipes' rtsafe: bisect when the step leaves the bracket or fails to halve)
-// on s = tan(psi / 2) in [-1, 1], u taken unnormalised as (s^2 - 1, 2 s): no trigonometry in the
-// loop. The search stops when the entry is certified to `kEntryTolerance`: F at every normal
-// tried is a lower bound, and the chord between the boundary points of the bracket's ends, which
-// lies in K, crosses the path at an upper bound. The exit is the entry of the reversed path.
-// Double precision resolves the entry only to the pair's extent E = |p0 . d| + h_K(n): the
-// normal's components carry an absolute rounding of ~eps, and h_E(u) one of ~eps times the
-// largest radius; on a needle's flat side (axis ratio q) one ulp of the normal moves the support
-// point by ~ulp q rx, and the chord and supporting lines of adjacent normals stay apart by up to
-// ~ulp^2 q rx (fuzzer findings, q = 1.4e14: up to 0.25 eps E early, 1.5e-3 of the horizon). The
-// entry is early by at most kTranslationExtentTolerance * E (tested to q = 1e18: 5 eps E), late
-// by F's rounding only (measured up to 2 eps E). No margin is taken off: an exact crossing (e.g.
-// dyadic sizes, as the velocity gate's tests use) stays exact.
-constexpr int kMaxEntrySteps = 100;
+// on s = tan(psi / 2) in [-1, 1] (where that stalls near s = +-1, on 1 - |s|: EndChart), u taken
+// unnormalised as (s^2 - 1, 2 s): no trigonometry in the loop. The search stops when the entry is
+// certified to `kEntryTolerance`: F at every normal tried is a lower bound, and the chord between
+// the boundary points of the bracket's ends, which lies in K, crosses the path at an upper bound.
+// The exit is the entry of the reversed path.
+// Double precision places the path relative to K only to the pair's extent E = |p0 . d| + h_K(n):
+// p0, d, the normal's components and the ellipses' sin and cos carry roundings of ~eps, h_E(u) one
+// of ~eps times the largest radius. Where the path meets K's boundary at an angle theta to its
+// normal there, a shift of the path across itself moves the entry along it by tan theta times as
+// much: the problem's conditioning, which grows as the path grazes K or runs nearly along a
+// needle's flat side. The normal is resolved finely enough not to add to it: on a needle's flat
+// side (axis ratio q) one ulp of the normal moves the support point by ~ulp q rx, and the chord
+// and supporting lines of adjacent normals stay apart by up to ~ulp^2 q rx (fuzzer findings,
+// q = 1.4e14: up to 0.25 eps E early, 1.5e-3 of the horizon, and met at 3.7e-7 rad, see
+// CentreChart). The entry is early by at most kTranslationExtentTolerance * E / cos theta
+// (tested to q = 1e18: 5 eps E), late by F's rounding only (measured up to 3 eps E / cos theta).
+// No margin is taken off: an exact crossing (e.g. dyadic sizes, as the velocity gate's tests
+// use) stays exact.
+constexpr int kMaxEntrySteps = 100;  // samples per chart of the normal
 // Width of the certified interval [m] relative to E, about the rounding of F.
 constexpr double kEntryTolerance = 4.0 * std::numeric_limits<double>::epsilon();
 
@@ -92,50 +98,155 @@ struct PathPair {
   }
 };
 
-/// The distance [m] along the path from p0 to where it enters K, at most
-/// kTranslationExtentTolerance * (|x0| + h_K(n)) less than the true one and never more beyond
-/// rounding, or any value above `reach` [m] when the entry is beyond it. Precondition: the line
-/// meets K (|sigma| <= h_K(n)).
-double entryDistance(const PathPair& p, double reach) {
-  // The bracket's ends as normals (s) and boundary points; s = -1, 1 are the normals -n, n.
-  double lo = -1.0, hi = 1.0;
-  Eigen::Vector2d k_lo = p.boundaryPoint(0.0, -1.0), k_hi = p.boundaryPoint(0.0, 1.0);
-  // Start where the path enters the disc of K's half-width across it: exact for two circles.
-  const double width = k_hi.y();
-  const double sine = std::clamp(p.sigma / width, -1.0, 1.0);
-  // Strictly inside (-1, 1), where u . d < 0 and F is defined; the steps stay inside the bracket.
-  constexpr double kInside = 1.0 - std::numeric_limits<double>::epsilon();
-  double s = std::clamp(sine / (1.0 + std::sqrt((1.0 - sine) * (1.0 + sine))), -kInside, kInside);
-  const double tolerance = kEntryTolerance * (std::fabs(p.x0) + width);
+/// The entry normal u = (s^2 - 1, 2 s) (path frame, unnormalised) as a function of the search
+/// variable v: its components -u . d = L cos psi and u . n = L sin psi, and L = |u| = 1 + s^2.
+struct NormalOnPath {
+  double cos_l, un, l;
+};
+
+/// The search starts on v = s itself (CentreChart), whose doubles are 1.1e-16 apart near s = +-1.
+/// There u is within a small angle of +-n: the path meets K's boundary at a shallow angle theta to
+/// its tangent, and the entry moves along the path by the normal's error times rho / cos theta
+/// (rho: K's radius of curvature). On a needle's flat side (rho = q rx) a normal resolved to
+/// 1.1e-16 rad left the supporting lines at the nearest normals crossing the path early by
+/// ~rho 1e-32 / cos theta (fuzzer findings: axis ratio 1.4e14 met at 3.7e-7 rad, answers 6e-11 s
+/// early where 1e-17 s was documented). So when the bracket holds adjacent doubles within
+/// [1/2, 1] (or [-1, -1/2]) uncertified, the search goes on in v = 1 - |s| (EndChart), exact
+/// there (Sterbenz), whose doubles near 0 resolve the normal's angle from +-n to eps of itself.
+struct CentreChart {
+  static constexpr bool kCentre = true;
+  static constexpr double kDsDv = 1.0;
+  static NormalOnPath at(double v) {
+    const double v2 = v * v;
+    return {1.0 - v2, 2.0 * v, 1.0 + v2};
+  }
+};
+
+/// v = 1 - |s| from the end s = kEnd (+1 or -1): s = kEnd (1 - v).
+template <int kEnd>
+struct EndChart {
+  static constexpr bool kCentre = false;
+  static constexpr double kDsDv = -kEnd;
+  static NormalOnPath at(double v) {
+    const double cos_l = v * (2.0 - v);  // 1 - s^2 = (1 - s)(1 + s), the small factor v exact
+    return {cos_l, 2.0 * kEnd * (1.0 - v), 2.0 - cos_l};
+  }
+  static double fromS(double s) { return 1.0 - kEnd * s; }  // exact for s in the end's half
+};
+
+/// The safeguarded Newton search for the root of f on the normal: the bracket [lo, hi] and the
+/// iterate v in the current chart's variable, the boundary points k_lo, k_hi of the bracket's ends
+/// where f < 0 and f > 0, and the best lower bound on the entry.
+struct EntrySearch {
+  EntrySearch(const PathPair& path, double reach_distance)
+      : p(path),
+        reach(reach_distance),
+        k_lo(path.boundaryPoint(0.0, -1.0)),  // s = -1, 1 are the normals -n, n
+        k_hi(path.boundaryPoint(0.0, 1.0)) {
+    // Start where the path enters the disc of K's half-width across it: exact for two circles.
+    const double width = k_hi.y();
+    const double sine = std::clamp(p.sigma / width, -1.0, 1.0);
+    // Strictly inside (-1, 1), where u . d < 0 and F is defined; the steps stay inside the bracket.
+    constexpr double kInside = 1.0 - std::numeric_limits<double>::epsilon();
+    v = std::clamp(sine / (1.0 + std::sqrt((1.0 - sine) * (1.0 + sine))), -kInside, kInside);
+    tolerance = kEntryTolerance * (std::fabs(p.x0) + width);
+  }
+
+  const PathPair& p;
+  double reach;
+  Eigen::Vector2d k_lo, k_hi;
+  double lo = -1.0, hi = 1.0, v, tolerance;
   double lower = -std::numeric_limits<double>::infinity();
-  double last_step = hi - lo;
-  for (int step = 0; step < kMaxEntrySteps; ++step) {
-    const double s2 = s * s;
-    const double cos_l = 1.0 - s2;  // -u . d = L cos psi, L = |u| = 1 + s^2
-    const double un = 2.0 * s;
-    const SupportOnPath sa = supportOnPath(p.a, -cos_l, un), sb = supportOnPath(p.b, -cos_l, un);
-    lower = std::max(lower, (un * p.sigma - cos_l * p.x0 - sa.h - sb.h) / cos_l);  // F |w|
-    if (lower > reach) break;
+  double last_step = 2.0;
+
+  /// Steps on `Chart` until the entry is certified, beyond `reach`, or the bracket holds adjacent
+  /// doubles (true: `lower` is the answer), except on the centre chart with the bracket within an
+  /// end's half, where the end's chart resolves the normal further (false). At most
+  /// kMaxEntrySteps samples on each chart.
+  template <typename Chart>
+  bool run() {
+    for (int step = 0; step < kMaxEntrySteps; ++step) {
+      if (sample<Chart>()) return true;
+      if (!advance<Chart>()) return !Chart::kCentre || (lo < 0.5 && hi > -0.5);
+    }
+    return true;
+  }
+
+  /// Goes on from the end s = kEnd, whose half holds the bracket. The bracket's ends were sampled
+  /// on the centre chart, whose normals (1 - s^2 rounded) need not be the end chart's at the same
+  /// v: both are sampled again, within the bracket of the normals s = kEnd, -kEnd (v = 0, 2),
+  /// where f = +-h_K(n) - sigma on any chart.
+  template <int kEnd>
+  void runFromEnd() {
+    using Chart = EndChart<kEnd>;
+    const double from_lo = Chart::fromS(lo), from_hi = Chart::fromS(hi);
+    lo = 0.0, hi = 2.0;
+    for (const double start : {from_lo, from_hi}) {
+      if (!(start > lo && start < hi)) continue;  // an end, or on the side of one sampled closer
+      v = start;
+      if (sample<Chart>()) return;
+    }
+    last_step = hi - lo;
+    if (advance<Chart>()) run<Chart>();
+  }
+
+ private:
+  double f = 0.0, slope = 0.0;  // at the last sample, df/ds
+
+  /// Samples F and f at v: true when `lower` is the answer (certified to `tolerance`, beyond
+  /// `reach`, or the boundary point on the path).
+  template <typename Chart>
+  bool sample() {
+    const NormalOnPath u = Chart::at(v);
+    const SupportOnPath sa = supportOnPath(p.a, -u.cos_l, u.un),
+                        sb = supportOnPath(p.b, -u.cos_l, u.un);
+    lower = std::max(lower, (u.un * p.sigma - u.cos_l * p.x0 - sa.h - sb.h) / u.cos_l);  // F |w|
+    if (lower > reach) return true;
     const Eigen::Vector2d k(sa.k_d + sb.k_d, sa.k_n + sb.k_n);
-    const double f = k.y() - p.sigma;
-    if (f == 0.0) return std::max(lower, k.x() - p.x0);  // k is the entry point
-    (f < 0.0 ? lo : hi) = s;
+    f = k.y() - p.sigma;
+    if (f == 0.0) {  // k is the entry point
+      lower = std::max(lower, k.x() - p.x0);
+      return true;
+    }
+    ((f < 0.0) == (Chart::kDsDv > 0.0) ? lo : hi) = v;  // f rises with s
     (f < 0.0 ? k_lo : k_hi) = k;
     const double upper =
         k_lo.x() + (p.sigma - k_lo.y()) * ((k_hi.x() - k_lo.x()) / (k_hi.y() - k_lo.y())) - p.x0;
-    if (upper - lower <= tolerance) break;
     // df/ds = f'(psi) dpsi/ds = cos psi (rho_A + rho_B) 2 / L = 2 cos_l L (rho_A + rho_B) / L^3.
-    const double slope = 2.0 * cos_l * (1.0 + s2) *
-                         (sa.curvature_radius_over_l3 + sb.curvature_radius_over_l3);
-    double next = s - f / slope;
-    if (!(next > lo && next < hi) || std::fabs(next - s) > 0.5 * last_step) {
+    slope = 2.0 * u.cos_l * u.l * (sa.curvature_radius_over_l3 + sb.curvature_radius_over_l3);
+    return upper - lower <= tolerance;
+  }
+
+  /// The next v: a Newton step on f, or bisection when it leaves the bracket or fails to halve;
+  /// false when the bracket holds adjacent doubles.
+  template <typename Chart>
+  bool advance() {
+    double next = v - f / (slope * Chart::kDsDv);
+    if (!(next > lo && next < hi) || std::fabs(next - v) > 0.5 * last_step) {
       next = lo + 0.5 * (hi - lo);
     }
-    if (!(next > lo && next < hi)) break;  // the bracket holds adjacent doubles
-    last_step = std::fabs(next - s);
-    s = next;
+    if (!(next > lo && next < hi)) return false;
+    last_step = std::fabs(next - v);
+    v = next;
+    return true;
   }
-  return lower;
+};
+
+/// The distance [m] along the path from p0 to where it enters K, at most
+/// kTranslationExtentTolerance * (|x0| + h_K(n)) / cos theta less than the true one and never more
+/// beyond rounding (theta: the angle between the path and K's normal at the entry), or any value
+/// above `reach` [m] when the entry is beyond it. Precondition: the line meets K
+/// (|sigma| <= h_K(n)).
+double entryDistance(const PathPair& p, double reach) {
+  EntrySearch search(p, reach);
+  if (!search.run<CentreChart>()) {
+    if (search.lo >= 0.5) {
+      search.runFromEnd<1>();
+    } else {
+      search.runFromEnd<-1>();
+    }
+  }
+  return search.lower;
 }
 
 FirstContact translationContact(const Ellipse& a, const Ellipse& b, const Eigen::Vector2d& w,

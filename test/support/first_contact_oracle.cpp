@@ -128,16 +128,18 @@ OracleFirstContact translation(const Ellipse& a, const Motion& ma, const Ellipse
   // it decreases (cross with the negated normal).
   const quad phi1 = k.crossing(phi_n - pi<quad>(), phi_n, nx, ny, sigma);
   const quad phi2 = k.crossing(phi_n, phi_n + pi<quad>(), -nx, -ny, -sigma);
-  quad t_first = 0;
+  quad t_first = 0, phi_first = 0;
   bool first = true;
   for (quad phi : {phi1, phi2}) {
     k.at(phi, &kx, &ky, &hn);
     const quad t = ((kx - px) * wx + (ky - py) * wy) / w2;
-    if (first || t < t_first) t_first = t;
+    if (first || t < t_first) t_first = t, phi_first = phi;
     first = false;
   }
   if (t_first < 0 || t_first > horizon) return {false, 0, r.min_scale};
-  return {true, t_first, r.min_scale};
+  quad sin_first, cos_first;
+  sinCos(phi_first, &sin_first, &cos_first);
+  return {true, t_first, r.min_scale, fabsq(cos_first * wx + sin_first * wy) / wn};
 }
 
 OracleFirstContact rotation(const Ellipse& a, const Motion& ma, const Ellipse& b,

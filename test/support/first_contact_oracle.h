@@ -23,6 +23,10 @@ struct OracleFirstContact {
   bool contact{false};
   __float128 time{0};       ///< first contact [s]; 0 when none
   __float128 min_scale{0};  ///< smallest contact scale over [0, horizon] (approximate for rotation)
+  /// Translation with contact after 0: |cos| of the angle between the relative path and the outer
+  /// normal of K at the entry point (1 head-on, towards 0 as the path grazes K's boundary); the
+  /// entry time's sensitivity to a shift of the path across itself grows as its inverse. 1 else.
+  __float128 entry_cosine{1};
 };
 
 OracleFirstContact oracleFirstContact(const Ellipse& a, const Motion& motion_a, const Ellipse& b,

@@ -29,8 +29,8 @@ constexpr double kMaxAngularVelocity = 1e9;
 /// conservative advancement used for rotating pairs (see rotating_contact.cpp).
 constexpr double kMaxTurn = 100.0;
 
-/// Accuracy of a translating pair's contact time relative to the pair's extent along and across
-/// its path (see firstContact()): about 1.4e-14.
+/// How far across itself double precision may move a translating pair's path, relative to the
+/// pair's extent along and across it (see firstContact()): about 1.4e-14.
 constexpr double kTranslationExtentTolerance = 64.0 * std::numeric_limits<double>::epsilon();
 
 /// Why (a, motion_a, b, motion_b, horizon) cannot be given to firstContact(), naming the field and
@@ -68,17 +68,25 @@ std::string invalidMotionReason(const Ellipse& ellipse, const Motion& motion, do
 /// {true, 0}.
 ///  - Pure translation (both angular velocities 0): exact, where the relative path enters the
 ///    Minkowski sum K of the two ellipses (one safeguarded root on the sum's normal angle,
-///    certified from both sides). Earlier than the true crossing by at most
-///    kTranslationExtentTolerance * (|p0 . d| + h_K(n)) / |w| [s], later by at most 8 eps times
-///    the same (rounding of the support function, not a margin): w the relative velocity, d its
+///    certified from both sides), up to rounding: the time is that of the path moved across itself
+///    by at most kTranslationExtentTolerance * E, E = |p0 . d| + h_K(n) [m]. So it is earlier than
+///    the true crossing by at most kTranslationExtentTolerance * E / (|w| cos theta) [s], later by
+///    at most 8 eps E / (|w| cos theta) (rounding, not a margin): w the relative velocity, d its
 ///    direction, n = d turned +90 deg, p0 = b.center - a.center, h_K(n) = h_A(n) + h_B(n) the
-///    half-width of K across the path (h_E(n) = |(radius_x (n . e_x), radius_y (n . e_y))|).
-///    Double precision resolves the sum's normal, hence the entry, only to this extent: a needle's
-///    support point moves by ~ulp * axis ratio * radius_x per ulp of the normal. For pairs of
-///    comparable size and distance this is ~1e-14 of the time to cross the pair (within ~1e-12 *
-///    horizon on the tests); a short path across the flat side of a needle of axis ratio 1e14 can
-///    be early by a large share of the horizon, but not by more than this bound (tested against the
-///    quad oracle for axis ratios to 1e18: at most 0.08 of it early, 0.03 late).
+///    half-width of K across the path (h_E(n) = |(radius_x (n . e_x), radius_y (n . e_y))|),
+///    theta the angle between the path and K's outer normal at the entry (0 head-on). The
+///    1 / cos theta is the problem's conditioning, not the method's: moving the path across itself
+///    moves the entry along it tan theta times as far, and double precision places the path
+///    relative to K only to ~eps E (the relative centre, the path's direction and the ellipses'
+///    sin and cos are rounded; one ulp of a centre moves the exact entry of a path at
+///    cos theta = 4.5e-4 by 7.8 times the head-on bound, test_first_contact). Head-on, for pairs of
+///    comparable size and distance, this is ~1e-14 of the time to cross the pair (within ~1e-12 *
+///    horizon on the tests); cos theta is small for a path that nearly grazes K or moves nearly
+///    along a needle's flat side, and a short path across the flat side of a needle of axis ratio
+///    1e14 can be early by a large share of the horizon, but not by more than this bound (tested
+///    against the quad oracle: needles of axis ratios to 1e18 crossed, at most 0.08 of it early,
+///    0.03 late; specks against ellipses to 1e3 m and needles to 1e6 m at 1e-4..0.1 m/s, grazing
+///    and along flat sides down to cos theta = 1e-8, at most 0.04 of it).
 ///  - Rotation: certified, never late (conservative advancement on the exact distance(), each step
 ///    the larger of D / V and the root of a second-order Taylor bound of the separation along the
 ///    witness direction); never `clear` for a pair that touches (outside a 1e-9 band around
