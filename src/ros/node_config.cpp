@@ -7,7 +7,8 @@
 #include <cstdlib>
 #include <map>
 #include <optional>
-#include <set>
+#include <string>
+#include <vector>
 
 #include "ellipse_collision/app/collision_check.h"
 #include "ellipse_collision/core/number_format.h"
@@ -21,8 +22,20 @@ using XmlRpc::XmlRpcValue;
 
 // Links and obstacles alike; radius_z makes an ellipsoid (app::EllipsoidPart), z, roll, pitch
 // optional with it.
-const char* const kEllipseKeys =
-    "name, frame, x, y, angle, radius_x, radius_y, padding, z, roll, pitch, radius_z";
+const std::vector<std::string> kEllipseKeys = {"name",     "frame",    "x",       "y",
+                                               "angle",    "radius_x", "radius_y", "padding",
+                                               "z",        "roll",     "pitch",   "radius_z"};
+
+/// The first key of the dict `value` that is not one of `keys`, or nothing: every dict of the
+/// configuration refuses unknown keys (a typo would otherwise be ignored silently).
+std::optional<std::string> unknownKey(const XmlRpcValue& value,
+                                      const std::vector<std::string>& keys) {
+  XmlRpcValue copy = value;  // begin() and end() of XmlRpcValue are not const
+  for (auto it = copy.begin(); it != copy.end(); ++it) {
+    if (std::find(keys.begin(), keys.end(), it->first) == keys.end()) return it->first;
+  }
+  return std::nullopt;
+}
 
 std::string describeValue(const XmlRpcValue& value) {
   XmlRpcValue copy = value;  // the conversion operators of XmlRpcValue are not const
@@ -116,7 +129,7 @@ std::string readFrame(const XmlRpcValue& value, const std::string& where, const 
 app::EllipseSpec readEllipse(const XmlRpcValue& entry, const std::string& where,
                              double global_padding) {
   if (entry.getType() != XmlRpcValue::TypeStruct) {
-    throw ConfigError(where + ": expected a dict with keys " + std::string(kEllipseKeys) +
+    throw ConfigError(where + ": expected a dict with keys " + app::joinText(kEllipseKeys, ", ") +
                       ", got " + describeValue(entry));
   }
   // Name the entry by its name as soon as there is one, so the message points at the YAML.
@@ -124,14 +137,9 @@ app::EllipseSpec readEllipse(const XmlRpcValue& entry, const std::string& where,
   if (entry.hasMember("name") && entry["name"].getType() == XmlRpcValue::TypeString) {
     label = where + " (name '" + readString(entry["name"], where, "name") + "')";
   }
-  static const std::set<std::string> known = {"name",     "frame",    "x",       "y",
-                                              "angle",    "radius_x", "radius_y", "padding",
-                                              "z",        "roll",     "pitch",   "radius_z"};
-  for (auto it = entry.begin(); it != entry.end(); ++it) {
-    if (!known.count(it->first)) {
-      throw ConfigError(label + ": unknown key '" + it->first + "' (expected one of " +
-                        kEllipseKeys + ")");
-    }
+  if (const auto key = unknownKey(entry, kEllipseKeys)) {
+    throw ConfigError(label + ": unknown key '" + *key + "' (expected one of " +
+                      app::joinText(kEllipseKeys, ", ") + ")");
   }
   const bool ellipsoid = entry.hasMember("z") || entry.hasMember("roll") ||
                          entry.hasMember("pitch") || entry.hasMember("radius_z");
@@ -226,12 +234,10 @@ app::LinkFitResult readLinksFromUrdf(const XmlRpcValue& value, const UrdfLinkFit
     throw ConfigError(where + ": expected a dict {param, links, padding, shape}, got " +
                       describeValue(value));
   }
-  for (auto it = value.begin(); it != value.end(); ++it) {
-    if (it->first != "param" && it->first != "links" && it->first != "padding" &&
-        it->first != "shape") {
-      throw ConfigError(where + ": unknown key '" + it->first +
-                        "' (expected one of param, links, padding, shape)");
-    }
+  static const std::vector<std::string> kUrdfKeys = {"param", "links", "padding", "shape"};
+  if (const auto key = unknownKey(value, kUrdfKeys)) {
+    throw ConfigError(where + ": unknown key '" + *key + "' (expected one of " +
+                      app::joinText(kUrdfKeys, ", ") + ")");
   }
   std::string param = "robot_description";
   if (value.hasMember("param")) {
@@ -275,11 +281,9 @@ app::GateConfig readGate(const XmlRpcValue& value) {
       "enabled", "robot_frame", "horizon",          "time_before_collision", "stop_time",
       "margin",  "resolution",  "cmd_vel_timeout",  "on_incomplete",         "max_linear_speed",
       "max_angular_speed"};
-  for (auto it = value.begin(); it != value.end(); ++it) {
-    if (std::find(kGateKeys.begin(), kGateKeys.end(), it->first) == kGateKeys.end()) {
-      throw ConfigError("parameter ~gate/" + it->first + ": unknown key (expected one of " +
-                        app::joinText(kGateKeys, ", ") + ")");
-    }
+  if (const auto key = unknownKey(value, kGateKeys)) {
+    throw ConfigError("parameter ~gate/" + *key + ": unknown key (expected one of " +
+                      app::joinText(kGateKeys, ", ") + ")");
   }
   app::GateConfig gate;
   if (value.hasMember("enabled")) gate.enabled = readBool(value["enabled"], where, "gate/enabled");
@@ -329,11 +333,9 @@ NodeConfig parseNodeConfig(const XmlRpcValue& params, const UrdfLinkFitter& fit_
       "max_obstacles",    "max_name_length",   "obstacle_store",    "obstacle_store_period",
       "robot_frame",      "prediction_horizon", "marker_refresh_period", "gate"};
   if (root.getType() == XmlRpcValue::TypeStruct) {
-    for (auto it = root.begin(); it != root.end(); ++it) {
-      if (std::find(kKnownKeys.begin(), kKnownKeys.end(), it->first) == kKnownKeys.end()) {
-        throw ConfigError("parameter ~" + it->first + ": unknown key (expected one of " +
-                          app::joinText(kKnownKeys, ", ") + ")");
-      }
+    if (const auto key = unknownKey(root, kKnownKeys)) {
+      throw ConfigError("parameter ~" + *key + ": unknown key (expected one of " +
+                        app::joinText(kKnownKeys, ", ") + ")");
     }
   }
   const auto has = [&root](const char* key) {
@@ -475,17 +477,12 @@ app::ScanObstacleSettings parseScanObstacleSettings(const XmlRpcValue& params) {
     throw ConfigError("private namespace: expected a dict of parameters, got " +
                       describeValue(root));
   }
-  const std::set<std::string> known = {"cluster_distance", "min_cluster_points",
-                                       "min_radius",       "range_noise_sigma",
-                                       "free_space_tolerance", "z_min",
-                                       "z_max",            "name_prefix"};
-  for (auto it = root.begin(); it != root.end(); ++it) {
-    if (!known.count(it->first)) {
-      throw ConfigError("parameter ~" + it->first +
-                        ": unknown key (expected one of cluster_distance, min_cluster_points, "
-                        "min_radius, range_noise_sigma, free_space_tolerance, z_min, z_max, "
-                        "name_prefix)");
-    }
+  static const std::vector<std::string> kScanKeys = {
+      "cluster_distance",     "min_cluster_points", "min_radius", "range_noise_sigma",
+      "free_space_tolerance", "z_min",              "z_max",      "name_prefix"};
+  if (const auto key = unknownKey(root, kScanKeys)) {
+    throw ConfigError("parameter ~" + *key + ": unknown key (expected one of " +
+                      app::joinText(kScanKeys, ", ") + ")");
   }
   app::ScanObstacleSettings settings;
   for (const auto& [key, field] :
