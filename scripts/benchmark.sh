@@ -27,6 +27,8 @@
 set -euo pipefail
 
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+# shellcheck source=script_helpers.sh
+source "${repo}/scripts/script_helpers.sh"
 smoke=false
 for arg in "$@"; do
   case "${arg}" in
@@ -164,7 +166,7 @@ grep -E '^(Benchmark|gateCommands)' "${out}/bench_gate_command.txt" | grep -vE '
 source "${repo}/scripts/tracked_processes.sh"
 
 export PATH="/usr/bin:${PATH}"
-port="$(/usr/bin/python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')"
+port="$(free_port)"
 export ROS_MASTER_URI="http://127.0.0.1:${port}" ROS_IP=127.0.0.1 ROS_LOG_DIR="${out}/ros_log"
 echo
 echo "Running bench_service_roundtrip against ellipse_collision_node (roscore on port ${port})"

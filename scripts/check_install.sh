@@ -15,20 +15,15 @@
 set -euo pipefail
 
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+# shellcheck source=script_helpers.sh
+source "${repo}/scripts/script_helpers.sh"
 workspace="${repo}/build/ws"
 install_space="${workspace}/install"
 out="$(mktemp -d "${TMPDIR:-/tmp}/ellipse_collision_check_install.XXXXXX")"
 export PATH="/usr/bin:${PATH}"
 
+check_prefix=check_install
 failures=0
-check() {  # check NAME STATUS DETAIL
-  if [[ "$2" == 0 ]]; then
-    echo "check_install: ok     $1"
-  else
-    echo "check_install: FAILED $1: $3"
-    failures=$((failures + 1))
-  fi
-}
 
 # In a clean environment: only the install space's setup.bash, as on a machine without the sources.
 in_install_space() {
@@ -67,7 +62,7 @@ assert core.overlap(core.Ellipse(0, 0, 1, 1), core.Ellipse(1.5, 0, 1, 1))"' \
   > "${out}/python.txt" 2>&1 || status=$?
 check "the Python modules import" "${status}" "$(cat "${out}/python.txt")"
 
-port="$(/usr/bin/python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')"
+port="$(free_port)"
 export ROS_MASTER_URI="http://localhost:${port}"
 set -m
 in_install_space "roslaunch -p ${port} ellipse_collision ellipse_collision.launch" \

@@ -10,23 +10,18 @@
 set -euo pipefail
 
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+# shellcheck source=script_helpers.sh
+source "${repo}/scripts/script_helpers.sh"
 duration="${1:-60}"
 export PATH="/usr/bin:${PATH}"
 
 out="$(mktemp -d "${TMPDIR:-/tmp}/ellipse_collision_check_run.XXXXXX")"
 screenshot="${out}/demo.png"
-port="$(/usr/bin/python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')"
+port="$(free_port)"
 export ROS_MASTER_URI="http://localhost:${port}" ROS_LOG_DIR="${out}/ros_log"
 
+check_prefix=check_run
 failures=0
-check() {  # check NAME STATUS DETAIL
-  if [[ "$2" == 0 ]]; then
-    echo "check_run: ok     $1"
-  else
-    echo "check_run: FAILED $1: $3"
-    failures=$((failures + 1))
-  fi
-}
 
 run_pid=""
 # Ctrl-C in a terminal sends SIGINT to the foreground process group; run.sh runs as a job in a

@@ -18,6 +18,8 @@
 set -euo pipefail
 
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+# shellcheck source=script_helpers.sh
+source "${repo}/scripts/script_helpers.sh"
 node="${repo}/build/ws/devel/lib/ellipse_collision/ellipse_collision_node"
 seconds=20
 runs="200@30 2000@30 10000@30 100000@10"
@@ -54,7 +56,7 @@ source "${repo}/scripts/tracked_processes.sh"
 for run in ${runs}; do
   obstacles="${run%@*}"
   rate="${run#*@}"
-  port="$(/usr/bin/python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')"
+  port="$(free_port)"
   export ROS_MASTER_URI="http://127.0.0.1:${port}" ROS_IP=127.0.0.1 ROS_LOG_DIR="${out}/ros_log"
   start_roscore "${port}" "${out}/roscore.txt" || exit 1
   {

@@ -16,6 +16,8 @@
 set -euo pipefail
 
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+# shellcheck source=script_helpers.sh
+source "${repo}/scripts/script_helpers.sh"
 runs=5
 seconds=30
 warmup=5
@@ -47,7 +49,7 @@ config="${repo}/bench/scan_pipeline.yaml"
 common=(/ellipse_collision /ellipse_collision_config_check /scan_obstacles)
 for run in $(seq "${runs}"); do
   for mode in separate nodelets; do
-    port="$(/usr/bin/python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')"
+    port="$(free_port)"
     export ROS_MASTER_URI="http://127.0.0.1:${port}" ROS_IP=127.0.0.1 ROS_LOG_DIR="${out}/ros_log"
     start_roscore "${port}" "${out}/roscore.txt" || exit 1
     if [[ "${mode}" == separate ]]; then

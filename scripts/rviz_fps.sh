@@ -33,6 +33,8 @@
 set -euo pipefail
 
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+# shellcheck source=script_helpers.sh
+source "${repo}/scripts/script_helpers.sh"
 obstacles=10000
 runs=3
 warmup=20
@@ -110,7 +112,7 @@ cpu_ticks() { awk '{print $14 + $15}' "/proc/$1/stat"; }
 
 Xvfb "${display}" -screen 0 1280x1024x24 > "${out}/xvfb.txt" 2>&1 &
 pids+=($!)
-port="$(/usr/bin/python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')"
+port="$(free_port)"
 export ROS_MASTER_URI="http://127.0.0.1:${port}" ROS_IP=127.0.0.1 ROS_LOG_DIR="${out}/ros_log"
 roscore -p "${port}" > "${out}/roscore.txt" 2>&1 &
 pids+=($!)
