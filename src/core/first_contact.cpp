@@ -214,7 +214,13 @@ struct EntrySearch {
         k_lo.x() + (p.sigma - k_lo.y()) * ((k_hi.x() - k_lo.x()) / (k_hi.y() - k_lo.y())) - p.x0;
     // df/ds = f'(psi) dpsi/ds = cos psi (rho_A + rho_B) 2 / L = 2 cos_l L (rho_A + rho_B) / L^3.
     slope = 2.0 * u.cos_l * u.l * (sa.curvature_radius_over_l3 + sb.curvature_radius_over_l3);
-    return upper - lower <= tolerance;
+    // Certified to `tolerance`, unless [lower, upper] holds 0 or `reach`, where the verdict turns
+    // (p0 past K's entry or not, the entry within reach or not): E-relative, the tolerance can
+    // exceed the gap to K by far (fuzzer finding: a needle 1.7e9 m long across the path, p0 3e-8 m
+    // off its flat side, certified to 0.7 m and called in contact; the horizon ended 3.4e-14 m
+    // on). There the search goes on as long as the normal resolves the entry.
+    return upper - lower <= tolerance && !(lower <= 0.0 && upper > 0.0) &&
+           !(lower <= reach && upper > reach);
   }
 
   /// The next v: a Newton step on f, or bisection when it leaves the bracket or fails to halve;
