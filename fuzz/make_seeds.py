@@ -334,6 +334,10 @@ def store_seeds():
                       "-0.14285714285714285 3e-05 0.2333333333333333 1.5707963267948966 "
                       "-0.1111111111111111 0.45\n"
                       "topic 7:cluster 3:map 1 2 0 0.5 0.5 0 0 0 0 0.3 0 0 1e9\nend\n").encode(),
+        "ellipsoid-version-2": ("ellipse_collision obstacle store 2\n" + session + "topic_stamp 0\n"
+                                "topic 7:cluster 3:map 1 2 0 0.5 0.5 0 0 0 0 0.3 0 0 1e9\n"
+                                "end\n").encode(),
+        "version-3": ("ellipse_collision obstacle store 3\n" + session + "end\n").encode(),
         "ellipsoid-tilt-without-depth": (header + "service 1:a 3:map 1 2 0 0.5 0.5 0 0 0 0 0 1 0 0"
                                          "\nend\n").encode(),
         "ten-numbers": (header + "service 1:a 3:map 1 2 0 0.5 0.5 0 0 0 0 0.1\nend\n").encode(),

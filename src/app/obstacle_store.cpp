@@ -17,9 +17,16 @@
 namespace ellipse_collision::app {
 namespace {
 
-constexpr const char* kHeader = "ellipse_collision obstacle store 1";
 /// What every version of the store begins with: a file without it is not the store's to write.
 constexpr const char* kHeaderStem = "ellipse_collision obstacle store ";
+/// Version 1 holds planar records; version 2 may also hold an ellipsoid's 13-number records,
+/// which a version-1 reader refuses. A store is written as version 1 when it holds no
+/// ellipsoid, so that an older node can still read it, and as 2 otherwise, so that an older node
+/// refuses it at its first line (naming the version) rather than at a record. Both read the same.
+constexpr int kPlanarVersion = 1;
+constexpr int kNewestVersion = 2;
+
+std::string headerOf(int version) { return kHeaderStem + std::to_string(version); }
 
 void appendText(std::string& out, const std::string& s) {
   out += std::to_string(s.size());
@@ -121,7 +128,11 @@ std::string serializeObstacles(const StoredObstacles& obstacles) {
   // About 130 bytes per obstacle: one allocation for all of them.
   out.reserve(128 + obstacles.session.size() +
               160 * (obstacles.service.size() + obstacles.topic.size()));
-  out += kHeader;
+  const auto is_ellipsoid = [](const EllipseSpec& spec) { return spec.ellipsoid.has_value(); };
+  const bool holds_ellipsoid =
+      std::any_of(obstacles.service.begin(), obstacles.service.end(), is_ellipsoid) ||
+      std::any_of(obstacles.topic.begin(), obstacles.topic.end(), is_ellipsoid);
+  out += headerOf(holds_ellipsoid ? kNewestVersion : kPlanarVersion);
   out += "\nsession ";
   appendText(out, obstacles.session);
   out += "\ntopic_stamp ";
@@ -154,8 +165,14 @@ std::string parseObstacles(const std::string& input, StoredObstacles& out) {
   if (input.empty()) return "empty file";
   std::string line;
   ++record;
-  if (!restOfLine(line) || line != kHeader) {
-    return at("expected '" + std::string(kHeader) + "'");
+  if (!restOfLine(line) ||
+      (line != headerOf(kPlanarVersion) && line != headerOf(kNewestVersion))) {
+    if (line.rfind(kHeaderStem, 0) == 0) {
+      return at("'" + line + "' is a version this node does not read (it reads versions " +
+                std::to_string(kPlanarVersion) + " to " + std::to_string(kNewestVersion) +
+                "): written by a newer ellipse_collision?");
+    }
+    return at("expected '" + headerOf(kPlanarVersion) + "' or '" + headerOf(kNewestVersion) + "'");
   }
   while (true) {
     ++record;
