@@ -46,33 +46,13 @@ HullPointsResult hullPoints(const CollisionShape& shape) {
   HullPointsResult result;
   result.error = invalidReason(shape);
   if (!result.ok()) return result;
-  const Eigen::Isometry3d& t = shape.link_from_shape;
   std::vector<Vec3>& out = result.points;
-  switch (shape.type) {
-    case CollisionShape::Box: {
-      const Vec3 half = 0.5 * shape.box_size;
-      for (int corner = 0; corner < 8; ++corner) {
-        out.push_back(t * Vec3((corner & 1) ? half.x() : -half.x(),
-                               (corner & 2) ? half.y() : -half.y(),
-                               (corner & 4) ? half.z() : -half.z()));
-      }
-      break;
-    }
-    case CollisionShape::Mesh:
-      out.reserve(shape.mesh_vertices.size());
-      for (const Vec3& v : shape.mesh_vertices) out.push_back(t * v);
-      break;
-    case CollisionShape::Sphere:
-      appendSphere(t.translation(), shape.radius, out);
-      break;
-    case CollisionShape::Cylinder: {
-      const Vec3 u = t.linear().col(0), v = t.linear().col(1), axis = t.linear().col(2);
-      for (const double side : {-0.5, 0.5}) {
-        appendDisc(t.translation() + side * shape.length * axis, u, v, shape.radius, out);
-      }
-      break;
-    }
-  }
+  detail::appendShapePoints(
+      shape, [](const Vec3& p) { return p; },
+      [&out](const Vec3& centre, const Vec3& u, const Vec3& v, double radius) {
+        appendDisc(centre, u, v, radius, out);
+      },
+      [&out](const Vec3& centre, double radius) { appendSphere(centre, radius, out); }, out);
   return result;
 }
 

@@ -118,34 +118,17 @@ OutlineResult outlinePoints(const CollisionShape& shape) {
   OutlineResult result;
   result.error = invalidReason(shape);
   if (!result.ok()) return result;
-  const Eigen::Isometry3d& t = shape.link_from_shape;
   std::vector<Vec2>& out = result.points;
-  switch (shape.type) {
-    case CollisionShape::Box: {
-      const Vec3 half = 0.5 * shape.box_size;
-      for (int corner = 0; corner < 8; ++corner) {
-        const Vec3 local((corner & 1) ? half.x() : -half.x(), (corner & 2) ? half.y() : -half.y(),
-                         (corner & 4) ? half.z() : -half.z());
-        out.push_back((t * local).head<2>());
-      }
-      break;
-    }
-    case CollisionShape::Mesh:
-      out.reserve(shape.mesh_vertices.size());
-      for (const Vec3& v : shape.mesh_vertices) out.push_back((t * v).head<2>());
-      break;
-    case CollisionShape::Sphere:
+  detail::appendShapePoints(
+      shape, [](const Vec3& p) -> Vec2 { return p.head<2>(); },
+      [&out](const Vec3& centre, const Vec3& u, const Vec3& v, double radius) {
+        appendDisc(centre, u, v, radius, out);
+      },
       // The projection of a sphere is the disc of its radius in any orientation.
-      appendDisc(t.translation(), Vec3::UnitX(), Vec3::UnitY(), shape.radius, out);
-      break;
-    case CollisionShape::Cylinder: {
-      const Vec3 u = t.linear().col(0), v = t.linear().col(1), axis = t.linear().col(2);
-      for (const double side : {-0.5, 0.5}) {
-        appendDisc(t.translation() + side * shape.length * axis, u, v, shape.radius, out);
-      }
-      break;
-    }
-  }
+      [&out](const Vec3& centre, double radius) {
+        appendDisc(centre, Vec3::UnitX(), Vec3::UnitY(), radius, out);
+      },
+      out);
   return result;
 }
 
