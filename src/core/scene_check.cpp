@@ -4,7 +4,8 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <optional>
+#include <new>
+#include <type_traits>
 #include <string_view>
 
 #include "ellipse_collision/core/broadphase.h"
@@ -297,9 +298,9 @@ class PairCollector {
     Pending& group = pending_[pair.group];
     if (group.slot == kNoSlot) {
       group.slot = prepared_count_++;
-      prepared_obstacles_[group.slot].emplace(*group.second);
+      new (preparedObstacle(group.slot)) PreparedEllipse(*group.second);
     }
-    return *prepared_obstacles_[group.slot];
+    return *std::launder(preparedObstacle(group.slot));
   }
 
   /// The waiting pairs: culled, the open ones through overlap()'s exact stages, then each
@@ -381,10 +382,15 @@ class PairCollector {
   std::uint8_t overlaps_[kPairBlock];
   /// The open pairs after culling, then the colliding ones.
   std::size_t indices_[kPairBlock + detail::kCullSurvivorSlack];
-  /// The block's obstacles that a pair needed prepared (prepared_count_ of them), in place: a
-  /// vector was one allocation per check, 5 % of a check of 10 links and 100 obstacles.
+  /// The block's obstacles that a pair needed prepared (prepared_count_ of them), built in place
+  /// as needed: neither a vector (an allocation per check) nor an array of std::optional, which
+  /// the constructor cleared (a memset of 8 KB per check).
+  PreparedEllipse* preparedObstacle(std::uint32_t slot) {
+    return reinterpret_cast<PreparedEllipse*>(prepared_storage_) + slot;
+  }
+  static_assert(std::is_trivially_destructible_v<PreparedEllipse>, "left without destruction");
   std::uint32_t prepared_count_{0};
-  std::optional<PreparedEllipse> prepared_obstacles_[kPairBlock];
+  alignas(PreparedEllipse) unsigned char prepared_storage_[kPairBlock * sizeof(PreparedEllipse)];
 };
 
 /// The pairs of obstacle `name` with the movers `found` (checkObstacle()), handed to `pairs` side
