@@ -103,6 +103,8 @@ struct Movers {
 /// culls (pair_culling.h: the circle tests of overlap(), without a branch per pair), then only the
 /// pairs left open go through overlap()'s exact stages: the same answer as overlap() on each pair,
 /// and an obstacle is prepared only when a pair needs its exact stages or its contact scale.
+/// Behind the grid few candidates are far apart (13 % in the benchmark scenes), so this costs
+/// about what testing pair by pair did (doc/benchmarks.md, batch pair tests).
 class PairCollector {
  public:
   PairCollector(detail::BatchKernel kernel, double warning_distance, const Movers& movers)
@@ -226,8 +228,8 @@ class PairCollector {
 
   static constexpr std::size_t kExpectedPairs = 128;
   /// The pairs gathered before they are tested: few enough that the columns, the waiting pairs
-  /// and their prepared obstacles (16 KB) stay in the first-level cache with the movers; with 256,
-  /// the crowded scene's checkMoversAgainst() was 5-30 % slower than testing pair by pair.
+  /// and their prepared obstacles (16 KB) stay in the first-level cache with the movers (256
+  /// measured alike: doc/benchmarks.md, batch pair tests).
   static constexpr std::size_t kPairBlock = 64;
   static_assert(kPairBlock <= detail::kCullBlock, "a block the culling takes in one call");
   static constexpr std::uint32_t kInsertionSortLimit = 16;
