@@ -102,9 +102,11 @@ struct Movers {
 /// The pairs are gathered, up to kPairBlock at a time, into columns and culled as overlapBatch()
 /// culls (pair_culling.h: the circle tests of overlap(), without a branch per pair), then only the
 /// pairs left open go through overlap()'s exact stages: the same answer as overlap() on each pair,
-/// and an obstacle is prepared only when a pair needs its exact stages or its contact scale.
-/// Behind the grid few candidates are far apart (13 % in the benchmark scenes), so this costs
-/// about what testing pair by pair did (doc/benchmarks.md, batch pair tests).
+/// and a streamed obstacle is prepared only when a pair needs its exact stages or its contact
+/// scale (an IndexedObstacles holds its obstacles prepared, with their columns). Behind the grid
+/// few candidates are far apart (13 % in the benchmark scenes), so for streamed obstacles this
+/// costs about what testing pair by pair did; from the index, 8-11 % less at 2,000 and more
+/// obstacles near the links (doc/benchmarks.md, batch pair tests).
 class PairCollector {
  public:
   PairCollector(detail::BatchKernel kernel, double warning_distance, const Movers& movers)
@@ -143,6 +145,14 @@ class PairCollector {
   /// pair needs it.
   void checkWithObstacle(std::size_t i, const EntryRef& obstacle) {
     add(i, kObstacle, obstacle, nullptr);
+  }
+
+  /// Mover `i` against obstacle `k` of `index`: its culling columns and its prepared form read
+  /// from the index, which built them once.
+  void checkWithIndexedObstacle(std::size_t i, const IndexedObstacles& index, std::size_t k) {
+    addWithColumns(i, kObstacle, refOf(index.obstacles()[k]), &index.prepared()[k],
+                   index.centerX()[k], index.centerY()[k], index.boundingRadii()[k],
+                   index.inscribedRadii()[k]);
   }
 
   /// Movers among themselves (query-link always, link-link with self collision): the pairs of
@@ -267,6 +277,17 @@ class PairCollector {
   /// prepared form given for a mover: gathered into the columns, tested with the block.
   void add(std::size_t i, std::uint32_t second_rank, const EntryRef& second,
            const PreparedEllipse* prepared_second) {
+    // What PreparedEllipse computes (max and min of the semi-axes): the obstacle needs no sincos
+    // and no division for the culling to decide it.
+    const Ellipse& ellipse = *second.ellipse;
+    addWithColumns(i, second_rank, second, prepared_second, ellipse.center.x(), ellipse.center.y(),
+                   boundingRadius(ellipse), inscribedRadius(ellipse));
+  }
+
+  /// add() with the second's culling columns given.
+  void addWithColumns(std::size_t i, std::uint32_t second_rank, const EntryRef& second,
+                      const PreparedEllipse* prepared_second, double x, double y, double bounding,
+                      double inscribed) {
     ++pair_tests_;
     if (pending_count_ == kPairBlock) testPending();
     const std::size_t k = pending_count_++;
@@ -275,13 +296,10 @@ class PairCollector {
     first_y_[k] = first.ellipse().center.y();
     first_bounding_[k] = first.boundingRadius();
     first_inscribed_[k] = first.inscribedRadius();
-    // What PreparedEllipse computes (max and min of the semi-axes): the obstacle needs no sincos
-    // and no division for the culling to decide it.
-    const Ellipse& ellipse = *second.ellipse;
-    second_x_[k] = ellipse.center.x();
-    second_y_[k] = ellipse.center.y();
-    second_bounding_[k] = boundingRadius(ellipse);
-    second_inscribed_[k] = inscribedRadius(ellipse);
+    second_x_[k] = x;
+    second_y_[k] = y;
+    second_bounding_[k] = bounding;
+    second_inscribed_[k] = inscribed;
     const bool same_second = k > 0 && pending_[k - 1].second == second.ellipse;
     pending_[k] = {second.name,
                    second.ellipse,
@@ -519,17 +537,18 @@ SceneCheckResult checkMoversAgainstWith(BatchKernel kernel, const std::vector<Na
 
   // The pairs checkScene() finds by streaming each obstacle's box through the movers' grid,
   // found the other way round: each mover's box looked up in the obstacles' grid (the overlap
-  // test of two boxes is symmetric). An obstacle is prepared per pair that needs it: few meet a
-  // mover.
+  // test of two boxes is symmetric). Each pair is culled from the index's columns and takes its
+  // obstacle as the index prepared it: no obstacle is prepared per check (gathering the found
+  // obstacles of one mover and culling them with cullOneAgainstMany() measured alike, but a
+  // mover with one or two obstacles then made a block of its own: doc/benchmarks.md).
   PairCollector pairs(kernel, warning_distance, mover_list);
   const std::vector<NamedEllipse>& indexed = obstacles.obstacles();
   std::vector<std::size_t> found;
   for (std::size_t i = 0; i < mover_list.entries.size(); ++i) {
     obstacles.grid().overlapping(mover_list.boxes[i], &found);
     for (const std::size_t k : found) {
-      const EntryRef obstacle = refOf(indexed[k]);
-      if (!wanted(mover_list.entries[i], obstacle, rules, only_names)) continue;
-      pairs.checkWithObstacle(i, obstacle);
+      if (!wanted(mover_list.entries[i], refOf(indexed[k]), rules, only_names)) continue;
+      pairs.checkWithIndexedObstacle(i, obstacles, k);
     }
   }
   pairs.checkMoverPairs(BoxGrid(std::move(mover_list.boxes)), rules, only_names);

@@ -300,6 +300,73 @@ TEST(SceneBroadphase, NarrowPhaseOfEveryKernelAnswersAsPlainPairTests) {
   EXPECT_GT(max_pair_tests, 1000u);  // many blocks of the narrow phase
 }
 
+TEST(SceneBroadphase, AnIndexReusedOverManyChecksAnswersAsPlainPairTests) {
+  // The node builds IndexedObstacles once while its obstacles stand and checks moving links
+  // against it check after check; the index prepares each obstacle and keeps its culling columns
+  // once, for all of them. Every check, whatever its movers, kernel and rules, must answer the
+  // same bits as plain pair tests: a robot among obstacles placed at tangency, deep inside and
+  // between its circles, the same robot moved a little, and other movers few and many.
+  std::vector<BatchKernel> kernels{BatchKernel::Automatic, BatchKernel::Portable};
+  if (detail::avx2Supported()) kernels.push_back(BatchKernel::Avx2);
+  std::mt19937_64 rng(271828);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<NamedEllipse> obstacles = randomScene(rng, {0, 0, 1500, 0.0, 6.0, 0.5});
+  const std::vector<NamedEllipse> robot = randomScene(rng, {2, 30, 0, 2.0, 0.0, 0.6});
+  std::vector<NamedEllipse> robot_and_near = robot;
+  addNearObstacles(rng, &robot_and_near);
+  for (const NamedEllipse& entry : robot_and_near) {
+    if (entry.role == EllipseRole::Obstacle) obstacles.push_back(entry);
+  }
+  const IndexedObstacles index(obstacles);
+  ASSERT_TRUE(index.error().empty()) << index.error();
+  const SceneShape mover_shapes[] = {{1, 10, 0, 1.0, 0.0, 0.6},
+                                     {0, 50, 0, 3.0, 0.0, 0.8},
+                                     {3, 80, 0, 6.0, 0.0, 0.4},
+                                     {0, 1, 0, 5.0, 0.0, 2.0}};
+  const double warning_distances[] = {0.0, 0.05, 0.4};
+  std::size_t collisions = 0, warnings = 0;
+  for (int check = 0; check < 24; ++check) {
+    std::vector<NamedEllipse> movers;
+    if (check % 3 == 0) {
+      // The robot, moved by up to a centimetre from where the near obstacles were placed.
+      movers = robot;
+      const Eigen::Vector2d shift(0.01 * (unit(rng) - 0.5), 0.01 * (unit(rng) - 0.5));
+      for (NamedEllipse& mover : movers) {
+        if (check > 0) mover.ellipse.center += shift;
+      }
+    } else {
+      movers = randomScene(rng, mover_shapes[check % 4]);
+    }
+    for (NamedEllipse& mover : movers) mover.name = "m" + mover.name;  // apart from obstacles'
+    SceneRules rules;
+    rules.self_collision = check % 4 != 1;
+    rules.warning_distance = warning_distances[check % 3];
+    std::set<std::string> only_names;
+    if (check % 5 == 4) {
+      for (int k = 0; k < 4; ++k) only_names.insert(movers[rng() % movers.size()].name);
+      only_names.insert(obstacles[rng() % obstacles.size()].name);
+    }
+    std::vector<NamedEllipse> scene = movers;
+    scene.insert(scene.end(), obstacles.begin(), obstacles.end());
+    const SceneCheckResult expected = bruteForce(scene, rules, only_names);
+    const SceneCheckResult vouched = checkValidated(scene, rules, only_names);
+    for (const BatchKernel kernel : kernels) {
+      const std::string label = "check " + std::to_string(check) + ", kernel " +
+                                std::to_string(static_cast<int>(kernel));
+      const SceneCheckResult indexed =
+          detail::checkMoversAgainstWith(kernel, movers, index, rules, only_names);
+      expectSame(indexed, expected, label);
+      if (HasFatalFailure()) return;
+      EXPECT_EQ(indexed.pair_tests, vouched.pair_tests) << label;
+    }
+    collisions += expected.collisions.size();
+    warnings += expected.warnings.size();
+  }
+  std::cout << "[          ] " << collisions << " collisions, " << warnings << " warnings\n";
+  EXPECT_GT(collisions, 1000u);
+  EXPECT_GT(warnings, 300u);
+}
+
 TEST(SceneBroadphase, WarningsAtTheWarningDistanceMatchBruteForce) {
   // Obstacles placed so that their gap to a link is the warning distance give or take a few
   // ulps, in every direction: distance() decides, and the boxes must not have decided first.
