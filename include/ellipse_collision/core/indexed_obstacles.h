@@ -16,7 +16,7 @@ namespace ellipse_collision::core {
 /// very boxes checkScene() streams, so the pairs tested and the answer are the same bit for bit.
 /// Each obstacle is also prepared once here (PreparedEllipse) and its culling columns kept side
 /// by side (centre x, y, bounding and inscribed radius), so that a check culls its pairs straight
-/// from the index and prepares no obstacle: 152 bytes per obstacle beyond the entries and the
+/// from the index and prepares no obstacle: 160 bytes per obstacle beyond the entries and the
 /// grid (doc/core_library.md).
 class IndexedObstacles {
  public:
