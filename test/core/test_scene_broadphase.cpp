@@ -317,6 +317,30 @@ TEST(SceneBroadphase, AnIndexReusedOverManyChecksAnswersAsPlainPairTests) {
   for (const NamedEllipse& entry : robot_and_near) {
     if (entry.role == EllipseRole::Obstacle) obstacles.push_back(entry);
   }
+  // At the edges of the two circle tests the index's columns decide: per link an obstacle with
+  // its minor axis facing the link's on one line, a thousandth beyond the inscribed circles'
+  // reach (apart: each ellipse keeps to its side of the line's normal through its minor axis'
+  // tip), and one with its major axis facing the link's, a thousandth within the bounding
+  // circles' reach (they overlap: each holds its major axis' tip).
+  for (const NamedEllipse& link : robot) {
+    const Ellipse& e = link.ellipse;
+    const double direction = e.radius_y <= e.radius_x ? e.angle + 1.5707963267948966 : e.angle;
+    const double other = direction + 1.5707963267948966;
+    const Eigen::Vector2d minor_axis(std::cos(direction), std::sin(direction));
+    const Eigen::Vector2d major_axis(std::cos(other), std::sin(other));
+    const double minor = inscribedRadius(e), major = boundingRadius(e);
+    Ellipse apart{{0, 0}, 0, 0, direction};
+    apart.radius_x = minor * (0.5 + unit(rng));  // along the line: its minor axis
+    apart.radius_y = apart.radius_x * (1.5 + 3.0 * unit(rng));
+    apart.center = e.center + (minor + apart.radius_x) * (1.0 + 1e-3 * (0.1 + unit(rng))) * minor_axis;
+    obstacles.push_back({"apart_" + link.name, EllipseRole::Obstacle, apart});
+    Ellipse touching{{0, 0}, 0, 0, other};
+    touching.radius_x = major * (0.5 + unit(rng));  // along the line: its major axis
+    touching.radius_y = touching.radius_x / (1.5 + 3.0 * unit(rng));
+    touching.center =
+        e.center + (major + touching.radius_x) * (1.0 - 1e-3 * (0.1 + unit(rng))) * major_axis;
+    obstacles.push_back({"touching_" + link.name, EllipseRole::Obstacle, touching});
+  }
   const IndexedObstacles index(obstacles);
   ASSERT_TRUE(index.error().empty()) << index.error();
   const SceneShape mover_shapes[] = {{1, 10, 0, 1.0, 0.0, 0.6},
