@@ -105,8 +105,8 @@ struct Movers {
 /// and a streamed obstacle is prepared only when a pair needs its exact stages or its contact
 /// scale (an IndexedObstacles holds its obstacles prepared, with their columns). Behind the grid
 /// few candidates are far apart (13 % in the benchmark scenes), so for streamed obstacles this
-/// costs about what testing pair by pair did; from the index, 8-11 % less at 2,000 and more
-/// obstacles near the links (doc/benchmarks.md, batch pair tests).
+/// costs about what testing pair by pair did; from the index, 6-7 % fewer instructions and 9 %
+/// less time where many obstacles are near the links (doc/benchmarks.md, batch pair tests).
 class PairCollector {
  public:
   PairCollector(detail::BatchKernel kernel, double warning_distance, const Movers& movers)
