@@ -1,4 +1,5 @@
-// Scene checks: 50 links against N obstacles, plus the links against each other, per cycle.
+// Scene checks: 50 links against N obstacles, plus the links against each other, per cycle:
+// "scene/" the robot in a 50 m x 50 m warehouse, "crowded/" among 2,000 obstacles in 4 m x 4 m.
 // Every variant computes the same colliding pairs (verified before timing); they differ in how
 // candidate pairs are found:
 //   brute_force        overlap() on all 50 N + 1225 pairs
@@ -27,6 +28,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <iterator>
 #include <map>
 #include <numeric>
 #include <set>
@@ -49,6 +51,7 @@ namespace {
 constexpr int kLinks = 50;
 constexpr double kWorldSize =
     50.0;  // [m]: a warehouse; the robot's links lie within 1 m of its centre
+constexpr double kCrowdedWorldSize = 4.0;  // [m]: a yard packed around the robot
 
 struct CycleResult {
   long pair_tests{0};
@@ -225,10 +228,25 @@ int main(int argc, char** argv) {
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
 
+  // "scene": the robot in the warehouse, most candidate pairs far apart; "crowded": the same
+  // robot among obstacles packed around it (a 4 m x 4 m yard), where a check tests thousands of
+  // pairs and most of them are near.
+  struct SceneSize {
+    const char* family;
+    int obstacles;
+    double world_size;  // [m]
+  };
   static std::map<int, RobotScene> scenes;
-  for (const int obstacles : {100, 1000, 10000, 100000}) {
-    scenes[obstacles] = robotScene(kLinks, obstacles, kWorldSize, 7);
-    const RobotScene& scene = scenes[obstacles];
+  const SceneSize sizes[] = {{"scene", 100, kWorldSize},
+                             {"scene", 1000, kWorldSize},
+                             {"scene", 10000, kWorldSize},
+                             {"scene", 100000, kWorldSize},
+                             {"crowded", 2000, kCrowdedWorldSize}};
+  for (int size = 0; size < static_cast<int>(std::size(sizes)); ++size) {
+    const int obstacles = sizes[size].obstacles;
+    const std::string family = std::string(sizes[size].family) + "/";
+    scenes[size] = robotScene(kLinks, obstacles, sizes[size].world_size, 7);
+    const RobotScene& scene = scenes[size];
     const long collisions = bruteForce(scene).collisions;
     for (const auto& [name, method] : kMethods) {
       const CycleResult check = method(scene);
@@ -237,7 +255,7 @@ int main(int argc, char** argv) {
                      check.collisions, obstacles, collisions);
         return 1;
       }
-      const std::string label = std::string("scene/") + name + "/" + std::to_string(obstacles);
+      const std::string label = family + name + "/" + std::to_string(obstacles);
       benchmark::RegisterBenchmark(label.c_str(), [&scene, method = method,
                                                    check](benchmark::State& state) {
         for (auto _ : state) benchmark::DoNotOptimize(method(scene));
@@ -248,7 +266,7 @@ int main(int argc, char** argv) {
     }
 
     static std::map<int, std::vector<NamedEllipse>> named_scenes;
-    const std::vector<NamedEllipse>& named = named_scenes[obstacles] = namedScene(scene);
+    const std::vector<NamedEllipse>& named = named_scenes[size] = namedScene(scene);
     using Check = SceneCheckResult (*)(const std::vector<NamedEllipse>&, const SceneRules&,
                                        const std::set<std::string>&);
     struct Variant {
@@ -269,7 +287,7 @@ int main(int argc, char** argv) {
                      name, check.collisions.size(), obstacles, collisions, check.error.c_str());
         return 1;
       }
-      const std::string label = std::string("scene/") + name + "/" + std::to_string(obstacles);
+      const std::string label = family + name + "/" + std::to_string(obstacles);
       benchmark::RegisterBenchmark(label.c_str(), [&named, rules, check, check_scene](
                                                       benchmark::State& state) {
         for (auto _ : state) benchmark::DoNotOptimize(check_scene(named, rules, {}));
@@ -282,7 +300,7 @@ int main(int argc, char** argv) {
     // The node's scene when its obstacles move: stored by column, links first, vouched for, each
     // role in the name order of the node's registry (a std::map), as its placing order has them.
     static std::map<int, Scene> column_scenes;
-    const Scene& columns = column_scenes[obstacles] = Scene(scene_test::inRegistryOrder(named));
+    const Scene& columns = column_scenes[size] = Scene(scene_test::inRegistryOrder(named));
     const SceneCheckResult vouched = checkValidatedScene(columns, kLinks, SceneRules{});
     if (!vouched.ok() || static_cast<long>(vouched.collisions.size()) != collisions) {
       std::fprintf(stderr, "checkValidatedScene finds %zu collisions with %d obstacles, brute force %ld %s\n",
@@ -290,7 +308,7 @@ int main(int argc, char** argv) {
       return 1;
     }
     benchmark::RegisterBenchmark(
-        ("scene/checkScene_vouched/" + std::to_string(obstacles)).c_str(),
+        (family + "checkScene_vouched/" + std::to_string(obstacles)).c_str(),
         [&columns, vouched](benchmark::State& state) {
           for (auto _ : state) {
             benchmark::DoNotOptimize(checkValidatedScene(columns, kLinks, SceneRules{}));
@@ -306,8 +324,8 @@ int main(int argc, char** argv) {
     std::vector<NamedEllipse> obstacle_entries(named.begin() + kLinks, named.end());
     static std::map<int, IndexedObstacles> indexes;
     static std::map<int, std::vector<NamedEllipse>> mover_sets;
-    const IndexedObstacles& index = indexes[obstacles] = IndexedObstacles(obstacle_entries);
-    const std::vector<NamedEllipse>& link_set = mover_sets[obstacles] = movers;
+    const IndexedObstacles& index = indexes[size] = IndexedObstacles(obstacle_entries);
+    const std::vector<NamedEllipse>& link_set = mover_sets[size] = movers;
     const SceneCheckResult indexed = checkMoversAgainst(link_set, index, SceneRules{});
     if (!indexed.ok() || static_cast<long>(indexed.collisions.size()) != collisions) {
       std::fprintf(stderr, "indexed_obstacles finds %zu collisions with %d obstacles, brute force %ld %s\n",
@@ -315,7 +333,7 @@ int main(int argc, char** argv) {
       return 1;
     }
     benchmark::RegisterBenchmark(
-        ("scene/indexed_obstacles/" + std::to_string(obstacles)).c_str(),
+        (family + "indexed_obstacles/" + std::to_string(obstacles)).c_str(),
         [&link_set, &index, indexed](benchmark::State& state) {
           for (auto _ : state) benchmark::DoNotOptimize(checkMoversAgainst(link_set, index, SceneRules{}));
           state.counters["pair_tests"] = static_cast<double>(indexed.pair_tests);
@@ -323,7 +341,7 @@ int main(int argc, char** argv) {
         })
         ->Unit(benchmark::kMicrosecond);
     benchmark::RegisterBenchmark(
-        ("scene/indexed_build/" + std::to_string(obstacles)).c_str(),
+        (family + "indexed_build/" + std::to_string(obstacles)).c_str(),
         [obstacle_entries](benchmark::State& state) {
           for (auto _ : state) benchmark::DoNotOptimize(IndexedObstacles(obstacle_entries));
         })

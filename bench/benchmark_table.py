@@ -73,18 +73,21 @@ def pair_table(runs):
             print(f"{cap:>4} " + " ".join(cells))
 
 
-def scene_table(runs):
+def scene_table(runs, family="scene"):
     rows = {}  # (method, obstacles) -> entry
     for name, entry in runs.items():
-        _, method, obstacles = name.split("/")
-        rows[(method, int(obstacles))] = entry
+        prefix, method, obstacles = name.split("/")
+        if prefix == family:
+            rows[(method, int(obstacles))] = entry
     sizes = sorted({n for _, n in rows})
     methods = ordered({method for method, _ in rows},
                       ["brute_force", "grid_streamed", "grid_streamed_with_scale", "grid_batch",
                        "grid_tight_boxes", "grid_prepared", "sort_and_sweep", "checkScene",
                        "checkScene_vouched", "checkScene_warn", "indexed_obstacles",
                        "indexed_build"])
-    print("Scene checks: 50 links vs N obstacles, plus link-link pairs, per cycle on one core")
+    where = {"scene": "50 m x 50 m", "crowded": "4 m x 4 m"}.get(family, family)
+    print(f"Scene checks: 50 links vs N obstacles in {where}, plus link-link pairs, per cycle on "
+          "one core")
     # x bare: time over grid_streamed (the bare broadphase + overlap(), same pairs) at the same N;
     # x +scale: over grid_streamed_with_scale (the same plus the colliding pairs' contact scales).
     header = (f"{'obstacles':>9} {'method':<24} {'us/cycle':>10} {'x bare':>7} {'x +scale':>8} "
@@ -145,7 +148,10 @@ def main():
     print()
     contact_scale_table(pair_runs)
     print()
-    scene_table(load_runs(sys.argv[2]))
+    scene_runs = load_runs(sys.argv[2])
+    scene_table(scene_runs)
+    print()
+    scene_table(scene_runs, "crowded")
 
 
 if __name__ == "__main__":

@@ -21,6 +21,7 @@ set(ELLIPSE_COLLISION_CORE_SOURCES
   src/core/number_fields.cpp
   src/core/number_format.cpp
   src/core/overlap.cpp
+  src/core/pair_culling.cpp
   src/core/pair_line_parser.cpp
   src/core/path_check.cpp
   src/core/path_motion.cpp

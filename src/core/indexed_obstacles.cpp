@@ -33,7 +33,26 @@ IndexedObstacles::IndexedObstacles() : grid_(std::vector<BoundingBox>{}) {}
 
 IndexedObstacles::IndexedObstacles(std::vector<NamedEllipse> obstacles)
     : obstacles_(std::move(obstacles)), grid_(obstacleBoxes(obstacles_, &error_)) {
-  if (!error_.empty()) obstacles_.clear();
+  if (!error_.empty()) {
+    obstacles_.clear();
+    return;
+  }
+  // Prepared here, once while the obstacles stand, rather than per pair and check: a sincos,
+  // two divisions and two square roots (150-180 instructions) each time a pair needed the exact
+  // stages or a contact scale (doc/benchmarks.md, batch pair tests).
+  const std::size_t count = obstacles_.size();
+  prepared_.reserve(count);
+  center_x_.reserve(count);
+  center_y_.reserve(count);
+  bounding_.reserve(count);
+  inscribed_.reserve(count);
+  for (const NamedEllipse& obstacle : obstacles_) {
+    const PreparedEllipse& prepared = prepared_.emplace_back(obstacle.ellipse);
+    center_x_.push_back(prepared.ellipse().center.x());
+    center_y_.push_back(prepared.ellipse().center.y());
+    bounding_.push_back(prepared.boundingRadius());
+    inscribed_.push_back(prepared.inscribedRadius());
+  }
 }
 
 }  // namespace ellipse_collision::core

@@ -4,7 +4,8 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <optional>
+#include <new>
+#include <type_traits>
 #include <string_view>
 
 #include "ellipse_collision/core/broadphase.h"
@@ -16,6 +17,8 @@
 #include "ellipse_collision/core/prepared_ellipse.h"
 #include "ellipse_collision/core/unique_names.h"
 #include "contact_scale_quartic.h"
+#include "pair_culling.h"
+#include "scene_check_detail.h"
 #include "scene_entry.h"
 #include "scene_entry_ref.h"
 
@@ -96,10 +99,19 @@ struct Movers {
 /// and the answer is sorted, so it depends only on the set of pairs tested. Every pair has a
 /// mover (query or link) first; the movers are ranked in canonical order once, so that sorting
 /// the pairs compares two names only for pairs of one mover with two obstacles.
+/// The pairs are gathered, up to kPairBlock at a time, into columns and culled as overlapBatch()
+/// culls (pair_culling.h: the circle tests of overlap(), without a branch per pair), then only the
+/// pairs left open go through overlap()'s exact stages: the same answer as overlap() on each pair,
+/// and a streamed obstacle is prepared only when a pair needs its exact stages or its contact
+/// scale (an IndexedObstacles holds its obstacles prepared, with their columns). Behind the grid
+/// few candidates are far apart (13 % in the benchmark scenes), so for streamed obstacles this
+/// costs about what testing pair by pair did; from the index, 6-7 % fewer instructions and 9 %
+/// less time where many obstacles are near the links (doc/benchmarks.md, batch pair tests).
 class PairCollector {
  public:
-  PairCollector(double warning_distance, const Movers& movers)
-      : warning_distance_(warning_distance),
+  PairCollector(detail::BatchKernel kernel, double warning_distance, const Movers& movers)
+      : avx2_(detail::useAvx2(kernel)),
+        warning_distance_(warning_distance),
         movers_(movers.entries),
         prepared_movers_(movers.prepared),
         rank_(movers.entries.size()) {
@@ -129,10 +141,18 @@ class PairCollector {
     scale_problems_.reserve(kExpectedPairs);
   }
 
-  /// Mover `i` (always first in its pair with an obstacle) against `obstacle`.
-  void checkWithObstacle(std::size_t i, const EntryRef& obstacle,
-                         const PreparedEllipse& prepared_obstacle) {
-    check(i, kObstacle, obstacle, prepared_obstacle);
+  /// Mover `i` (always first in its pair with an obstacle) against `obstacle`, prepared if its
+  /// pair needs it.
+  void checkWithObstacle(std::size_t i, const EntryRef& obstacle) {
+    add(i, kObstacle, obstacle, nullptr);
+  }
+
+  /// Mover `i` against obstacle `k` of `index`: its culling columns and its prepared form read
+  /// from the index, which built them once.
+  void checkWithIndexedObstacle(std::size_t i, const IndexedObstacles& index, std::size_t k) {
+    addWithColumns(i, kObstacle, refOf(index.obstacles()[k]), &index.prepared()[k],
+                   index.centerX()[k], index.centerY()[k], index.boundingRadii()[k],
+                   index.inscribedRadii()[k]);
   }
 
   /// Movers among themselves (query-link always, link-link with self collision): the pairs of
@@ -143,11 +163,12 @@ class PairCollector {
       std::size_t i = pair.first, j = pair.second;
       if (rank_[j] < rank_[i]) std::swap(i, j);
       if (!wanted(movers_[i], movers_[j], rules, only_names)) continue;
-      check(i, j, movers_[j], prepared_movers_[j]);
+      add(i, rank_[j], movers_[j], &prepared_movers_[j]);
     }
   }
 
   SceneCheckResult finish() {
+    testPending();
     // All contact scales at once: side by side their iterations overlap in the pipeline, where
     // one pair at a time waits on each division (bench_pair_tests contact_scale/: 56-67 against
     // 78-96 ns per pair); the same bits as contactScale() on each pair.
@@ -216,6 +237,11 @@ class PairCollector {
   }
 
   static constexpr std::size_t kExpectedPairs = 128;
+  /// The pairs gathered before they are tested: few enough that the columns, the waiting pairs
+  /// and their prepared obstacles (16 KB) stay in the first-level cache with the movers (256
+  /// measured alike: doc/benchmarks.md, batch pair tests).
+  static constexpr std::size_t kPairBlock = 64;
+  static_assert(kPairBlock <= detail::kCullBlock, "a block the culling takes in one call");
   static constexpr std::uint32_t kInsertionSortLimit = 16;
   /// The second rank of an obstacle: after every mover.
   static constexpr std::uint32_t kObstacle = std::numeric_limits<std::uint32_t>::max();
@@ -233,30 +259,127 @@ class PairCollector {
     Clearance clearance;
   };
 
-  /// Mover `i` first, then `second`: mover `j`, or an obstacle (j == kObstacle).
-  void check(std::size_t i, std::size_t j, const EntryRef& second,
-             const PreparedEllipse& prepared_second) {
+  /// A pair waiting in the columns: mover `first` first, then `second`, a mover (`prepared`
+  /// given) or an obstacle (prepared, if needed, once for the pairs of one obstacle that wait
+  /// side by side: its first such pair, `group`, holds where).
+  struct Pending {
+    const std::string* second_name;
+    const Ellipse* second;
+    const PreparedEllipse* prepared;  ///< the second's, or null: see preparedSecond()
+    std::uint32_t first;
+    std::uint32_t second_rank;  ///< kObstacle for an obstacle
+    std::uint32_t group;        ///< the first waiting pair with the same second
+    std::uint32_t slot;         ///< for a group's first pair: its place in prepared_obstacles_
+  };
+  static constexpr std::uint32_t kNoSlot = std::numeric_limits<std::uint32_t>::max();
+
+  /// Mover `i` first, then `second` of rank `second_rank` (kObstacle for an obstacle), its
+  /// prepared form given for a mover: gathered into the columns, tested with the block.
+  void add(std::size_t i, std::uint32_t second_rank, const EntryRef& second,
+           const PreparedEllipse* prepared_second) {
+    // What PreparedEllipse computes (max and min of the semi-axes): the obstacle needs no sincos
+    // and no division for the culling to decide it.
+    const Ellipse& ellipse = *second.ellipse;
+    addWithColumns(i, second_rank, second, prepared_second, ellipse.center.x(), ellipse.center.y(),
+                   boundingRadius(ellipse), inscribedRadius(ellipse));
+  }
+
+  /// add() with the second's culling columns given.
+  void addWithColumns(std::size_t i, std::uint32_t second_rank, const EntryRef& second,
+                      const PreparedEllipse* prepared_second, double x, double y, double bounding,
+                      double inscribed) {
     ++pair_tests_;
-    const EntryRef& first = movers_[i];
-    const PreparedEllipse& prepared_first = prepared_movers_[i];
-    const std::uint32_t second_rank = j == kObstacle ? kObstacle : rank_[j];
-    if (overlap(prepared_first, prepared_second)) {
-      // The contact scale is solved in finish(), with every other pair's (see there).
-      collisions_.push_back({first.name, second.name, rank_[i], second_rank});
-      scale_problems_.push_back(
-          detail::scaleProblem(detail::canonicalRelativeShape(prepared_first, prepared_second)));
-      return;
+    if (pending_count_ == kPairBlock) testPending();
+    const std::size_t k = pending_count_++;
+    const PreparedEllipse& first = prepared_movers_[i];
+    first_x_[k] = first.ellipse().center.x();
+    first_y_[k] = first.ellipse().center.y();
+    first_bounding_[k] = first.boundingRadius();
+    first_inscribed_[k] = first.inscribedRadius();
+    second_x_[k] = x;
+    second_y_[k] = y;
+    second_bounding_[k] = bounding;
+    second_inscribed_[k] = inscribed;
+    const bool same_second = k > 0 && pending_[k - 1].second == second.ellipse;
+    pending_[k] = {second.name,
+                   second.ellipse,
+                   prepared_second,
+                   static_cast<std::uint32_t>(i),
+                   second_rank,
+                   same_second ? pending_[k - 1].group : static_cast<std::uint32_t>(k),
+                   kNoSlot};
+  }
+
+  /// The second ellipse of waiting pair `k`, prepared: a mover's as given, an obstacle's prepared
+  /// on first need for its group.
+  const PreparedEllipse& preparedSecond(std::size_t k) {
+    const Pending& pair = pending_[k];
+    if (pair.prepared != nullptr) return *pair.prepared;
+    Pending& group = pending_[pair.group];
+    if (group.slot == kNoSlot) {
+      group.slot = prepared_count_++;
+      new (preparedObstacle(group.slot)) PreparedEllipse(*group.second);
     }
-    if (warning_distance_ <= 0.0 ||
-        distanceLowerBound(*first.ellipse, *second.ellipse) >= warning_distance_) {
-      return;
+    return *std::launder(preparedObstacle(group.slot));
+  }
+
+  /// The waiting pairs: culled, the open ones through overlap()'s exact stages, then each
+  /// collision and (with a warning distance) each near miss recorded in the order of testing.
+  void testPending() {
+    const std::size_t count = pending_count_;
+    if (count == 0) return;
+    const detail::CullColumns first{first_x_, first_y_, first_bounding_, first_inscribed_};
+    const detail::CullColumns second{second_x_, second_y_, second_bounding_, second_inscribed_};
+    const std::size_t open = detail::cullPairs(avx2_, first, second, 0, count, overlaps_, indices_);
+    for (std::size_t s = 0; s < open; ++s) {
+      const std::size_t k = indices_[s];
+      overlaps_[k] = static_cast<std::uint8_t>(
+          detail::overlapOfNearPair(prepared_movers_[pending_[k].first], preparedSecond(k)));
     }
-    const Clearance clearance = distance(*first.ellipse, *second.ellipse);
+    if (warning_distance_ <= 0.0) {
+      // The colliding pairs listed without a branch per pair, as the culling lists the open ones.
+      std::size_t colliding = 0;
+      for (std::size_t k = 0; k < count; ++k) {
+        indices_[colliding] = k;
+        colliding += overlaps_[k];
+      }
+      for (std::size_t c = 0; c < colliding; ++c) recordCollision(indices_[c]);
+    } else {
+      for (std::size_t k = 0; k < count; ++k) {
+        if (overlaps_[k] != 0) {
+          recordCollision(k);
+        } else {
+          recordIfNear(k);
+        }
+      }
+    }
+    pending_count_ = 0;
+    prepared_count_ = 0;
+  }
+
+  void recordCollision(std::size_t k) {
+    const Pending& pair = pending_[k];
+    collisions_.push_back({movers_[pair.first].name, pair.second_name, rank_[pair.first],
+                           pair.second_rank});
+    // The contact scale is solved in finish(), with every other pair's (see there).
+    scale_problems_.push_back(detail::scaleProblem(
+        detail::canonicalRelativeShape(prepared_movers_[pair.first], preparedSecond(k))));
+  }
+
+  /// A pair that does not overlap: a warning if it is closer than the warning distance.
+  void recordIfNear(std::size_t k) {
+    const Pending& pair = pending_[k];
+    const Ellipse& first = *movers_[pair.first].ellipse;
+    if (distanceLowerBound(first, *pair.second) >= warning_distance_) return;
+    const Clearance clearance = distance(first, *pair.second);
     if (clearance.separated && clearance.distance < warning_distance_) {
-      warnings_.push_back({{first.name, second.name, rank_[i], second_rank}, clearance});
+      warnings_.push_back(
+          {{movers_[pair.first].name, pair.second_name, rank_[pair.first], pair.second_rank},
+           clearance});
     }
   }
 
+  bool avx2_;
   double warning_distance_;
   const std::vector<EntryRef>& movers_;
   const std::vector<PreparedEllipse>& prepared_movers_;
@@ -265,10 +388,34 @@ class PairCollector {
   std::vector<Pair> collisions_;
   std::vector<detail::ScaleProblem> scale_problems_;  ///< one per collision, same order
   std::vector<Warning> warnings_;
+  // The waiting pairs (pending_count_ of them) and their columns for the culling.
+  std::size_t pending_count_{0};
+  Pending pending_[kPairBlock];
+  double first_x_[kPairBlock];
+  double first_y_[kPairBlock];
+  double first_bounding_[kPairBlock];
+  double first_inscribed_[kPairBlock];
+  double second_x_[kPairBlock];
+  double second_y_[kPairBlock];
+  double second_bounding_[kPairBlock];
+  double second_inscribed_[kPairBlock];
+  std::uint8_t overlaps_[kPairBlock];
+  /// The open pairs after culling, then the colliding ones.
+  std::size_t indices_[kPairBlock + detail::kCullSurvivorSlack];
+  /// The block's obstacles that a pair needed prepared (prepared_count_ of them), built in place
+  /// as needed: neither a vector (an allocation per check) nor an array of std::optional, which
+  /// the constructor cleared (a memset of 8 KB per check).
+  PreparedEllipse* preparedObstacle(std::uint32_t slot) {
+    return reinterpret_cast<PreparedEllipse*>(prepared_storage_) + slot;
+  }
+  static_assert(std::is_trivially_destructible_v<PreparedEllipse>, "left without destruction");
+  std::uint32_t prepared_count_{0};
+  alignas(PreparedEllipse) unsigned char prepared_storage_[kPairBlock * sizeof(PreparedEllipse)];
 };
 
-/// The pairs of obstacle `name` with the movers `found` (checkObstacle()); out of line, so that
-/// the loop streaming the obstacles keeps its few registers for the many that meet no mover.
+/// The pairs of obstacle `name` with the movers `found` (checkObstacle()), handed to `pairs` side
+/// by side; out of line, so that the loop streaming the obstacles keeps its few registers for the
+/// many that meet no mover.
 __attribute__((noinline)) bool checkFoundPairs(const std::string& name, const Ellipse& ellipse,
                                                const std::vector<std::size_t>& found,
                                                const Movers& movers, const SceneRules& rules,
@@ -276,11 +423,10 @@ __attribute__((noinline)) bool checkFoundPairs(const std::string& name, const El
                                                PairCollector& pairs) {
   if (!isValid(ellipse)) return false;
   const EntryRef obstacle{&name, EllipseRole::Obstacle, &ellipse};
-  std::optional<PreparedEllipse> prepared_obstacle;
   for (const std::size_t i : found) {
-    if (!wanted(movers.entries[i], obstacle, rules, only_names)) continue;
-    if (!prepared_obstacle) prepared_obstacle.emplace(ellipse);
-    pairs.checkWithObstacle(i, obstacle, *prepared_obstacle);
+    if (wanted(movers.entries[i], obstacle, rules, only_names)) {
+      pairs.checkWithObstacle(i, obstacle);
+    }
   }
   return true;
 }
@@ -288,9 +434,10 @@ __attribute__((noinline)) bool checkFoundPairs(const std::string& name, const El
 /// Every wanted pair of `ellipse`, an obstacle, with the movers whose candidate boxes its
 /// bounding-circle box meets (a mover always comes first in a pair with an obstacle). The box
 /// needs no trigonometry and no division, so it is safe to make for any values; the obstacle is
-/// prepared only if a pair needs it. Returns false, testing no pair, for an invalid obstacle that
-/// meets a mover's box (a scene vouched for as validated that broke its promise). `name_of()` gives its name,
-/// asked only when it meets a mover; `found` is scratch space.
+/// prepared only if a pair needs it (PairCollector). Returns false, testing no pair, for an
+/// invalid obstacle that meets a mover's box (a scene vouched for as validated that broke its
+/// promise). `name_of()` gives its name, asked only when it meets a mover; `found` is scratch
+/// space.
 template <typename NameOf>
 inline bool checkObstacle(const NameOf& name_of, const Ellipse& ellipse, const BoxGrid& grid,
                           const Movers& movers, const SceneRules& rules,
@@ -308,9 +455,10 @@ inline bool checkObstacle(const NameOf& name_of, const Ellipse& ellipse, const B
 /// streamed in the same pass (at 100,000 obstacles reading the scene costs as much as the pair
 /// tests). A query or link after an obstacle sends it back to the start in two passes: movers
 /// first, then obstacles.
-SceneCheckResult checkSceneWith(const std::vector<NamedEllipse>& ellipses,
-                                const SceneRules& rules, const std::set<std::string>& only_names,
-                                bool movers_first) {
+SceneCheckResult checkNamedScene(detail::BatchKernel kernel,
+                                 const std::vector<NamedEllipse>& ellipses,
+                                 const SceneRules& rules, const std::set<std::string>& only_names,
+                                 bool movers_first) {
   SceneCheckResult result;
   result.error = warningDistanceProblem(rules);
   if (!result.error.empty()) return result;
@@ -332,7 +480,7 @@ SceneCheckResult checkSceneWith(const std::vector<NamedEllipse>& ellipses,
     if (entry.role == EllipseRole::Obstacle) continue;
     movers.add(refOf(entry), warning_distance);
   }
-  PairCollector pairs(warning_distance, movers);
+  PairCollector pairs(kernel, warning_distance, movers);
   const BoxGrid grid(std::move(movers.boxes));
 
   std::vector<std::size_t> found;
@@ -344,7 +492,7 @@ SceneCheckResult checkSceneWith(const std::vector<NamedEllipse>& ellipses,
         names.prefetch(ellipses[k + detail::NameSet::kPrefetchAhead].name);
       }
       if (obstacle.role != EllipseRole::Obstacle) {
-        return checkSceneWith(ellipses, rules, only_names, /*movers_first=*/false);
+        return checkNamedScene(kernel, ellipses, rules, only_names, /*movers_first=*/false);
       }
       result.error = entryProblem(k, refOf(obstacle), names);
       if (!result.error.empty()) return SceneCheckResult{{}, {}, result.error, 0};
@@ -360,9 +508,11 @@ SceneCheckResult checkSceneWith(const std::vector<NamedEllipse>& ellipses,
 
 }  // namespace
 
-SceneCheckResult checkMoversAgainst(const std::vector<NamedEllipse>& movers,
-                                    const IndexedObstacles& obstacles, const SceneRules& rules,
-                                    const std::set<std::string>& only_names) {
+namespace detail {
+
+SceneCheckResult checkMoversAgainstWith(BatchKernel kernel, const std::vector<NamedEllipse>& movers,
+                                        const IndexedObstacles& obstacles, const SceneRules& rules,
+                                        const std::set<std::string>& only_names) {
   SceneCheckResult result;
   result.error = warningDistanceProblem(rules);
   if (result.error.empty() && !obstacles.error().empty()) {
@@ -387,30 +537,33 @@ SceneCheckResult checkMoversAgainst(const std::vector<NamedEllipse>& movers,
 
   // The pairs checkScene() finds by streaming each obstacle's box through the movers' grid,
   // found the other way round: each mover's box looked up in the obstacles' grid (the overlap
-  // test of two boxes is symmetric). An obstacle is prepared per pair: few meet a mover.
-  PairCollector pairs(warning_distance, mover_list);
+  // test of two boxes is symmetric). Each pair is culled from the index's columns and takes its
+  // obstacle as the index prepared it: no obstacle is prepared per check (gathering the found
+  // obstacles of one mover and culling them with cullOneAgainstMany() measured alike, but a
+  // mover with one or two obstacles then made a block of its own: doc/benchmarks.md).
+  PairCollector pairs(kernel, warning_distance, mover_list);
   const std::vector<NamedEllipse>& indexed = obstacles.obstacles();
   std::vector<std::size_t> found;
   for (std::size_t i = 0; i < mover_list.entries.size(); ++i) {
     obstacles.grid().overlapping(mover_list.boxes[i], &found);
     for (const std::size_t k : found) {
-      const EntryRef obstacle = refOf(indexed[k]);
-      if (!wanted(mover_list.entries[i], obstacle, rules, only_names)) continue;
-      pairs.checkWithObstacle(i, obstacle, PreparedEllipse(*obstacle.ellipse));
+      if (!wanted(mover_list.entries[i], refOf(indexed[k]), rules, only_names)) continue;
+      pairs.checkWithIndexedObstacle(i, obstacles, k);
     }
   }
   pairs.checkMoverPairs(BoxGrid(std::move(mover_list.boxes)), rules, only_names);
   return pairs.finish();
 }
 
-SceneCheckResult checkScene(const std::vector<NamedEllipse>& ellipses, const SceneRules& rules,
-                            const std::set<std::string>& only_names) {
-  return checkSceneWith(ellipses, rules, only_names, /*movers_first=*/true);
+SceneCheckResult checkSceneWith(BatchKernel kernel, const std::vector<NamedEllipse>& ellipses,
+                                const SceneRules& rules,
+                                const std::set<std::string>& only_names) {
+  return checkNamedScene(kernel, ellipses, rules, only_names, /*movers_first=*/true);
 }
 
-SceneCheckResult checkValidatedScene(const Scene& scene, std::size_t first_obstacle,
-                                   const SceneRules& rules,
-                                   const std::set<std::string>& only_names) {
+SceneCheckResult checkValidatedSceneWith(BatchKernel kernel, const Scene& scene,
+                                         std::size_t first_obstacle, const SceneRules& rules,
+                                         const std::set<std::string>& only_names) {
   SceneCheckResult result;
   result.error = warningDistanceProblem(rules);
   if (result.error.empty() && first_obstacle > scene.size()) {
@@ -438,7 +591,7 @@ SceneCheckResult checkValidatedScene(const Scene& scene, std::size_t first_obsta
     }
     movers.add(refOf(scene, i), warning_distance);
   }
-  PairCollector pairs(warning_distance, movers);
+  PairCollector pairs(kernel, warning_distance, movers);
   const BoxGrid grid(std::move(movers.boxes));
   std::vector<std::size_t> found;
   found.reserve(movers.entries.size());  // the most an obstacle can meet: never grown
@@ -455,6 +608,27 @@ SceneCheckResult checkValidatedScene(const Scene& scene, std::size_t first_obsta
   }
   pairs.checkMoverPairs(grid, rules, only_names);
   return pairs.finish();
+}
+
+}  // namespace detail
+
+SceneCheckResult checkMoversAgainst(const std::vector<NamedEllipse>& movers,
+                                    const IndexedObstacles& obstacles, const SceneRules& rules,
+                                    const std::set<std::string>& only_names) {
+  return detail::checkMoversAgainstWith(detail::BatchKernel::Automatic, movers, obstacles, rules,
+                                        only_names);
+}
+
+SceneCheckResult checkScene(const std::vector<NamedEllipse>& ellipses, const SceneRules& rules,
+                            const std::set<std::string>& only_names) {
+  return detail::checkSceneWith(detail::BatchKernel::Automatic, ellipses, rules, only_names);
+}
+
+SceneCheckResult checkValidatedScene(const Scene& scene, std::size_t first_obstacle,
+                                     const SceneRules& rules,
+                                     const std::set<std::string>& only_names) {
+  return detail::checkValidatedSceneWith(detail::BatchKernel::Automatic, scene, first_obstacle,
+                                         rules, only_names);
 }
 
 }  // namespace ellipse_collision::core

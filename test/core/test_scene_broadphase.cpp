@@ -1,7 +1,8 @@
 // checkScene() finds its candidate pairs with a broadphase; these tests hold it to a brute force
 // written here that calls overlap(), contactScale() and distance() on every pair the rules want:
 // the same pairs in the same order with the same bits, warnings included, on random scenes from
-// sparse to dense, with queries, name filters and allowed pairs, and far fewer exact pair tests.
+// sparse to dense, with queries, name filters and allowed pairs, and far fewer exact pair tests;
+// with either culling kernel of the narrow phase (scene_check_detail.h).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -18,6 +19,7 @@
 #include "ellipse_collision/core/overlap.h"
 #include "ellipse_collision/core/scene_check.h"
 #include "brute_force_scene.h"
+#include "scene_check_detail.h"
 #include "scene_test_helpers.h"
 
 namespace ellipse_collision::core {
@@ -28,28 +30,34 @@ SceneCheckResult bruteForce(const std::vector<NamedEllipse>& scene, const SceneR
   return test::bruteForceScene(scene, rules, only_names);
 }
 
+using detail::BatchKernel;
+
 /// The scene checked the node's way when its obstacles stay put: obstacles gridded once
-/// (IndexedObstacles), the queries and links looked up in that grid.
+/// (IndexedObstacles), the queries and links looked up in that grid; the narrow phase culling
+/// with `kernel`.
 SceneCheckResult checkIndexed(const std::vector<NamedEllipse>& scene, const SceneRules& rules,
-                              const std::set<std::string>& only_names) {
+                              const std::set<std::string>& only_names,
+                              BatchKernel kernel = BatchKernel::Automatic) {
   std::vector<NamedEllipse> movers, obstacles;
   for (const NamedEllipse& entry : scene) {
     (entry.role == EllipseRole::Obstacle ? obstacles : movers).push_back(entry);
   }
-  return checkMoversAgainst(movers, IndexedObstacles(std::move(obstacles)), rules, only_names);
+  return detail::checkMoversAgainstWith(kernel, movers, IndexedObstacles(std::move(obstacles)),
+                                        rules, only_names);
 }
 
 /// The scene checked the node's way when its obstacles move: movers first, vouched for.
 SceneCheckResult checkValidated(const std::vector<NamedEllipse>& scene, const SceneRules& rules,
-                              const std::set<std::string>& only_names) {
+                                const std::set<std::string>& only_names,
+                                BatchKernel kernel = BatchKernel::Automatic) {
   std::vector<NamedEllipse> ordered = scene;
   const auto first_obstacle =
       std::stable_partition(ordered.begin(), ordered.end(), [](const NamedEllipse& entry) {
         return entry.role != EllipseRole::Obstacle;
       });
-  return checkValidatedScene(Scene(ordered),
-                           static_cast<std::size_t>(first_obstacle - ordered.begin()), rules,
-                           only_names);
+  return detail::checkValidatedSceneWith(
+      kernel, Scene(ordered), static_cast<std::size_t>(first_obstacle - ordered.begin()), rules,
+      only_names);
 }
 
 bool sameBits(double x, double y) { return std::memcmp(&x, &y, sizeof(double)) == 0; }
@@ -194,6 +202,193 @@ TEST(SceneBroadphase, MatchesBruteForceOnRandomScenesWithRulesAndWarnings) {
   EXPECT_GT(warnings, 400u);
   EXPECT_GT(allowed_hits, 100u);
   EXPECT_EQ(filtered, 16u);
+}
+
+/// Obstacles that put the narrow phase's culling to the test, one per mover of `scene`: within
+/// a few ulps of tangency (the offset of a random placement divided by its contact scale, so that
+/// the bounding circles meet and only the exact stages decide), deep inside (the inscribed
+/// circles meet: decided by the culling alone) or between the two circles' reach.
+void addNearObstacles(std::mt19937_64& rng, std::vector<NamedEllipse>* scene) {
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const std::size_t count = scene->size();
+  for (std::size_t i = 0; i < count; ++i) {
+    const NamedEllipse mover = (*scene)[i];
+    if (mover.role == EllipseRole::Obstacle) continue;
+    Ellipse obstacle = mover.ellipse;
+    obstacle.radius_x = boundingRadius(mover.ellipse) * (0.2 + 2.0 * unit(rng));
+    obstacle.radius_y = obstacle.radius_x / (1.0 + 9.0 * unit(rng));
+    obstacle.angle = 6.283185307179586 * unit(rng) - 3.141592653589793;
+    const double direction = 6.283185307179586 * unit(rng);
+    const Eigen::Vector2d unit_offset(std::cos(direction), std::sin(direction));
+    const double reach = boundingRadius(mover.ellipse) + boundingRadius(obstacle);
+    const double inner = inscribedRadius(mover.ellipse) + inscribedRadius(obstacle);
+    const int kind = static_cast<int>(i % 3);
+    if (kind == 0) {
+      obstacle.center = mover.ellipse.center + reach * unit_offset;
+      const double scale = contactScale(mover.ellipse, obstacle);
+      const double nudge = 1.0 + (unit(rng) - 0.5) * 1e-14;
+      obstacle.center = mover.ellipse.center + (reach / scale * nudge) * unit_offset;
+    } else if (kind == 1) {
+      obstacle.center = mover.ellipse.center + (0.9 * inner * unit(rng)) * unit_offset;
+    } else {
+      obstacle.center = mover.ellipse.center + (inner + (reach - inner) * unit(rng)) * unit_offset;
+    }
+    scene->push_back({"near_" + mover.name, EllipseRole::Obstacle, obstacle});
+  }
+}
+
+TEST(SceneBroadphase, NarrowPhaseOfEveryKernelAnswersAsPlainPairTests) {
+  // The narrow phase gathers the candidate pairs a block at a time, culls them without a
+  // branch per pair and sends only the open ones to the exact stages: every kernel, every entry
+  // point, the same bits as overlap(), contactScale() and distance() on each pair. Scenes from
+  // one mover to hundreds (one obstacle meeting 300 links: its pairs span several blocks), sparse
+  // and crowded (thousands of pairs per check), with pairs near tangency and deep inside.
+  std::vector<BatchKernel> kernels{BatchKernel::Automatic, BatchKernel::Portable};
+  if (detail::avx2Supported()) kernels.push_back(BatchKernel::Avx2);
+  std::mt19937_64 rng(31415);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const SceneShape shapes[] = {{0, 1, 30, 1.0, 2.0, 1.0},      {1, 7, 3, 1.0, 1.0, 0.5},
+                               {2, 40, 1500, 2.0, 3.0, 0.4},   {0, 70, 600, 3.0, 3.0, 0.8},
+                               {3, 20, 4000, 1.0, 25.0, 0.6},  {0, 300, 0, 2.0, 2.0, 0.3}};
+  const double warning_distances[] = {0.0, 0.05, 0.6};
+  std::size_t collisions = 0, warnings = 0, max_pair_tests = 0;
+  for (int trial = 0; trial < 18; ++trial) {
+    const SceneShape& shape = shapes[trial % 6];
+    std::vector<NamedEllipse> scene = randomScene(rng, shape);
+    addNearObstacles(rng, &scene);
+    if (shape.obstacles == 0) {
+      // One obstacle over every link.
+      scene.push_back({"slab", EllipseRole::Obstacle, {Eigen::Vector2d(0, 0), 3.5, 3.0, 0.2}});
+    }
+    SceneRules rules;
+    rules.self_collision = trial % 4 != 3;
+    rules.warning_distance = warning_distances[(trial / 6) % 3];
+    std::set<std::string> only_names;
+    if (trial % 5 == 2) {
+      std::uniform_int_distribution<std::size_t> pick(0, scene.size() - 1);
+      for (int k = 0; k < 6; ++k) only_names.insert(scene[pick(rng)].name);
+      only_names.insert("near_e0");
+    }
+    const SceneCheckResult expected = bruteForce(scene, rules, only_names);
+    std::size_t pair_tests = 0;
+    for (const BatchKernel kernel : kernels) {
+      const std::string label = "trial " + std::to_string(trial) + ", kernel " +
+                                std::to_string(static_cast<int>(kernel));
+      const SceneCheckResult named = detail::checkSceneWith(kernel, scene, rules, only_names);
+      expectSame(named, expected, "checkScene, " + label);
+      if (HasFatalFailure()) return;
+      const SceneCheckResult vouched = checkValidated(scene, rules, only_names, kernel);
+      expectSame(vouched, expected, "checkValidatedScene, " + label);
+      if (HasFatalFailure()) return;
+      const SceneCheckResult indexed = checkIndexed(scene, rules, only_names, kernel);
+      expectSame(indexed, expected, "checkMoversAgainst, " + label);
+      if (HasFatalFailure()) return;
+      // Each pair the broadphase leaves is tested once, whichever the kernel or entry point.
+      if (pair_tests == 0) pair_tests = named.pair_tests;
+      EXPECT_EQ(named.pair_tests, pair_tests) << label;
+      EXPECT_EQ(vouched.pair_tests, pair_tests) << label;
+      EXPECT_EQ(indexed.pair_tests, pair_tests) << label;
+    }
+    collisions += expected.collisions.size();
+    warnings += expected.warnings.size();
+    max_pair_tests = std::max(max_pair_tests, pair_tests);
+  }
+  std::cout << "[          ] " << collisions << " collisions, " << warnings
+            << " warnings, at most " << max_pair_tests << " pair tests in one check\n";
+  EXPECT_GT(collisions, 2000u);
+  EXPECT_GT(warnings, 500u);
+  EXPECT_GT(max_pair_tests, 1000u);  // many blocks of the narrow phase
+}
+
+TEST(SceneBroadphase, AnIndexReusedOverManyChecksAnswersAsPlainPairTests) {
+  // The node builds IndexedObstacles once while its obstacles stand and checks moving links
+  // against it check after check; the index prepares each obstacle and keeps its culling columns
+  // once, for all of them. Every check, whatever its movers, kernel and rules, must answer the
+  // same bits as plain pair tests: a robot among obstacles placed at tangency, deep inside and
+  // between its circles, the same robot moved a little, and other movers few and many.
+  std::vector<BatchKernel> kernels{BatchKernel::Automatic, BatchKernel::Portable};
+  if (detail::avx2Supported()) kernels.push_back(BatchKernel::Avx2);
+  std::mt19937_64 rng(271828);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<NamedEllipse> obstacles = randomScene(rng, {0, 0, 1500, 0.0, 6.0, 0.5});
+  const std::vector<NamedEllipse> robot = randomScene(rng, {2, 30, 0, 2.0, 0.0, 0.6});
+  std::vector<NamedEllipse> robot_and_near = robot;
+  addNearObstacles(rng, &robot_and_near);
+  for (const NamedEllipse& entry : robot_and_near) {
+    if (entry.role == EllipseRole::Obstacle) obstacles.push_back(entry);
+  }
+  // At the edges of the two circle tests the index's columns decide: per link an obstacle with
+  // its minor axis facing the link's on one line, a thousandth beyond the inscribed circles'
+  // reach (apart: each ellipse keeps to its side of the line's normal through its minor axis'
+  // tip), and one with its major axis facing the link's, a thousandth within the bounding
+  // circles' reach (they overlap: each holds its major axis' tip).
+  for (const NamedEllipse& link : robot) {
+    const Ellipse& e = link.ellipse;
+    const double direction = e.radius_y <= e.radius_x ? e.angle + 1.5707963267948966 : e.angle;
+    const double other = direction + 1.5707963267948966;
+    const Eigen::Vector2d minor_axis(std::cos(direction), std::sin(direction));
+    const Eigen::Vector2d major_axis(std::cos(other), std::sin(other));
+    const double minor = inscribedRadius(e), major = boundingRadius(e);
+    Ellipse apart{{0, 0}, 0, 0, direction};
+    apart.radius_x = minor * (0.5 + unit(rng));  // along the line: its minor axis
+    apart.radius_y = apart.radius_x * (1.5 + 3.0 * unit(rng));
+    apart.center = e.center + (minor + apart.radius_x) * (1.0 + 1e-3 * (0.1 + unit(rng))) * minor_axis;
+    obstacles.push_back({"apart_" + link.name, EllipseRole::Obstacle, apart});
+    Ellipse touching{{0, 0}, 0, 0, other};
+    touching.radius_x = major * (0.5 + unit(rng));  // along the line: its major axis
+    touching.radius_y = touching.radius_x / (1.5 + 3.0 * unit(rng));
+    touching.center =
+        e.center + (major + touching.radius_x) * (1.0 - 1e-3 * (0.1 + unit(rng))) * major_axis;
+    obstacles.push_back({"touching_" + link.name, EllipseRole::Obstacle, touching});
+  }
+  const IndexedObstacles index(obstacles);
+  ASSERT_TRUE(index.error().empty()) << index.error();
+  const SceneShape mover_shapes[] = {{1, 10, 0, 1.0, 0.0, 0.6},
+                                     {0, 50, 0, 3.0, 0.0, 0.8},
+                                     {3, 80, 0, 6.0, 0.0, 0.4},
+                                     {0, 1, 0, 5.0, 0.0, 2.0}};
+  const double warning_distances[] = {0.0, 0.05, 0.4};
+  std::size_t collisions = 0, warnings = 0;
+  for (int check = 0; check < 24; ++check) {
+    std::vector<NamedEllipse> movers;
+    if (check % 3 == 0) {
+      // The robot, moved by up to a centimetre from where the near obstacles were placed.
+      movers = robot;
+      const Eigen::Vector2d shift(0.01 * (unit(rng) - 0.5), 0.01 * (unit(rng) - 0.5));
+      for (NamedEllipse& mover : movers) {
+        if (check > 0) mover.ellipse.center += shift;
+      }
+    } else {
+      movers = randomScene(rng, mover_shapes[check % 4]);
+    }
+    for (NamedEllipse& mover : movers) mover.name = "m" + mover.name;  // apart from obstacles'
+    SceneRules rules;
+    rules.self_collision = check % 4 != 1;
+    rules.warning_distance = warning_distances[check % 3];
+    std::set<std::string> only_names;
+    if (check % 5 == 4) {
+      for (int k = 0; k < 4; ++k) only_names.insert(movers[rng() % movers.size()].name);
+      only_names.insert(obstacles[rng() % obstacles.size()].name);
+    }
+    std::vector<NamedEllipse> scene = movers;
+    scene.insert(scene.end(), obstacles.begin(), obstacles.end());
+    const SceneCheckResult expected = bruteForce(scene, rules, only_names);
+    const SceneCheckResult vouched = checkValidated(scene, rules, only_names);
+    for (const BatchKernel kernel : kernels) {
+      const std::string label = "check " + std::to_string(check) + ", kernel " +
+                                std::to_string(static_cast<int>(kernel));
+      const SceneCheckResult indexed =
+          detail::checkMoversAgainstWith(kernel, movers, index, rules, only_names);
+      expectSame(indexed, expected, label);
+      if (HasFatalFailure()) return;
+      EXPECT_EQ(indexed.pair_tests, vouched.pair_tests) << label;
+    }
+    collisions += expected.collisions.size();
+    warnings += expected.warnings.size();
+  }
+  std::cout << "[          ] " << collisions << " collisions, " << warnings << " warnings\n";
+  EXPECT_GT(collisions, 1000u);
+  EXPECT_GT(warnings, 300u);
 }
 
 TEST(SceneBroadphase, WarningsAtTheWarningDistanceMatchBruteForce) {
