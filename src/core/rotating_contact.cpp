@@ -168,10 +168,16 @@ struct Separation {
 /// in long double too: the double one is the best only for the double poses, and a needle turned
 /// by the ~1e-16 rad between them moves its support point far along its flat side (by 6e5 m for
 /// one 5.8e7 m long and 5.8e-7 m thin, which cost the separation 3e-11 m of a 4e-17 m gap).
+/// For the same reason the separation is evaluated in the frame of the ellipse with the larger
+/// sweep curvature (`frame`): there u . its axes is exact, u's angle to its flat side is held
+/// to a relative precision, and the rounding of its angle moves only the other centre (by |p|
+/// times it) instead of its support point (by R^2 / r times it: for an axis ratio of 1e14 that
+/// alone outgrew a gap of 1e-12 of the radii).
 /// Out of line: the steps need it only near a tangency.
 [[gnu::noinline]] SeparationAlong preciseSeparation(const RotatingPair& p, double t,
                                                     const Eigen::Vector2d& centre_velocity,
-                                                    const Eigen::Vector2d& direction) {
+                                                    const Eigen::Vector2d& direction,
+                                                    bool frame_of_a) {
   using Long = long double;
   const Long time = t;
   const auto exact = [](double high, double low) { return Long(high) + low; };
@@ -184,15 +190,30 @@ struct Separation {
     px -= arc.x;
     py -= arc.y;
   }
+  // The frame's angle, and the other ellipse's angle in it.
+  const Long angle_a = exact(p.a.angle, p.low.a_angle), angle_b = p.b.angle;
+  const Long frame = frame_of_a ? angle_a + Long(p.wa) * time : angle_b + Long(p.wb) * time;
+  const Long other = frame_of_a ? (angle_b - angle_a) + (Long(p.wb) - p.wa) * time
+                                : (angle_a - angle_b) + (Long(p.wa) - p.wb) * time;
+  const Long fc = std::cos(frame), fs = std::sin(frame);
+  const auto toFrame = [&](Long x, Long y, Long* fx, Long* fy) {
+    *fx = fc * x + fs * y;
+    *fy = fc * y - fs * x;
+  };
+  const Long p_norm = std::hypot(px, py);
+  toFrame(Long(px), Long(py), &px, &py);
+  Long vx, vy;
+  toFrame(centre_velocity.x(), centre_velocity.y(), &vx, &vy);
   struct Axes {
     Long c, s, rx2, ry2;
   };
-  const auto axes = [&](const Ellipse& e, double angle_low, double omega) {
-    const Long angle = exact(e.angle, angle_low) + Long(omega) * time;
-    return Axes{std::cos(angle), std::sin(angle), Long(e.radius_x) * e.radius_x,
-                Long(e.radius_y) * e.radius_y};
+  const auto axes = [](const Ellipse& e, Long c, Long s) {
+    return Axes{c, s, Long(e.radius_x) * e.radius_x, Long(e.radius_y) * e.radius_y};
   };
-  const Axes ea = axes(p.a, p.low.a_angle, p.wa), eb = axes(p.b, 0.0, p.wb);
+  const Axes own = axes(frame_of_a ? p.a : p.b, 1, 0);
+  const Axes turned = axes(frame_of_a ? p.b : p.a, std::cos(other), std::sin(other));
+  const Axes& ea = frame_of_a ? own : turned;
+  const Axes& eb = frame_of_a ? turned : own;
   struct Support {
     Long h, dh, rho, reach, spread;
   };
@@ -204,8 +225,12 @@ struct Separation {
     return Support{h, (e.rx2 - e.ry2) * ax * ay / h, e.rx2 * e.ry2 / (h * h * h),
                    (e.rx2 * fx + e.ry2 * fy) / h, std::fabs(e.rx2 - e.ry2) * (fx + fy) / h};
   };
+  // The rounding of the frame's angle moves the other centre by |p| times it, and that of the
+  // other's angle its support point by its reach times it.
+  const Long frame_error = 1 + std::fabs(frame), other_error = 1 + std::fabs(other);
   const Long norm = std::hypot(Long(direction.x()), Long(direction.y()));
-  Long ux = direction.x() / norm, uy = direction.y() / norm;
+  Long ux, uy;
+  toFrame(direction.x() / norm, direction.y() / norm, &ux, &uy);
   constexpr Long kEps = std::numeric_limits<Long>::epsilon();
   SeparationAlong best{};
   Long best_lower = -std::numeric_limits<Long>::infinity();
@@ -213,11 +238,12 @@ struct Separation {
     const Support sa = support(ea, ux, uy), sb = support(eb, ux, uy);
     const Long along = ux * px + uy * py, across = ux * py - uy * px;
     const Long value = along - sa.h - sb.h;
-    const Long lower = value - 16 * kEps * (std::fabs(along) + sa.reach + sb.reach);
+    const Support& so = frame_of_a ? sb : sa;
+    const Long lower = value - 16 * kEps * (std::fabs(along) + p_norm * frame_error + sa.reach +
+                                            sb.reach + so.reach * other_error);
     if (lower > best_lower) {
       best_lower = lower;
-      const double centre_rate =
-          static_cast<double>(ux * centre_velocity.x() + uy * centre_velocity.y());
+      const double centre_rate = static_cast<double>(ux * vx + uy * vy);
       // Shrunk by 2^-52 against the rounding to double.
       best = {static_cast<double>(lower) * (1.0 - 0x1p-52),
               static_cast<double>(centre_rate - p.wa * sa.dh - p.wb * sb.dh),
@@ -456,7 +482,8 @@ FirstContact advance(const RotatingPair& p, const StepBounds& k, double horizon,
       if (blurred) {
         Eigen::Vector2d centre_velocity = p.w;
         if constexpr (kArc) centre_velocity -= p.arcVelocityAt(t);
-        const SeparationAlong precise = preciseSeparation(p, t, centre_velocity, last_direction);
+        const SeparationAlong precise =
+            preciseSeparation(p, t, centre_velocity, last_direction, k.sweep_a >= k.sweep_b);
         if (precise.value > 0.0) {
           step = std::max(step,
                           kStepShrink * quadraticStep(precise.value, precise.rate, k.curvature));
