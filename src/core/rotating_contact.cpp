@@ -49,7 +49,7 @@ namespace ellipse_collision::core::detail {
 // free of the axis ratio. f' there is u . p' + omega_u u_perp . p + (omega_u - wa) dh_a/dtheta_a
 // + (omega_u - wb) dh_b/dtheta_b, less its rounding. The step is the largest of the three roots
 // (first order, fixed u, turning u); each is certified. The witness direction of a needle is
-// taken with care too (advance()). Fuzzer pairs, a disc by a needle 1.4e14 or 2e12 long to thin
+// taken with care too (below). Fuzzer pairs, a disc by a needle 1.4e14 or 2e12 long to thin
 // and turning slowly, reached the 20,000-step cap at first-order steps (the direction between
 // the witness points was off along the needle, and M of the fixed direction 1.3e8 and 4.7e14
 // m/s^2); they now take 2 to 8 steps.
@@ -57,12 +57,15 @@ namespace ellipse_collision::core::detail {
 // convergence, never past the contact); through a grazing pass of gap g the steps stay about
 // sqrt(2 g / M) (a few steps for the whole pass instead of sqrt(size / g)); into an exact
 // tangency they shrink geometrically. f is evaluated in double with a rounding allowance of
-// 16 eps of its terms; a pass within ~1e-14 of the radii of touching leaves nothing of f above
+// 16 eps of its terms (each h counted as its support point's distance from the centre,
+// SupportRates); a pass within ~1e-14 of the radii of touching leaves nothing of f above
 // that allowance, and where the steps would then stop short of a contact f is evaluated again in
 // long double (64-bit significand), where the allowance is 2048 times smaller: a contact grazed
 // 1e-12 deep is crossed at ~1e-7 m/s, and the double allowance alone stopped the steps up to
 // ~6e-8 of the horizon before it. Below gaps of 1e-10 of the radii the witness points' rounding
-// can turn, or reverse, the direction between them: a's rim normal at its point is taken.
+// can turn, or reverse, the direction between them: a's rim normal at its point is taken; where
+// the direction gives a separation below half the distance, the rim normals at both witness
+// points are tried too (a needle's witness point can lie far along its flat side).
 // Stopping: once a step is below the resolution (kRotationResolution * horizon), overlap() one
 // resolution ahead; if the pair overlaps there, the first contact lies within the resolution
 // after t and t is the answer (never late, at most one resolution early). If not and the distance
@@ -275,8 +278,8 @@ struct Separation {
 constexpr double kWitnessGap = 1e-10;
 
 /// The unit outward normal of a's rim at its point `x`, or false when there is none. At a witness
-/// point it is the direction from a to b along which they are farthest apart (the maximiser of
-/// the support-function dual, whose support point the witness point is).
+/// point it is the direction from a to the other ellipse along which they are farthest apart (the
+/// maximiser of the support-function dual, whose support point the witness point is).
 bool rimNormal(const Ellipse& a, const Eigen::Vector2d& x, Eigen::Vector2d* normal) {
   const SinCos trig = sinCos(a.angle);
   const Eigen::Vector2d d = x - a.center;
@@ -428,6 +431,16 @@ FirstContact advance(const RotatingPair& p, const StepBounds& k, double horizon,
     e.angle = p.b.angle + p.wb * t;
     return e;
   };
+  const auto centreVelocity = [&p](double t) {
+    Eigen::Vector2d v = p.w;
+    if constexpr (kArc) v -= p.arcVelocityAt(t);
+    return v;
+  };
+  // The larger second-order step of a separation, along u fixed and along u turning.
+  const auto secondOrderStep = [&](const SeparationAlong& s, double value, double centres) {
+    return kStepShrink * std::max(quadraticStep(value, s.rate, k.curvature),
+                                  turningStep(k, s, value, p.wa, p.wb, centres));
+  };
   const double resolution = kRotationResolution * horizon;
   double t = 0.0;
   for (int i = 0; i < kMaxRotationSteps; ++i) {
@@ -448,8 +461,7 @@ FirstContact advance(const RotatingPair& p, const StepBounds& k, double horizon,
     Eigen::Vector2d last_direction;
     if (k.second_order && !decided &&
         (gap > k.tiny_gap ? (direction /= gap, true) : rimNormal(a, c.point_a, &direction))) {
-      Eigen::Vector2d centre_velocity = p.w;
-      if constexpr (kArc) centre_velocity -= p.arcVelocityAt(t);
+      const Eigen::Vector2d centre_velocity = centreVelocity(t);
       Separation s = bestSeparation(a, b, centre_velocity, p.wa, p.wb, direction);
       // A needle's witness point can lie anywhere along its flat side within rounding of the
       // distance, and the direction between the points then says nothing (one 1.4e14 long was
@@ -469,26 +481,17 @@ FirstContact advance(const RotatingPair& p, const StepBounds& k, double horizon,
       const double value = s.best.value - s.best.rounding;
       blurred = !(value > kPreciseBelow * s.best.rounding);
       last_direction = s.last_direction;
-      if (value > 0.0) {
-        step = std::max(step, kStepShrink * quadraticStep(value, s.best.rate, k.curvature));
-        step = std::max(step, kStepShrink * turningStep(k, s.best, value, p.wa, p.wb,
-                                                        b.center.norm()));
-      }
+      if (value > 0.0) step = std::max(step, secondOrderStep(s.best, value, b.center.norm()));
     }
     if (step < resolution) {
       const double probe = std::min(t + resolution, horizon);
       if (overlap(p.aAt(probe), bAt(probe))) return {true, t};
       // The long double separation, where the double one's rounding holds the steps back.
       if (blurred) {
-        Eigen::Vector2d centre_velocity = p.w;
-        if constexpr (kArc) centre_velocity -= p.arcVelocityAt(t);
         const SeparationAlong precise =
-            preciseSeparation(p, t, centre_velocity, last_direction, k.sweep_a >= k.sweep_b);
+            preciseSeparation(p, t, centreVelocity(t), last_direction, k.sweep_a >= k.sweep_b);
         if (precise.value > 0.0) {
-          step = std::max(step,
-                          kStepShrink * quadraticStep(precise.value, precise.rate, k.curvature));
-          step = std::max(step, kStepShrink * turningStep(k, precise, precise.value, p.wa, p.wb,
-                                                          b.center.norm()));
+          step = std::max(step, secondOrderStep(precise, precise.value, b.center.norm()));
         }
       }
       if (step < resolution && c.distance <= k.graze) return {true, t};  // a tangency in the band
