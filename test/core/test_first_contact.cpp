@@ -702,6 +702,58 @@ ExtentError errorInExtentBounds(const Case& c) {
   return {head_on, head_on * cosine, cosine};
 }
 
+TEST(FirstContact, TurningNeedleFuzzerFindingsBelowTheCap) {
+  // fuzz_first_contact findings (test/fuzz_corpus/fuzz_first_contact/needle-turning-*, decoded by
+  // fuzz/fuzz_input.h to these values): a speck by a needle of axis ratio 1.4e14 turning at
+  // 1.9e-7 rad/s, sliding along its flat side at 435 m/s or 0.6 m/s, and a speck 7.6 m off a
+  // needle of ratio 2.1e12 turning at 4.7e-4 rad/s. The distance's witness point on the needle
+  // lay up to 3e5 m off along the flat side, so only first-order steps were left: all three
+  // reached the step cap and claimed a contact at it. Against the oracle: clear, in a few steps.
+  const double speck = 1.8512501431811046e-07;
+  const Ellipse dot{{speck, speck}, speck, speck, speck};
+  const Case cases[] = {
+      {dot,
+       {{-2.2250738585072034e-308, -2.1720633791577626e-07},
+        26054029.546875,
+        1.8512566801742736e-07,
+        1.854160526226778e-07},
+       {{-435.22354125976562, 1.1848000916359069e-05}, speck},
+       {{0.60122548975050449, 1.8512501875900256e-07}, 1.8512461641417843e-07},
+       1.0000000000000002},
+      {dot,
+       {{-2.2250738585072034e-308, -2.1720633791577626e-07},
+        26054029.546875,
+        speck,
+        -1.7347234759768071e-18},
+       {{1.8512500954415145e-07, speck}, 0.048529411753406748},
+       {{0.60122548975050449, 1.8512501875900256e-07}, 1.8512461641417843e-07},
+       1.0000000000000002},
+      {dot,
+       {{7.6491960398852825, -1.243623259927773e-14},
+        0.00047487745086982613,
+        1000000000,
+        0.00047487745086982613},
+       {{0.00048160579081013566, 0.00047487745086982613}, 0.00049073228638008004},
+       {{0.00047487745086982613, 0.00047481784622505074}, 0.00047487745086982613},
+       1.5707963267948966},
+  };
+  for (const Case& c : cases) {
+    ASSERT_EQ(invalidMotionReason(c.a, c.ma, c.b, c.mb, c.horizon), "") << describe(c);
+    detail::RotationWork work;
+    const FirstContact direct = detail::rotatingContact(
+        detail::rotatingPair(c.a, c.ma.velocity, Eigen::Vector2d::Zero(), c.ma.angular_velocity,
+                             c.b, c.mb),
+        c.horizon, &work);
+    EXPECT_FALSE(work.capped) << describe(c);
+    EXPECT_LE(work.distance_calls, 20) << describe(c);
+    const OracleFirstContact oracle = oracleFirstContact(c.a, c.ma, c.b, c.mb, c.horizon, 4000);
+    EXPECT_FALSE(oracle.contact) << describe(c);
+    EXPECT_GT(oracle.min_scale, 1 + 1e-6) << describe(c);
+    EXPECT_FALSE(direct.contact) << describe(c);
+    EXPECT_FALSE(firstContact(c.a, c.ma, c.b, c.mb, c.horizon).contact) << describe(c);
+  }
+}
+
 TEST(FirstContact, NeedleFuzzerFindingsWithinTheExtentBound) {
   // fuzz_first_contact findings (test/fuzz_corpus/fuzz_first_contact/needle-flat-side-*, decoded
   // by fuzz/fuzz_input.h to these values): a speck meets the flat side of a needle of axis ratio
