@@ -407,9 +407,12 @@ double turningStep(const StepBounds& k, const SeparationAlong& s, double value, 
     }
     // d/dt [u(t) . p(t) - h_a - h_b]: each h changes with the angle between u and its ellipse.
     const double terms[] = {s.centre_rate, omega * s.across, da * s.dh_a, db * s.dh_b};
-    // The derived difference carries the rounding of omega too.
-    double rate = 0.0, size = std::fabs(da) * s.dh_a_spread + std::fabs(db) * s.dh_b_spread +
-                              std::fabs(omega) * std::fabs(from_a ? s.dh_b : s.dh_a);
+    // The derived difference carries the rounding of omega too; u . p' and u_perp . p are
+    // rounded to eps of |p'| <= V_p and |p|.
+    double rate = 0.0,
+           size = std::fabs(da) * s.dh_a_spread + std::fabs(db) * s.dh_b_spread +
+                  std::fabs(omega) * (std::fabs(from_a ? s.dh_b : s.dh_a) + centre_distance) +
+                  k.centre_speed;
     for (const double term : terms) rate += term, size += std::fabs(term);
     rate -= 16.0 * std::numeric_limits<double>::epsilon() * size;
     const double root = quadraticStep(value, rate, curvature);
@@ -436,10 +439,17 @@ FirstContact advance(const RotatingPair& p, const StepBounds& k, double horizon,
     if constexpr (kArc) v -= p.arcVelocityAt(t);
     return v;
   };
+  // |p(t)| from b's double pose at t, raised by what rounding the pose left out.
+  const auto centreDistance = [&p](const Ellipse& b, double t) {
+    double moved = p.b.center.norm() + p.w.norm() * t;
+    if constexpr (kArc) moved += p.a_arc_velocity.norm() * t;
+    return b.center.norm() + 4.0 * std::numeric_limits<double>::epsilon() * moved;
+  };
   // The larger second-order step of a separation, along u fixed and along u turning.
-  const auto secondOrderStep = [&](const SeparationAlong& s, double value, double centres) {
+  const auto secondOrderStep = [&](const SeparationAlong& s, double value, const Ellipse& b,
+                                   double t) {
     return kStepShrink * std::max(quadraticStep(value, s.rate, k.curvature),
-                                  turningStep(k, s, value, p.wa, p.wb, centres));
+                                  turningStep(k, s, value, p.wa, p.wb, centreDistance(b, t)));
   };
   const double resolution = kRotationResolution * horizon;
   double t = 0.0;
@@ -481,7 +491,7 @@ FirstContact advance(const RotatingPair& p, const StepBounds& k, double horizon,
       const double value = s.best.value - s.best.rounding;
       blurred = !(value > kPreciseBelow * s.best.rounding);
       last_direction = s.last_direction;
-      if (value > 0.0) step = std::max(step, secondOrderStep(s.best, value, b.center.norm()));
+      if (value > 0.0) step = std::max(step, secondOrderStep(s.best, value, b, t));
     }
     if (step < resolution) {
       const double probe = std::min(t + resolution, horizon);
@@ -491,7 +501,7 @@ FirstContact advance(const RotatingPair& p, const StepBounds& k, double horizon,
         const SeparationAlong precise =
             preciseSeparation(p, t, centreVelocity(t), last_direction, k.sweep_a >= k.sweep_b);
         if (precise.value > 0.0) {
-          step = std::max(step, secondOrderStep(precise, precise.value, b.center.norm()));
+          step = std::max(step, secondOrderStep(precise, precise.value, b, t));
         }
       }
       if (step < resolution && c.distance <= k.graze) return {true, t};  // a tangency in the band
