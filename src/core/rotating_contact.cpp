@@ -34,16 +34,40 @@ namespace ellipse_collision::core::detail {
 // f' = u . p'(t) - omega_a dh_a/dtheta_a - omega_b dh_b/dtheta_b at t (theta the ellipse's
 // angle). No contact happens before the positive root of that quadratic. The step is the larger
 // of that root and D / V; both are certified.
+// A direction that turns: M above holds the worst curvature of a support function over all
+// directions, R^2 / r at a needle's flat side, which the witness direction of a turning needle
+// sees only because u stays fixed while the needle turns under it. Along u(s) = R(omega_u s) u
+// (s from t) the separation f(u(s), s) is still a lower bound of D, h_e changes only with the
+// angle between u and e, at omega_e - omega_u, and d2/ds2 (u . p) = -omega_u^2 u . p +
+// 2 omega_u u_perp . p' + u . p'', so
+//   f'' >= -M_u,  M_u = omega_u^2 P + 2 |omega_u| V_p + |wa| |v_arc|
+//                     + (omega_u - wa)^2 (R_a^2 / r_a - r_a) + (omega_u - wb)^2 (R_b^2 / r_b - r_b),
+// P a bound of |p| over the step: |p(t)| + V_p s, held below |p(t)| + L by steps no longer than
+// L / V_p (L = |p(t)| 8^k, the first k whose root is below L / V_p). omega_u minimises M_u (a
+// convex quadratic plus 2 V_p |omega_u|): for a turning needle against a disc it is about the
+// needle's own rate, and M_u drops from omega^2 R^2 / r to about omega^2 |p| + 2 |omega| V_p,
+// free of the axis ratio. f' there is u . p' + omega_u u_perp . p + (omega_u - wa) dh_a/dtheta_a
+// + (omega_u - wb) dh_b/dtheta_b, less its rounding. The step is the largest of the three roots
+// (first order, fixed u, turning u); each is certified. The witness direction of a needle is
+// taken with care too (below). Fuzzer pairs, a disc by a needle 1.4e14 or 2e12 long to thin
+// and turning slowly, reached the 20,000-step cap at first-order steps (the direction between
+// the witness points was off along the needle, and M of the fixed direction 1.3e8 and 4.7e14
+// m/s^2); they now take 2 to 8 steps. No one direction turns with two needles that turn at
+// different rates: M_u keeps about (wa - wb)^2 times the smaller R^2 / r, and their steps still
+// grow with the axis ratio (about as its power 0.37; the cap from ratios of about 1e7).
 // Approaching a transversal contact the root is a Newton step from the left (quadratic
 // convergence, never past the contact); through a grazing pass of gap g the steps stay about
 // sqrt(2 g / M) (a few steps for the whole pass instead of sqrt(size / g)); into an exact
 // tangency they shrink geometrically. f is evaluated in double with a rounding allowance of
-// 16 eps of its terms; a pass within ~1e-14 of the radii of touching leaves nothing of f above
+// 16 eps of its terms (each h counted as its support point's distance from the centre,
+// SupportRates); a pass within ~1e-14 of the radii of touching leaves nothing of f above
 // that allowance, and where the steps would then stop short of a contact f is evaluated again in
 // long double (64-bit significand), where the allowance is 2048 times smaller: a contact grazed
 // 1e-12 deep is crossed at ~1e-7 m/s, and the double allowance alone stopped the steps up to
 // ~6e-8 of the horizon before it. Below gaps of 1e-10 of the radii the witness points' rounding
-// can turn, or reverse, the direction between them: a's rim normal at its point is taken.
+// can turn, or reverse, the direction between them: a's rim normal at its point is taken; where
+// the direction gives a separation below half the distance, the rim normals at both witness
+// points are tried too (a needle's witness point can lie far along its flat side).
 // Stopping: once a step is below the resolution (kRotationResolution * horizon), overlap() one
 // resolution ahead; if the pair overlaps there, the first contact lies within the resolution
 // after t and t is the answer (never late, at most one resolution early). If not and the distance
@@ -59,10 +83,20 @@ namespace {
 struct SeparationAlong {
   double value, rate, rounding;
   double slope, curvature;  // d/dphi, d2/dphi2 of the value, phi the angle of u
+  // The parts of the rate: u . p', (u turned +90 deg) . p, and dh/dtheta of a and b (theta the
+  // ellipse's angle), for the rate in a turning direction (turningStep()), with what bounds the
+  // rounding of each dh/dtheta in units of eps (SupportRates).
+  double centre_rate, across, dh_a, dh_b;
+  double dh_a_spread, dh_b_spread;
 };
 
+// h and its derivatives along u. The rounding of the axis components ax, ay (~eps absolute)
+// moves h by up to eps (r_x^2 |ax| + r_y^2 |ay|) / h, the distance of the support point from the
+// centre along the axes (`reach`, >= h): for a needle seen near its flat side that is far more
+// than eps h. It moves dh/dtheta by up to eps |r_x^2 - r_y^2| (|ax| + |ay|) / h (`dh_spread`).
 struct SupportRates {
   double h, dh_dangle, curvature_radius;
+  double reach, dh_spread;
 };
 
 SupportRates supportRates(const Ellipse& e, const SinCos& trig, const Eigen::Vector2d& u) {
@@ -70,8 +104,12 @@ SupportRates supportRates(const Ellipse& e, const SinCos& trig, const Eigen::Vec
   const double ay = u.y() * trig.cos - u.x() * trig.sin;  // u . y axis
   const double rx2 = e.radius_x * e.radius_x, ry2 = e.radius_y * e.radius_y;
   const double h = std::sqrt(rx2 * ax * ax + ry2 * ay * ay);
+  const double fx = std::fabs(ax), fy = std::fabs(ay);
+  // One division for the four quotients: each step evaluates this up to 16 times.
+  const double inverse = 1.0 / h;
   // d(ax)/dangle = ay, d(ay)/dangle = -ax; turning u by phi is turning the shape by -phi.
-  return {h, (rx2 - ry2) * ax * ay / h, rx2 * ry2 / (h * h * h)};
+  return {h, (rx2 - ry2) * ax * ay * inverse, rx2 * ry2 * (inverse * inverse * inverse),
+          (rx2 * fx + ry2 * fy) * inverse, std::fabs(rx2 - ry2) * (fx + fy) * inverse};
 }
 
 SeparationAlong separationAlong(const SinCosPair& trig, const Ellipse& a, const Ellipse& b,
@@ -85,9 +123,18 @@ SeparationAlong separationAlong(const SinCosPair& trig, const Ellipse& a, const 
   constexpr double kEps = std::numeric_limits<double>::epsilon();
   const double value = along - sa.h - sb.h;
   // h'' = rho - h for a support function of the normal angle, so f'' = -f - rho_a - rho_b.
-  return {value, u.dot(centre_velocity) - wa * sa.dh_dangle - wb * sb.dh_dangle,
-          16.0 * kEps * (std::fabs(along) + sa.h + sb.h), across + sa.dh_dangle + sb.dh_dangle,
-          -value - sa.curvature_radius - sb.curvature_radius};
+  const double centre_rate = u.dot(centre_velocity);
+  return {value,
+          centre_rate - wa * sa.dh_dangle - wb * sb.dh_dangle,
+          16.0 * kEps * (std::fabs(along) + sa.reach + sb.reach),
+          across + sa.dh_dangle + sb.dh_dangle,
+          -value - sa.curvature_radius - sb.curvature_radius,
+          centre_rate,
+          across,
+          sa.dh_dangle,
+          sb.dh_dangle,
+          sa.dh_spread,
+          sb.dh_spread};
 }
 
 // The distance's witness direction is accurate to ~1e-9 relative only down to gaps of ~1e-6 of
@@ -99,8 +146,7 @@ constexpr int kDirectionSteps = 3;
 
 struct Separation {
   SeparationAlong best;
-  double last_rate;  // of the last direction tried
-  Eigen::Vector2d last_direction;
+  Eigen::Vector2d last_direction;  // the last one tried
 };
 
 // Inlined into the steps, as before they had two forms (advance()): the call cost 1 % of the
@@ -119,15 +165,26 @@ struct Separation {
     current = separationAlong(trig, a, b, centre_velocity, wa, wb, u);
     if (current.value - current.rounding > best.value - best.rounding) best = current;
   }
-  return {best, current.rate, u};
+  return {best, u};
 }
 
-/// f(u, t) (the comment above) less its rounding, evaluated in long double from the pair's
-/// motion (poses, arc and angles at t in long double too), rounded down to a double: for gaps
-/// below the double allowance. u need not be of unit length (f is positively homogeneous in u).
+/// f(u, t) (the comment above) evaluated in long double from the pair's motion (poses, arc and
+/// angles at t in long double too), for gaps below the double allowance: `value` is f less its
+/// rounding, rounded down to a double, and `rounding` 0; the rate's parts are those of the same
+/// direction. u need not be of unit length. The direction is refined by Newton steps on its angle
+/// in long double too: the double one is the best only for the double poses, and a needle turned
+/// by the ~1e-16 rad between them moves its support point far along its flat side (by 6e5 m for
+/// one 5.8e7 m long and 5.8e-7 m thin, which cost the separation 3e-11 m of a 4e-17 m gap).
+/// For the same reason the separation is evaluated in the frame of the ellipse with the larger
+/// sweep curvature (`frame`): there u . its axes is exact, u's angle to its flat side is held
+/// to a relative precision, and the rounding of its angle moves only the other centre (by |p|
+/// times it) instead of its support point (by R^2 / r times it: for an axis ratio of 1e14 that
+/// alone outgrew a gap of 1e-12 of the radii).
 /// Out of line: the steps need it only near a tangency.
-[[gnu::noinline]] double preciseSeparation(const RotatingPair& p, double t,
-                                           const Eigen::Vector2d& u) {
+[[gnu::noinline]] SeparationAlong preciseSeparation(const RotatingPair& p, double t,
+                                                    const Eigen::Vector2d& centre_velocity,
+                                                    const Eigen::Vector2d& direction,
+                                                    bool frame_of_a) {
   using Long = long double;
   const Long time = t;
   const auto exact = [](double high, double low) { return Long(high) + low; };
@@ -140,18 +197,84 @@ struct Separation {
     px -= arc.x;
     py -= arc.y;
   }
-  const auto support = [&](const Ellipse& e, double angle_low, double omega) {
-    const Long angle = exact(e.angle, angle_low) + Long(omega) * time;
-    const Long c = std::cos(angle), s = std::sin(angle);
-    const Long ax = u.x() * c + u.y() * s, ay = u.y() * c - u.x() * s;
-    const Long rx = e.radius_x, ry = e.radius_y;
-    return std::sqrt(rx * rx * ax * ax + ry * ry * ay * ay);
+  // The frame's angle, and the other ellipse's angle in it.
+  const Long angle_a = exact(p.a.angle, p.low.a_angle), angle_b = p.b.angle;
+  const Long frame = frame_of_a ? angle_a + Long(p.wa) * time : angle_b + Long(p.wb) * time;
+  const Long other = frame_of_a ? (angle_b - angle_a) + (Long(p.wb) - p.wa) * time
+                                : (angle_a - angle_b) + (Long(p.wa) - p.wb) * time;
+  const Long fc = std::cos(frame), fs = std::sin(frame);
+  const auto toFrame = [&](Long x, Long y, Long* fx, Long* fy) {
+    *fx = fc * x + fs * y;
+    *fy = fc * y - fs * x;
   };
-  const Long ha = support(p.a, p.low.a_angle, p.wa), hb = support(p.b, 0.0, p.wb);
-  const Long along = u.x() * px + u.y() * py;
-  const Long rounding = 16 * std::numeric_limits<Long>::epsilon() * (std::fabs(along) + ha + hb);
-  // Shrunk by 2^-52 against the rounding to double.
-  return static_cast<double>(along - ha - hb - rounding) * (1.0 - 0x1p-52);
+  const Long p_norm = std::hypot(px, py);
+  toFrame(Long(px), Long(py), &px, &py);
+  Long vx, vy;
+  toFrame(centre_velocity.x(), centre_velocity.y(), &vx, &vy);
+  struct Axes {
+    Long c, s, rx2, ry2;
+  };
+  const auto axes = [](const Ellipse& e, Long c, Long s) {
+    return Axes{c, s, Long(e.radius_x) * e.radius_x, Long(e.radius_y) * e.radius_y};
+  };
+  const Axes own = axes(frame_of_a ? p.a : p.b, 1, 0);
+  const Axes turned = axes(frame_of_a ? p.b : p.a, std::cos(other), std::sin(other));
+  const Axes& ea = frame_of_a ? own : turned;
+  const Axes& eb = frame_of_a ? turned : own;
+  struct Support {
+    Long h, dh, rho, reach, spread;
+  };
+  // As supportRates(), in long double.
+  const auto support = [](const Axes& e, Long ux, Long uy) {
+    const Long ax = ux * e.c + uy * e.s, ay = uy * e.c - ux * e.s;
+    const Long h = std::sqrt(e.rx2 * ax * ax + e.ry2 * ay * ay);
+    const Long fx = std::fabs(ax), fy = std::fabs(ay);
+    return Support{h, (e.rx2 - e.ry2) * ax * ay / h, e.rx2 * e.ry2 / (h * h * h),
+                   (e.rx2 * fx + e.ry2 * fy) / h, std::fabs(e.rx2 - e.ry2) * (fx + fy) / h};
+  };
+  // The rounding of the frame's angle moves the other centre by |p| times it, and that of the
+  // other's angle its support point by its reach times it.
+  const Long frame_error = 1 + std::fabs(frame), other_error = 1 + std::fabs(other);
+  const Long norm = std::hypot(Long(direction.x()), Long(direction.y()));
+  Long ux, uy;
+  toFrame(direction.x() / norm, direction.y() / norm, &ux, &uy);
+  constexpr Long kEps = std::numeric_limits<Long>::epsilon();
+  SeparationAlong best{};
+  Long best_lower = -std::numeric_limits<Long>::infinity();
+  for (int i = 0; i <= kDirectionSteps; ++i) {
+    const Support sa = support(ea, ux, uy), sb = support(eb, ux, uy);
+    const Long along = ux * px + uy * py, across = ux * py - uy * px;
+    const Long value = along - sa.h - sb.h;
+    const Support& so = frame_of_a ? sb : sa;
+    const Long lower = value - 16 * kEps * (std::fabs(along) + p_norm * frame_error + sa.reach +
+                                            sb.reach + so.reach * other_error);
+    if (lower > best_lower) {
+      best_lower = lower;
+      const double centre_rate = static_cast<double>(ux * vx + uy * vy);
+      // Shrunk by 2^-52 against the rounding to double.
+      best = {static_cast<double>(lower) * (1.0 - 0x1p-52),
+              static_cast<double>(centre_rate - p.wa * sa.dh - p.wb * sb.dh),
+              0.0,
+              static_cast<double>(across + sa.dh + sb.dh),
+              static_cast<double>(-value - sa.rho - sb.rho),
+              centre_rate,
+              static_cast<double>(across),
+              static_cast<double>(sa.dh),
+              static_cast<double>(sb.dh),
+              static_cast<double>(sa.spread),
+              static_cast<double>(sb.spread)};
+    }
+    // A Newton step on the angle of u where f is concave in it, as in bestSeparation().
+    const Long curvature = -value - sa.rho - sb.rho;
+    if (i == kDirectionSteps || !(curvature < 0)) break;
+    const Long turn = -(across + sa.dh + sb.dh) / curvature;
+    if (!(std::fabs(turn) < Long(0.5))) break;
+    const Long c = std::cos(turn), s = std::sin(turn);
+    const Long turned_x = c * ux - s * uy;
+    uy = s * ux + c * uy;
+    ux = turned_x;
+  }
+  return best;
 }
 
 // Below this gap, relative to R_a + R_b, the witness points' rounding (~eps R) can turn, or even
@@ -159,8 +282,8 @@ struct Separation {
 constexpr double kWitnessGap = 1e-10;
 
 /// The unit outward normal of a's rim at its point `x`, or false when there is none. At a witness
-/// point it is the direction from a to b along which they are farthest apart (the maximiser of
-/// the support-function dual, whose support point the witness point is).
+/// point it is the direction from a to the other ellipse along which they are farthest apart (the
+/// maximiser of the support-function dual, whose support point the witness point is).
 bool rimNormal(const Ellipse& a, const Eigen::Vector2d& x, Eigen::Vector2d* normal) {
   const SinCos trig = sinCos(a.angle);
   const Eigen::Vector2d d = x - a.center;
@@ -243,7 +366,65 @@ struct StepBounds {
   bool second_order;
   double graze;     ///< the grazing band [m]
   double tiny_gap;  ///< below it the witness direction is a's normal [m]
+  // The turning direction's bound (turningStep()):
+  double centre_speed;    ///< V_p [m/s]
+  double arc_curvature;   ///< |wa| |v_arc| [m/s^2]
+  double sweep_a, sweep_b;  ///< K = R^2 / r - r of a and b, 0 for a circle [m]
 };
+
+/// The second-order step along u turning at omega_u (the comment at the top), or 0 where it
+/// gives nothing. `value` is the separation along u less its rounding; the rate's own rounding is
+/// taken off. The step is held to L / V_p so that |p| stays below |p(t)| + L, L from |p(t)| up by
+/// factors of 8 while that limit, not the root, is what holds the step back; omega_u minimises M_u
+/// for each L.
+double turningStep(const StepBounds& k, const SeparationAlong& s, double value, double wa,
+                   double wb, double centre_distance) {
+  constexpr double kInfinity = std::numeric_limits<double>::infinity();
+  const double weighted = wa * k.sweep_a + wb * k.sweep_b;
+  double step = 0.0, reach = centre_distance;
+  for (int i = 0; i < 4; ++i, reach *= 8.0) {
+    const bool moves = k.centre_speed > 0.0;
+    const double longest = moves ? reach / k.centre_speed : kInfinity;
+    const double farthest = (centre_distance + (moves ? reach : 0.0)) * (1.0 + 1e-9);
+    // M_u = A omega^2 - 2 B omega + 2 V_p |omega| + const, least at omega = (B -+ V_p) / A where
+    // |B| > V_p (else at 0, the fixed direction). omega - wa and omega - wb are formed without
+    // cancellation, and omega from the smaller of them, exactly the other being derived: an
+    // ulp of omega - wa times a needle's dh/dtheta near its flat side (~eps R^2 / r per ulp of
+    // the direction) would cost the rate more than the gap (one 1e14 long to thin stopped its
+    // steps at 2.4e-10 s 6e-19 m from a contact 6e-9 s ahead).
+    if (!(std::fabs(weighted) > k.centre_speed)) return step;
+    const double shift = std::copysign(k.centre_speed, weighted);
+    const double sum = farthest + k.sweep_a + k.sweep_b;
+    double da = ((wb - wa) * k.sweep_b - wa * farthest - shift) / sum;
+    double db = ((wa - wb) * k.sweep_a - wb * farthest - shift) / sum;
+    const bool from_a = std::fabs(da) <= std::fabs(db);
+    const double omega = from_a ? wa + da : wb + db;
+    (from_a ? db : da) = omega - (from_a ? wb : wa);
+    if (!(omega != 0.0 && std::isfinite(omega) && std::isfinite(da) && std::isfinite(db))) {
+      return step;
+    }
+    const double curvature = omega * omega * farthest + 2.0 * std::fabs(omega) * k.centre_speed +
+                             k.arc_curvature + da * da * k.sweep_a + db * db * k.sweep_b;
+    if (!(curvature >= std::numeric_limits<double>::min() &&
+          curvature <= std::numeric_limits<double>::max())) {
+      return step;
+    }
+    // d/dt [u(t) . p(t) - h_a - h_b]: each h changes with the angle between u and its ellipse.
+    const double terms[] = {s.centre_rate, omega * s.across, da * s.dh_a, db * s.dh_b};
+    // The derived difference carries the rounding of omega too; u . p' and u_perp . p are
+    // rounded to eps of |p'| <= V_p and |p|.
+    double rate = 0.0,
+           size = std::fabs(da) * s.dh_a_spread + std::fabs(db) * s.dh_b_spread +
+                  std::fabs(omega) * (std::fabs(from_a ? s.dh_b : s.dh_a) + centre_distance) +
+                  k.centre_speed;
+    for (const double term : terms) rate += term, size += std::fabs(term);
+    rate -= 16.0 * std::numeric_limits<double>::epsilon() * size;
+    const double root = quadraticStep(value, rate, curvature);
+    step = std::max(step, std::min(root, longest));
+    if (root <= longest) break;  // a larger L only lowers the root
+  }
+  return step;
+}
 
 /// The steps of rotatingContact(); kArc: the pair has an arc (RotatingPair::hasArc()), so that
 /// firstContact()'s pairs run without its branches.
@@ -256,6 +437,23 @@ FirstContact advance(const RotatingPair& p, const StepBounds& k, double horizon,
     if constexpr (kArc) e.center -= p.arcAt(t);
     e.angle = p.b.angle + p.wb * t;
     return e;
+  };
+  const auto centreVelocity = [&p](double t) {
+    Eigen::Vector2d v = p.w;
+    if constexpr (kArc) v -= p.arcVelocityAt(t);
+    return v;
+  };
+  // |p(t)| from b's double pose at t, raised by what rounding the pose left out.
+  const auto centreDistance = [&p](const Ellipse& b, double t) {
+    double moved = p.b.center.norm() + p.w.norm() * t;
+    if constexpr (kArc) moved += p.a_arc_velocity.norm() * t;
+    return b.center.norm() + 4.0 * std::numeric_limits<double>::epsilon() * moved;
+  };
+  // The larger second-order step of a separation, along u fixed and along u turning.
+  const auto secondOrderStep = [&](const SeparationAlong& s, double value, const Ellipse& b,
+                                   double t) {
+    return kStepShrink * std::max(quadraticStep(value, s.rate, k.curvature),
+                                  turningStep(k, s, value, p.wa, p.wb, centreDistance(b, t)));
   };
   const double resolution = kRotationResolution * horizon;
   double t = 0.0;
@@ -274,27 +472,41 @@ FirstContact advance(const RotatingPair& p, const StepBounds& k, double horizon,
     Eigen::Vector2d direction = c.point_b - c.point_a;
     const double gap = direction.norm();
     bool blurred = false;  // the separation's rounding allowance costs much of it
-    double last_rate = 0.0;
     Eigen::Vector2d last_direction;
     if (k.second_order && !decided &&
         (gap > k.tiny_gap ? (direction /= gap, true) : rimNormal(a, c.point_a, &direction))) {
-      Eigen::Vector2d centre_velocity = p.w;
-      if constexpr (kArc) centre_velocity -= p.arcVelocityAt(t);
-      const Separation s = bestSeparation(a, b, centre_velocity, p.wa, p.wb, direction);
+      const Eigen::Vector2d centre_velocity = centreVelocity(t);
+      Separation s = bestSeparation(a, b, centre_velocity, p.wa, p.wb, direction);
+      // A needle's witness point can lie anywhere along its flat side within rounding of the
+      // distance, and the direction between the points then says nothing (one 1.4e14 long was
+      // 3e5 m off along it, the separation along it -2.6e7 m for a gap of 3e-8 m): the rim
+      // normals at the witness points, one of which is well placed, are tried too.
+      if (!(s.best.value - s.best.rounding > 0.5 * c.distance)) {
+        Eigen::Vector2d normal;
+        for (int side = 0; side < 2; ++side) {
+          if (!(side == 0 ? rimNormal(a, c.point_a, &normal)
+                          : (rimNormal(b, c.point_b, &normal) && (normal = -normal, true)))) {
+            continue;
+          }
+          const Separation other = bestSeparation(a, b, centre_velocity, p.wa, p.wb, normal);
+          if (other.best.value - other.best.rounding > s.best.value - s.best.rounding) s = other;
+        }
+      }
       const double value = s.best.value - s.best.rounding;
       blurred = !(value > kPreciseBelow * s.best.rounding);
-      last_rate = s.last_rate, last_direction = s.last_direction;
-      if (value > 0.0) {
-        step = std::max(step, kStepShrink * quadraticStep(value, s.best.rate, k.curvature));
-      }
+      last_direction = s.last_direction;
+      if (value > 0.0) step = std::max(step, secondOrderStep(s.best, value, b, t));
     }
     if (step < resolution) {
       const double probe = std::min(t + resolution, horizon);
       if (overlap(p.aAt(probe), bAt(probe))) return {true, t};
       // The long double separation, where the double one's rounding holds the steps back.
-      const double precise = blurred ? preciseSeparation(p, t, last_direction) : 0.0;
-      if (precise > 0.0) {
-        step = std::max(step, kStepShrink * quadraticStep(precise, last_rate, k.curvature));
+      if (blurred) {
+        const SeparationAlong precise =
+            preciseSeparation(p, t, centreVelocity(t), last_direction, k.sweep_a >= k.sweep_b);
+        if (precise.value > 0.0) {
+          step = std::max(step, secondOrderStep(precise, precise.value, b, t));
+        }
       }
       if (step < resolution && c.distance <= k.graze) return {true, t};  // a tangency in the band
     }
@@ -323,13 +535,14 @@ FirstContact rotatingContact(const RotatingPair& p, double horizon, RotationWork
   done = {};
   StepBounds k;
   // Rounding of R - r is harmless: it is exact (Sterbenz) when r >= R / 2, and tiny against R.
-  k.approach_speed = (p.hasArc() ? largestCentreSpeed(p.w, p.a_arc_velocity, p.wa * horizon)
-                                 : std::hypot(p.w.x(), p.w.y())) +
+  k.centre_speed = p.hasArc() ? largestCentreSpeed(p.w, p.a_arc_velocity, p.wa * horizon)
+                              : std::hypot(p.w.x(), p.w.y());
+  k.approach_speed = k.centre_speed +
                      std::fabs(p.wa) * (boundingRadius(p.a) - inscribedRadius(p.a)) +
                      std::fabs(p.wb) * (boundingRadius(p.b) - inscribedRadius(p.b));
   if (!(k.approach_speed > 0.0)) return {};
-  k.curvature = sweepCurvature(p.a, p.wa) + sweepCurvature(p.b, p.wb);
-  if (p.hasArc()) k.curvature += std::fabs(p.wa) * p.a_arc_velocity.norm();
+  k.arc_curvature = p.hasArc() ? std::fabs(p.wa) * p.a_arc_velocity.norm() : 0.0;
+  k.curvature = sweepCurvature(p.a, p.wa) + sweepCurvature(p.b, p.wb) + k.arc_curvature;
   // A curvature bound below the normal range (an angular velocity whose square underflows) or
   // overflowed is not trusted: then the steps are the plain ones. A pair with no turn at all
   // (spinning circles, no arc) has f linear in t: its curvature 0 is exact.
@@ -338,6 +551,8 @@ FirstContact rotatingContact(const RotatingPair& p, double horizon, RotationWork
                               k.curvature <= std::numeric_limits<double>::max());
   k.graze = kGrazeDistance * (inscribedRadius(p.a) + inscribedRadius(p.b));
   k.tiny_gap = kWitnessGap * (boundingRadius(p.a) + boundingRadius(p.b));
+  k.sweep_a = sweepCurvature(p.a, 1.0);
+  k.sweep_b = sweepCurvature(p.b, 1.0);
   return p.hasArc() ? advance<true>(p, k, horizon, until, done)
                     : advance<false>(p, k, horizon, until, done);
 }

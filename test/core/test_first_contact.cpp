@@ -475,14 +475,111 @@ TEST(FirstContact, EccentricTipGrazingADiscIsResolvedWithoutTheCap) {
 }
 
 TEST(FirstContact, NeedleTipGrazingADiscStaysBelowTheCap) {
-  // The same with axis ratios up to 1e4: the curvature bound of the steps grows with the ratio,
-  // and the steps through a pass with it (about as its square root).
+  // The same with axis ratios up to 1e4. The curvature bound of a fixed direction grows with the
+  // ratio (R^2 / r), and the steps through a pass with it, about as its square root: at most 929
+  // calls here before the steps took a direction turning with the needle, 33 since.
   Generator g(1314);
   Report report("needle tip grazing a disc");
   const int most_calls = checkTipGrazing(g, report, 1e4, 60);
   std::printf("[first_contact] needle tip grazing: at most %d distance() calls per pair\n",
               most_calls);
   EXPECT_EQ(report.wrong, 0);
+}
+
+TEST(FirstContact, NeedleTipGrazingADiscTakesAsFewStepsAtAnyAxisRatio) {
+  // Axis ratios up to 5e7 (the thinnest 1e-9 m, kMinRadius): the turning direction's bound holds
+  // no R^2 / r, and the steps do not grow with the ratio. Before it the means went 34, 82, 220,
+  // 573, 1564, 3602, 8517 calls at ratios 1e1 .. 1e7 (about the ratio to the power 0.4), and a
+  // third of the passes at 1e8 reached the cap; since, 21 at each.
+  Generator g(1317);
+  Report report("needle tip grazing, ratios to 5e7");
+  const int most_calls = checkTipGrazing(g, report, 5e7, 60);
+  std::printf("[first_contact] needle tip grazing to 5e7: at most %d distance() calls per pair\n",
+              most_calls);
+  EXPECT_EQ(report.wrong, 0);
+  EXPECT_LE(most_calls, 100);
+}
+
+/// A speck (a disc) sliding over the centre of a turning needle of axis ratio `ratio` (1e6..1e14,
+/// the needle 1 m .. 1e9 m long) along its flat side: in the needle's frame its height above the
+/// side is y0 cos(w t) - v t sin(w t), a single dip at the pass (t = 0 there) for w v of the sign
+/// that lifts it, made by the quad oracle to pass at smallest contact scale `target`. The needle
+/// turns at 0.5..1 rad/s (its tip up to 1e9 m/s) and the dip rises by the pair's size r + rho
+/// in 0.2..0.3 s, so that the speck slides no more than 50 (r + rho), as far as the other
+/// families' pairs move against their size: the double poses place it to ~1e-15 of r + rho, which
+/// the depth 1e-12 needs (a slower needle needs a longer slide, and the rounding of a slide of
+/// 4000 (r + rho) alone made answers up to 2.4e-11 of the horizon late). The step bound over u fixed in the plane
+/// grows as w^2 R^2 / r here (R, r the needle's radii); the fuzzer found such pairs, 1.4e14 and
+/// 2e12 long to thin, at the step cap.
+bool drawNeedleFlatPass(ellipse_collision::test::RandomSource& rng, double ratio, double target,
+                        TurningPass* out) {
+  TurningPass& p = *out;
+  p = {};
+  const double major = rng.logUniform(std::max(1.0, 1e-8 * ratio), std::min(1e9, 1e-4 * ratio));
+  const double minor = major / ratio;
+  const bool x_major = rng.coin();
+  const double at = rng.uniform(-kPi, kPi), range = rng.uniform(0.0, 100.0);
+  p.a = {Eigen::Vector2d(std::cos(at), std::sin(at)) * range, x_major ? major : minor,
+         x_major ? minor : major, rng.uniform(-kPi, kPi)};
+  const double rho = minor * rng.logUniform(0.5, 20.0);
+  const double across = rng.uniform(0.2, 0.3);
+  const double omega = (rng.coin() ? 1.0 : -1.0) * rng.uniform(0.5, 1.0);
+  const double speed = (minor + rho) / (across * across * std::fabs(omega));
+  p.motion_a = {{0.0, 0.0}, omega};
+  p.horizon = 1.0;
+  const double t_pass = rng.uniform(0.3, 0.7);
+  const double angle = p.a.angle + omega * t_pass + (x_major ? 0.0 : kPi / 2);
+  const Eigen::Vector2d axis(std::cos(angle), std::sin(angle)), normal(-axis.y(), axis.x());
+  const double side = rng.coin() ? 1.0 : -1.0;
+  // Height y0 > 0 on the normal's side dips where w v < 0, on the other where w v > 0.
+  const Eigen::Vector2d velocity = axis * (omega > 0.0 ? -side : side) * speed;
+  p.b = {p.a.center + normal * side * (minor + rho) - velocity * t_pass, rho, rho, 0.0};
+  p.motion_b = {velocity, 0.0};
+  p.pass = oracleGrazingPass(p.a, oracleMotionOf(p.a, p.motion_a), p.b,
+                             oracleMotionOf(p.b, p.motion_b), p.horizon, target);
+  p.text = "needle " +
+           exactNumbers({p.a.center.x(), p.a.center.y(), p.a.radius_x, p.a.radius_y, p.a.angle,
+                         omega}) +
+           "; speck " +
+           exactNumbers({p.b.center.x(), p.b.center.y(), p.b.radius_x, velocity.x(),
+                         velocity.y(), p.horizon});
+  return p.pass.found;
+}
+
+TEST(FirstContact, SpeckSlidingAlongATurningNeedleIsResolvedWithoutTheCap) {
+  // Axis ratios 1e6 .. 1e12, 30 passes each at depths 1e-8, 1e-10, 1e-12 either side of
+  // touching: every answer within 1e-9 of the horizon of the oracle's first contact, never
+  // later, and no call at the step cap (before the steps took a direction turning with the
+  // needle, the bound over a fixed direction curved as w^2 R^2 / r and the steps fell to the
+  // first-order ones).
+  for (const double ratio : {1e6, 1e8, 1e10, 1e12, 1e14}) {
+    Generator g(1316 + static_cast<int>(std::log10(ratio)));
+    char family[64];
+    std::snprintf(family, sizeof family, "rotation: speck along a needle 1e%d",
+                  static_cast<int>(std::log10(ratio)));
+    GrazingTally tally(family);
+    checkGrazingPasses(
+        tally, g,
+        [ratio](ellipse_collision::test::RandomSource& rng, double target, TurningPass* out) {
+          return drawNeedleFlatPass(rng, ratio, target, out);
+        },
+        [](const TurningPass& p) {
+          EXPECT_EQ(invalidMotionReason(p.a, p.motion_a, p.b, p.motion_b, p.horizon), "")
+              << p.text;
+          const FirstContact ours = firstContact(p.a, p.motion_a, p.b, p.motion_b, p.horizon);
+          EXPECT_TRUE(
+              sameResult(ours, firstContact(p.b, p.motion_b, p.a, p.motion_a, p.horizon)))
+              << p.text;
+          return ours;
+        },
+        [](const TurningPass& p, detail::RotationWork* work) {
+          return detail::rotatingContact(
+              detail::rotatingPair(p.a, p.motion_a.velocity, Eigen::Vector2d::Zero(),
+                                   p.motion_a.angular_velocity, p.b, p.motion_b),
+              p.horizon, work);
+        },
+        30);
+  }
 }
 
 TEST(FirstContact, EccentricPairsGrazingWhileTurningAreFoundWithinTheResolution) {
@@ -603,6 +700,58 @@ ExtentError errorInExtentBounds(const Case& c) {
       static_cast<double>((static_cast<quad>(ours.time) - oracle.time) / extentTimeBound(c));
   const double cosine = static_cast<double>(oracle.entry_cosine);
   return {head_on, head_on * cosine, cosine};
+}
+
+TEST(FirstContact, TurningNeedleFuzzerFindingsBelowTheCap) {
+  // fuzz_first_contact findings (test/fuzz_corpus/fuzz_first_contact/needle-turning-*, decoded by
+  // fuzz/fuzz_input.h to these values): a speck by a needle of axis ratio 1.4e14 turning at
+  // 1.9e-7 rad/s, sliding along its flat side at 435 m/s or 0.6 m/s, and a speck 7.6 m off a
+  // needle of ratio 2.1e12 turning at 4.7e-4 rad/s. The distance's witness point on the needle
+  // lay up to 3e5 m off along the flat side, so only first-order steps were left: all three
+  // reached the step cap and claimed a contact at it. Against the oracle: clear, in a few steps.
+  const double speck = 1.8512501431811046e-07;
+  const Ellipse dot{{speck, speck}, speck, speck, speck};
+  const Case cases[] = {
+      {dot,
+       {{-2.2250738585072034e-308, -2.1720633791577626e-07},
+        26054029.546875,
+        1.8512566801742736e-07,
+        1.854160526226778e-07},
+       {{-435.22354125976562, 1.1848000916359069e-05}, speck},
+       {{0.60122548975050449, 1.8512501875900256e-07}, 1.8512461641417843e-07},
+       1.0000000000000002},
+      {dot,
+       {{-2.2250738585072034e-308, -2.1720633791577626e-07},
+        26054029.546875,
+        speck,
+        -1.7347234759768071e-18},
+       {{1.8512500954415145e-07, speck}, 0.048529411753406748},
+       {{0.60122548975050449, 1.8512501875900256e-07}, 1.8512461641417843e-07},
+       1.0000000000000002},
+      {dot,
+       {{7.6491960398852825, -1.243623259927773e-14},
+        0.00047487745086982613,
+        1000000000,
+        0.00047487745086982613},
+       {{0.00048160579081013566, 0.00047487745086982613}, 0.00049073228638008004},
+       {{0.00047487745086982613, 0.00047481784622505074}, 0.00047487745086982613},
+       1.5707963267948966},
+  };
+  for (const Case& c : cases) {
+    ASSERT_EQ(invalidMotionReason(c.a, c.ma, c.b, c.mb, c.horizon), "") << describe(c);
+    detail::RotationWork work;
+    const FirstContact direct = detail::rotatingContact(
+        detail::rotatingPair(c.a, c.ma.velocity, Eigen::Vector2d::Zero(), c.ma.angular_velocity,
+                             c.b, c.mb),
+        c.horizon, &work);
+    EXPECT_FALSE(work.capped) << describe(c);
+    EXPECT_LE(work.distance_calls, 20) << describe(c);
+    const OracleFirstContact oracle = oracleFirstContact(c.a, c.ma, c.b, c.mb, c.horizon, 4000);
+    EXPECT_FALSE(oracle.contact) << describe(c);
+    EXPECT_GT(oracle.min_scale, 1 + 1e-6) << describe(c);
+    EXPECT_FALSE(direct.contact) << describe(c);
+    EXPECT_FALSE(firstContact(c.a, c.ma, c.b, c.mb, c.horizon).contact) << describe(c);
+  }
 }
 
 TEST(FirstContact, NeedleFuzzerFindingsWithinTheExtentBound) {

@@ -65,7 +65,12 @@ struct Sum {
     }
     return (lo + hi) / 2;
   }
-  // Gauge of K at p.
+  // Gauge of K at p: p . u / h_K(u) at the normal u of the boundary point on the ray of p. Any u
+  // gives a lower bound and that one the gauge (the dual form), so an error in u costs only its
+  // square. The primal form |p|^2 / (p . k) took the error of k along the boundary at first
+  // order: along a needle's flat side, which k sweeps within r / R of the normal's angle, the
+  // rounding of u moved it by ~eps R^2 / r, and an axis ratio of 1e14 left the quad gauge 1e-8
+  // off and the long double one unusable.
   T gauge(T px, T py) const {
     const T norm = root(px * px + py * py);
     if (norm == 0) return 0;
@@ -73,9 +78,10 @@ struct Sum {
     const T phi_m = atan2l(static_cast<long double>(my), static_cast<long double>(mx));
     // On [phi_m - pi, phi_m] the normal turns from -m through p^ to m: m . k increases through 0.
     const T phi = crossing(phi_m - pi<T>(), phi_m, mx, my, 0);
-    T kx, ky, h;
+    T kx, ky, h, s, c;
     at(phi, &kx, &ky, &h);
-    return norm * norm / (px * kx + py * ky);
+    sinCos(phi, &s, &c);
+    return (px * c + py * s) / h;
   }
 };
 
