@@ -167,7 +167,9 @@ void checkTranslationReference(const core::Ellipse& a, const core::Motion& ma,
   // speck at 1 m/s, a horizon of 1e9 s; stopped at 1e-14 of the horizon, the reference missed
   // the contact by 1e-5 s and read 2.9).
   if (first_hit < 0) {
-    const double speed = (mb.velocity - ma.velocity).norm();
+    // hypot: the squares of a subnormal velocity underflow to 0, which stopped the search.
+    const Eigen::Vector2d w = mb.velocity - ma.velocity;
+    const double speed = std::hypot(w.x(), w.y());
     const double inner = std::min(a.radius_x, a.radius_y) + std::min(b.radius_x, b.radius_y);
     double lo = 0.0, hi = horizon;
     for (int i = 0; i < 400 && speed * (hi - lo) > 1e-9 * inner; ++i) {

@@ -257,34 +257,39 @@ double entryDistance(const PathPair& p, double reach) {
 
 FirstContact translationContact(const Ellipse& a, const Ellipse& b, const Eigen::Vector2d& w,
                                 double horizon) {
-  const double speed = std::hypot(w.x(), w.y());  // hypot: no underflow for tiny w
-  if (!(speed > 0.0)) return {};  // same velocity: the t = 0 answer holds throughout
+  if (w.x() == 0.0 && w.y() == 0.0) return {};  // same velocity: the t = 0 answer holds throughout
   // Bounding circles first: before the relative centre comes within R_a + R_b (enlarged against
   // rounding) no contact is possible, and a path that never does is clear without trigonometry.
   const Eigen::Vector2d p0 = b.center - a.center;
   const double slack = 4e-15 * p0.norm();
   const double outer = (boundingRadius(a) + boundingRadius(b)) * (1.0 + 1e-9) + slack;
-  // The unit direction of w from w scaled by a power of two (exact), so that a tiny or subnormal
-  // relative velocity keeps its full precision. Each component is scaled itself: for a subnormal
+  // w scaled by a power of two (exact), so that a tiny or subnormal relative velocity keeps its
+  // full precision in its direction and speed. Each component is scaled itself: for a subnormal
   // w the factor 2^-ilogb alone overflows to inf (fuzzer finding).
   const int exponent = std::ilogb(std::max(std::fabs(w.x()), std::fabs(w.y())));
-  const Eigen::Vector2d d =
-      Eigen::Vector2d(std::ldexp(w.x(), -exponent), std::ldexp(w.y(), -exponent)).normalized();
+  const Eigen::Vector2d scaled(std::ldexp(w.x(), -exponent), std::ldexp(w.y(), -exponent));
+  const double scaled_speed = scaled.norm();  // |w| = scaled_speed 2^exponent
+  const Eigen::Vector2d d = scaled / scaled_speed;
+  // Times in units of 2^-exponent s: a distance over scaled_speed, in range whatever the speed.
+  // |w| itself, rounded to the subnormal grid, put the time off by up to 2^-1074 / |w| of itself
+  // (6e-8 at 8e-317 m/s), and for a horizon near DBL_MAX the horizon enlarged against rounding
+  // overflowed to inf: every entry past the bounding circles seemed within it (fuzzer finding).
+  const double scaled_horizon = std::ldexp(horizon, exponent);
   const double x0 = p0.dot(d);
   const double sigma = d.x() * p0.y() - d.y() * p0.x();  // n . p0, n = (-d.y, d.x)
   if (std::fabs(sigma) > outer) return {};  // the line stays outside the circle of radius `outer`
   const double half_chord = std::sqrt((outer - std::fabs(sigma)) * (outer + std::fabs(sigma)));
   if (x0 > half_chord + slack) return {};  // moving away
-  if ((-x0 - half_chord - slack) / speed > horizon) return {};
+  // A crossing within rounding of the horizon is at the horizon.
+  const double late = scaled_horizon * (1.0 + 4.0 * std::numeric_limits<double>::epsilon());
+  if ((-x0 - half_chord - slack) / scaled_speed > late) return {};
   const detail::SinCosPair trig = detail::sinCosPair(a.angle, b.angle);
   const PathPair path{x0, sigma, axesOnPath(a, trig.first, d), axesOnPath(b, trig.second, d)};
   if (std::fabs(sigma) > path.boundaryPoint(0.0, 1.0).y()) return {};  // the line misses K
-  // A crossing within rounding of the horizon is at the horizon.
-  const double late = horizon * (1.0 + 4.0 * std::numeric_limits<double>::epsilon());
-  const double enter = entryDistance(path, late * speed) / speed;
+  const double enter = entryDistance(path, late * scaled_speed) / scaled_speed;
   if (enter > 0.0) {
     if (enter > late) return {};
-    return {true, std::min(enter, horizon)};
+    return {true, enter < scaled_horizon ? std::ldexp(enter, -exponent) : horizon};
   }
   // The path enters K at or before p0, yet overlap() said apart at t = 0: p0 is beyond the exit
   // (moving away) or on the rim within rounding. The exit is the reversed path's entry.

@@ -1097,6 +1097,61 @@ TEST(FirstContact, SubnormalRelativeVelocityKeepsItsDirection) {
   EXPECT_EQ(report.wrong, 0);
 }
 
+TEST(FirstContact, SubnormalAndTinyVelocitiesOverHugeHorizonsMatchOracle) {
+  // fuzz_first_contact finding (test/fuzz_corpus/fuzz_first_contact/
+  // denormal-velocity-huge-horizon, decoded): a speck 0.6 m from a needle 2 m long, which moves at
+  // 2.5e-309 m/s over a horizon of DBL_MAX s, 0.44 m of path that stops 0.18 m short of the speck.
+  // The horizon enlarged by 4 eps against rounding overflowed to inf, so every entry past the
+  // bounding circles seemed within it: contact "at the horizon".
+  const double s = 1.8512501431811046e-07;
+  const double kMax = std::numeric_limits<double>::max();
+  const Case finding{{{s, 0.19411764701362699}, 1.8512500943312915e-07, 1.8512501498424427e-07,
+                      -2.2250738585072034e-308},
+                     {{0.60122548975050449, 1.8512501875900256e-07},
+                      1.446286065735769e-09,
+                      1.0000000000000002,
+                      9.9999999999999998e-13},
+                     {},
+                     {{-2.3410987396916155e-309, 7.5586995737419551e-310}, 0.0},
+                     kMax};
+  EXPECT_FALSE(firstContact(finding.a, finding.ma, finding.b, finding.mb, finding.horizon).contact)
+      << describe(finding);
+  Report report("subnormal velocity, DBL_MAX");
+  check(finding, report);
+  // The family: relative speeds 5.6e-317..1e-279 m/s (subnormal to tiny), horizons 1e280 s to
+  // DBL_MAX, paths 1e-8..10 m long past pairs of their size (axis ratios to 1e3, loose in their
+  // bounding circles), closest approach from 0.3 to 1.6 horizons on: entries within the horizon,
+  // just beyond it, or none. Before, beyond the overflow, |w| rounded to the subnormal grid
+  // (23 bits at 5e-317 m/s) made the time late or early by up to 1e-7 of itself (3e-8 of the
+  // horizon here, now 1e-15).
+  Generator g(1321);
+  for (int i = 0; i < 1500; ++i) {
+    const double horizon = i % 3 == 0 ? kMax : g.logUniform(1e280, 1e308);
+    const double length = g.logUniform(1e-8, 10.0);
+    const Eigen::Vector2d w = g.direction() * (length / horizon);
+    auto shape = [&](const Eigen::Vector2d& center) {
+      const double major = std::max(length * g.logUniform(0.05, 2.0), 2.0 * kMinRadius);
+      return g.ellipse(center, major, std::min(1e3, major / kMinRadius));
+    };
+    const Ellipse a = shape(Eigen::Vector2d::Zero());
+    Ellipse b = shape(Eigen::Vector2d::Zero());
+    const double speed = std::hypot(w.x(), w.y());
+    const Eigen::Vector2d n(-w.y() / speed, w.x() / speed);
+    const double scale = g.uniform(-1.5, 1.5);
+    // w * horizon first: the time of closest approach may lie beyond DBL_MAX.
+    b.center = n * (scale * (halfWidthAcross(a, n) + halfWidthAcross(b, n))) -
+               (w * horizon) * g.uniform(0.3, 1.6);
+    // a at rest or moving at a subnormal velocity of its own (the sum stays exact).
+    const Eigen::Vector2d base = g.coin() ? Eigen::Vector2d(g.direction() * 1e-310) : Eigen::Vector2d(0, 0);
+    const Case c{a, b, {base, 0.0}, {base + w, 0.0}, horizon};
+    if (overlap(c.a, c.b)) continue;
+    check(c, report, 2000, nullptr, kTransversalTimeTolerance);
+  }
+  EXPECT_EQ(report.wrong, 0);
+  EXPECT_GE(report.contacts, 300);
+  EXPECT_GE(report.pairs - report.contacts, 300);
+}
+
 TEST(FirstContact, RefusesInvalidInputNamingTheField) {
   const Ellipse a{{0, 0}, 1, 1, 0};
   const Motion still{};
