@@ -274,6 +274,7 @@ FirstContact translationContact(const Ellipse& a, const Ellipse& b, const Eigen:
   // |w| itself, rounded to the subnormal grid, put the time off by up to 2^-1074 / |w| of itself
   // (6e-8 at 8e-317 m/s), and for a horizon near DBL_MAX the horizon enlarged against rounding
   // overflowed to inf: every entry past the bounding circles seemed within it (fuzzer finding).
+  // scaled_horizon is subnormal, so rounded, only where the path reaches less than 1e-307 m.
   const double scaled_horizon = std::ldexp(horizon, exponent);
   const double x0 = p0.dot(d);
   const double sigma = d.x() * p0.y() - d.y() * p0.x();  // n . p0, n = (-d.y, d.x)
@@ -289,7 +290,9 @@ FirstContact translationContact(const Ellipse& a, const Ellipse& b, const Eigen:
   const double enter = entryDistance(path, late * scaled_speed) / scaled_speed;
   if (enter > 0.0) {
     if (enter > late) return {};
-    return {true, enter < scaled_horizon ? std::ldexp(enter, -exponent) : horizon};
+    // Back to seconds only below the horizon, where it cannot overflow.
+    const double time = enter < scaled_horizon ? std::ldexp(enter, -exponent) : horizon;
+    return {true, std::min(time, horizon)};
   }
   // The path enters K at or before p0, yet overlap() said apart at t = 0: p0 is beyond the exit
   // (moving away) or on the rim within rounding. The exit is the reversed path's entry.
