@@ -1142,7 +1142,8 @@ TEST(FirstContact, SubnormalAndTinyVelocitiesOverHugeHorizonsMatchOracle) {
     b.center = n * (scale * (halfWidthAcross(a, n) + halfWidthAcross(b, n))) -
                (w * horizon) * g.uniform(0.3, 1.6);
     // a at rest or moving at a subnormal velocity of its own (the sum stays exact).
-    const Eigen::Vector2d base = g.coin() ? Eigen::Vector2d(g.direction() * 1e-310) : Eigen::Vector2d(0, 0);
+    const Eigen::Vector2d base =
+        g.coin() ? Eigen::Vector2d(g.direction() * 1e-310) : Eigen::Vector2d(0, 0);
     const Case c{a, b, {base, 0.0}, {base + w, 0.0}, horizon};
     if (overlap(c.a, c.b)) continue;
     check(c, report, 2000, nullptr, kTransversalTimeTolerance);
