@@ -546,6 +546,23 @@ bool drawNeedleFlatPass(ellipse_collision::test::RandomSource& rng, double ratio
   return p.pass.found;
 }
 
+/// firstContact() of a turning pass, checked valid and the same with the pair swapped.
+FirstContact firstContactBothWays(const TurningPass& p) {
+  EXPECT_EQ(invalidMotionReason(p.a, p.motion_a, p.b, p.motion_b, p.horizon), "") << p.text;
+  const FirstContact ours = firstContact(p.a, p.motion_a, p.b, p.motion_b, p.horizon);
+  EXPECT_TRUE(sameResult(ours, firstContact(p.b, p.motion_b, p.a, p.motion_a, p.horizon)))
+      << p.text;
+  return ours;
+}
+
+/// The rotating method on a turning pass as firstContact() sets it up, with its work counted.
+FirstContact rotatingContactOf(const TurningPass& p, detail::RotationWork* work) {
+  return detail::rotatingContact(
+      detail::rotatingPair(p.a, p.motion_a.velocity, Eigen::Vector2d::Zero(),
+                           p.motion_a.angular_velocity, p.b, p.motion_b),
+      p.horizon, work);
+}
+
 TEST(FirstContact, SpeckSlidingAlongATurningNeedleIsResolvedWithoutTheCap) {
   // Axis ratios 1e6 .. 1e12, 30 passes each at depths 1e-8, 1e-10, 1e-12 either side of
   // touching: every answer within 1e-9 of the horizon of the oracle's first contact, never
@@ -563,22 +580,7 @@ TEST(FirstContact, SpeckSlidingAlongATurningNeedleIsResolvedWithoutTheCap) {
         [ratio](ellipse_collision::test::RandomSource& rng, double target, TurningPass* out) {
           return drawNeedleFlatPass(rng, ratio, target, out);
         },
-        [](const TurningPass& p) {
-          EXPECT_EQ(invalidMotionReason(p.a, p.motion_a, p.b, p.motion_b, p.horizon), "")
-              << p.text;
-          const FirstContact ours = firstContact(p.a, p.motion_a, p.b, p.motion_b, p.horizon);
-          EXPECT_TRUE(
-              sameResult(ours, firstContact(p.b, p.motion_b, p.a, p.motion_a, p.horizon)))
-              << p.text;
-          return ours;
-        },
-        [](const TurningPass& p, detail::RotationWork* work) {
-          return detail::rotatingContact(
-              detail::rotatingPair(p.a, p.motion_a.velocity, Eigen::Vector2d::Zero(),
-                                   p.motion_a.angular_velocity, p.b, p.motion_b),
-              p.horizon, work);
-        },
-        30);
+        firstContactBothWays, rotatingContactOf, 30);
   }
 }
 
@@ -593,19 +595,7 @@ TEST(FirstContact, EccentricPairsGrazingWhileTurningAreFoundWithinTheResolution)
   GrazingTally tally("rotation: eccentric pairs grazing");
   checkGrazingPasses(
       tally, g, drawMotionPass,
-      [](const TurningPass& p) {
-        EXPECT_EQ(invalidMotionReason(p.a, p.motion_a, p.b, p.motion_b, p.horizon), "") << p.text;
-        const FirstContact ours = firstContact(p.a, p.motion_a, p.b, p.motion_b, p.horizon);
-        EXPECT_TRUE(sameResult(ours, firstContact(p.b, p.motion_b, p.a, p.motion_a, p.horizon)))
-            << p.text;
-        return ours;
-      },
-      [](const TurningPass& p, detail::RotationWork* work) {
-        return detail::rotatingContact(
-            detail::rotatingPair(p.a, p.motion_a.velocity, Eigen::Vector2d::Zero(),
-                                 p.motion_a.angular_velocity, p.b, p.motion_b),
-            p.horizon, work);
-      });
+      firstContactBothWays, rotatingContactOf);
 }
 
 TEST(FirstContact, ExtremeSizesAndFarCentresMatchOracle) {
