@@ -150,9 +150,10 @@ class PairCollector {
   /// Mover `i` against obstacle `k` of `index`: its culling columns and its prepared form read
   /// from the index, which built them once.
   void checkWithIndexedObstacle(std::size_t i, const IndexedObstacles& index, std::size_t k) {
-    addWithColumns(i, kObstacle, refOf(index.obstacles()[k]), &index.prepared()[k],
-                   index.centerX()[k], index.centerY()[k], index.boundingRadii()[k],
-                   index.inscribedRadii()[k]);
+    const EllipseBatch& batch = index.batch();
+    addWithColumns(i, kObstacle, refOf(index.obstacles()[k]), &batch.prepared(k),
+                   batch.centerX()[k], batch.centerY()[k], batch.boundingRadius()[k],
+                   batch.inscribedRadius()[k]);
   }
 
   /// Movers among themselves (query-link always, link-link with self collision): the pairs of

@@ -530,6 +530,7 @@ TEST(SceneBroadphase, IndexedObstaclesRefuseBadEntriesAndTheCheckSaysSo) {
                                   {"rock", EllipseRole::Obstacle, bad}});
   EXPECT_EQ(refused.error().rfind("obstacles[1] ('rock'): radius_x", 0), 0u) << refused.error();
   EXPECT_TRUE(refused.obstacles().empty());
+  EXPECT_EQ(refused.batch().size(), 0u);  // the crate before the rock kept nothing either
   const std::vector<NamedEllipse> arm = {{"arm", EllipseRole::Link, {{0, 0}, 1, 1, 0}}};
   SceneCheckResult result = checkMoversAgainst(arm, refused, SceneRules{});
   EXPECT_EQ(result.error.rfind("obstacles refused: obstacles[1] ('rock')", 0), 0u) << result.error;

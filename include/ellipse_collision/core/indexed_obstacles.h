@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include "ellipse_collision/core/batch_overlap.h"
 #include "ellipse_collision/core/broadphase.h"
 #include "ellipse_collision/core/prepared_ellipse.h"
 #include "ellipse_collision/core/scene_check.h"
@@ -14,8 +15,8 @@ namespace ellipse_collision::core {
 /// then costs in proportion to the movers and the obstacles near them (checkMoversAgainst()),
 /// not to all obstacles. The grid is a BoxGrid over the obstacles' boundingCircleBox()es, the
 /// very boxes checkScene() streams, so the pairs tested and the answer are the same bit for bit.
-/// Each obstacle is also prepared once here (PreparedEllipse) and its culling columns kept side
-/// by side (centre x, y, bounding and inscribed radius), so that a check culls its pairs straight
+/// Each obstacle is also prepared once here, in an EllipseBatch that keeps its culling columns
+/// side by side (centre x, y, bounding and inscribed radius), so that a check culls its pairs straight
 /// from the index and prepares no obstacle: 160 bytes per obstacle beyond the entries and the
 /// grid (doc/core_library.md).
 class IndexedObstacles {
@@ -29,26 +30,17 @@ class IndexedObstacles {
 
   const std::vector<NamedEllipse>& obstacles() const { return obstacles_; }
   const BoxGrid& grid() const { return grid_; }
-  /// obstacles()[k] prepared, built once with the index.
-  const std::vector<PreparedEllipse>& prepared() const { return prepared_; }
-  /// The columns the culling of a pair test reads, entry k for obstacles()[k]: centre x and y
-  /// [m], bounding and inscribed radius [m] (as prepared()[k] has them, bit for bit).
-  const std::vector<double>& centerX() const { return center_x_; }
-  const std::vector<double>& centerY() const { return center_y_; }
-  const std::vector<double>& boundingRadii() const { return bounding_; }
-  const std::vector<double>& inscribedRadii() const { return inscribed_; }
+  /// obstacles()[k]'s ellipse at k, prepared once with the index, with the culling columns the
+  /// pair tests read (centre x and y, bounding and inscribed radius).
+  const EllipseBatch& batch() const { return batch_; }
   /// Empty unless the obstacles were refused.
   const std::string& error() const { return error_; }
 
  private:
   std::vector<NamedEllipse> obstacles_;
-  std::string error_;  // before grid_: the grid's initialiser fills it
+  std::string error_;  // before grid_: the grid's initialiser fills them both
+  EllipseBatch batch_;
   BoxGrid grid_;
-  std::vector<PreparedEllipse> prepared_;
-  std::vector<double> center_x_;
-  std::vector<double> center_y_;
-  std::vector<double> bounding_;
-  std::vector<double> inscribed_;
 };
 
 /// checkValidatedScene() of the scene `movers` (queries and links) plus obstacles.obstacles(),
