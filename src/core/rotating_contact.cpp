@@ -52,9 +52,21 @@ namespace ellipse_collision::core::detail {
 // taken with care too (below). Fuzzer pairs, a disc by a needle 1.4e14 or 2e12 long to thin
 // and turning slowly, reached the 20,000-step cap at first-order steps (the direction between
 // the witness points was off along the needle, and M of the fixed direction 1.3e8 and 4.7e14
-// m/s^2); they now take 2 to 8 steps. No one direction turns with two needles that turn at
-// different rates: M_u keeps about (wa - wb)^2 times the smaller R^2 / r, and their steps still
-// grow with the axis ratio (about as its power 0.37; the cap from ratios of about 1e7).
+// m/s^2); they now take 2 to 8 steps.
+// Over the angles a step sweeps: no one direction turns with two needles that turn at different
+// rates, and with K = R^2 / r - r over all directions M_u kept about (wa - wb)^2 times the smaller
+// R^2 / r: their steps shrank with the axis ratio (about as its power -0.37, the cap from ratios
+// of about 1e7). But K is the worst of rho - h over every direction, while a step of length s
+// turns the direction against an ellipse by at most |omega_rel| s (omega_e for u fixed,
+// omega_e - omega_u for u turning): rho - h is then bounded over that arc of directions alone
+// (sweptCurvature()), R^2 / r only where the arc reaches the flat side's normal. A needle seen
+// near its tips curves as little as r^2 / R there. The bound holds only for steps within the
+// length s it was taken for (a cap), so the step is min(root, cap), the cap starting at twice the
+// step the curvatures at t alone would give and growing by 8 while it, not the root, holds the
+// step back; the bounds over all directions stay as a floor. Two needles of axis ratio 1e8
+// turning at rates 0.2..6 rad/s apart, touching tip to tip or tip to flat side, take 20 to 37
+// distance() calls on average through a grazing pass, as at ratio 1e2 (before: 10,000 to 15,000,
+// a half at the cap).
 // Approaching a transversal contact the root is a Newton step from the left (quadratic
 // convergence, never past the contact); through a grazing pass of gap g the steps stay about
 // sqrt(2 g / M) (a few steps for the whole pass instead of sqrt(size / g)); into an exact
@@ -78,6 +90,12 @@ namespace ellipse_collision::core::detail {
 // it is not trusted, and the steps are the plain D / V ones, stopped in the grazing band.
 namespace {
 
+// Where a unit u lies between an ellipse's tips and flat sides: |cos| and |sin| of its angle to
+// the long axis (sweptCurvature()).
+struct AxisShares {
+  double along_long, along_short;
+};
+
 // The separation along a fixed unit u at the current poses, its rates in time and in the angle of
 // u, with a bound on its rounding error.
 struct SeparationAlong {
@@ -88,6 +106,7 @@ struct SeparationAlong {
   // rounding of each dh/dtheta in units of eps (SupportRates).
   double centre_rate, across, dh_a, dh_b;
   double dh_a_spread, dh_b_spread;
+  AxisShares shares_a, shares_b;  // of u against a and b
 };
 
 // h and its derivatives along u. The rounding of the axis components ax, ay (~eps absolute)
@@ -97,6 +116,7 @@ struct SeparationAlong {
 struct SupportRates {
   double h, dh_dangle, curvature_radius;
   double reach, dh_spread;
+  AxisShares shares;
 };
 
 SupportRates supportRates(const Ellipse& e, const SinCos& trig, const Eigen::Vector2d& u) {
@@ -108,8 +128,12 @@ SupportRates supportRates(const Ellipse& e, const SinCos& trig, const Eigen::Vec
   // One division for the four quotients: each step evaluates this up to 16 times.
   const double inverse = 1.0 / h;
   // d(ax)/dangle = ay, d(ay)/dangle = -ax; turning u by phi is turning the shape by -phi.
-  return {h, (rx2 - ry2) * ax * ay * inverse, rx2 * ry2 * (inverse * inverse * inverse),
-          (rx2 * fx + ry2 * fy) * inverse, std::fabs(rx2 - ry2) * (fx + fy) * inverse};
+  return {h,
+          (rx2 - ry2) * ax * ay * inverse,
+          rx2 * ry2 * (inverse * inverse * inverse),
+          (rx2 * fx + ry2 * fy) * inverse,
+          std::fabs(rx2 - ry2) * (fx + fy) * inverse,
+          rx2 >= ry2 ? AxisShares{fx, fy} : AxisShares{fy, fx}};
 }
 
 SeparationAlong separationAlong(const SinCosPair& trig, const Ellipse& a, const Ellipse& b,
@@ -134,7 +158,9 @@ SeparationAlong separationAlong(const SinCosPair& trig, const Ellipse& a, const 
           sa.dh_dangle,
           sb.dh_dangle,
           sa.dh_spread,
-          sb.dh_spread};
+          sb.dh_spread,
+          sa.shares,
+          sb.shares};
 }
 
 // The distance's witness direction is accurate to ~1e-9 relative only down to gaps of ~1e-6 of
@@ -223,14 +249,20 @@ struct Separation {
   const Axes& eb = frame_of_a ? turned : own;
   struct Support {
     Long h, dh, rho, reach, spread;
+    AxisShares shares;
   };
   // As supportRates(), in long double.
   const auto support = [](const Axes& e, Long ux, Long uy) {
     const Long ax = ux * e.c + uy * e.s, ay = uy * e.c - ux * e.s;
     const Long h = std::sqrt(e.rx2 * ax * ax + e.ry2 * ay * ay);
     const Long fx = std::fabs(ax), fy = std::fabs(ay);
-    return Support{h, (e.rx2 - e.ry2) * ax * ay / h, e.rx2 * e.ry2 / (h * h * h),
-                   (e.rx2 * fx + e.ry2 * fy) / h, std::fabs(e.rx2 - e.ry2) * (fx + fy) / h};
+    const double along_x = static_cast<double>(fx), along_y = static_cast<double>(fy);
+    return Support{h,
+                   (e.rx2 - e.ry2) * ax * ay / h,
+                   e.rx2 * e.ry2 / (h * h * h),
+                   (e.rx2 * fx + e.ry2 * fy) / h,
+                   std::fabs(e.rx2 - e.ry2) * (fx + fy) / h,
+                   e.rx2 >= e.ry2 ? AxisShares{along_x, along_y} : AxisShares{along_y, along_x}};
   };
   // The rounding of the frame's angle moves the other centre by |p| times it, and that of the
   // other's angle its support point by its reach times it.
@@ -262,7 +294,9 @@ struct Separation {
               static_cast<double>(sa.dh),
               static_cast<double>(sb.dh),
               static_cast<double>(sa.spread),
-              static_cast<double>(sb.spread)};
+              static_cast<double>(sb.spread),
+              sa.shares,
+              sb.shares};
     }
     // A Newton step on the angle of u where f is concave in it, as in bestSeparation().
     const Long curvature = -value - sa.rho - sb.rho;
@@ -370,60 +404,148 @@ struct StepBounds {
   double centre_speed;    ///< V_p [m/s]
   double arc_curvature;   ///< |wa| |v_arc| [m/s^2]
   double sweep_a, sweep_b;  ///< K = R^2 / r - r of a and b, 0 for a circle [m]
+  // The radii of a and b, R >= r, for K over the directions a step sweeps (sweptCurvature()).
+  double big_a, small_a, big_b, small_b;
 };
 
-/// The second-order step along u turning at omega_u (the comment at the top), or 0 where it
-/// gives nothing. `value` is the separation along u less its rounding; the rate's own rounding is
-/// taken off. The step is held to L / V_p so that |p| stays below |p(t)| + L, L from |p(t)| up by
-/// factors of 8 while that limit, not the root, is what holds the step back; omega_u minimises M_u
-/// for each L.
+/// K = rho - h of an ellipse of radii big >= small (the comment at the top), bounded over the
+/// directions within `spread` [rad] of a unit u whose shares are `u`, instead of over all
+/// directions (`worst`, R^2 / r - r): rho - h = R^2 r^2 / h^3 - h falls as h grows, and h^2 =
+/// r^2 + (R^2 - r^2) sin^2(beta), beta the angle of the direction to the short axis, whose least
+/// over the spread is max(0, beta0 - spread) with sin(beta0 - spread) >= along_long (1 -
+/// spread^2 / 2) - along_short spread. A needle seen near its tips curves as r^2 / R there, and a
+/// step that sweeps only a small angle keeps its bound small, though a fixed direction or one
+/// turning with the other ellipse sweeps it. Rounding: the shares and the bound are widened by
+/// a few eps.
+double sweptCurvature(double big, double small, double worst, const AxisShares& u, double spread) {
+  constexpr double kEps = std::numeric_limits<double>::epsilon();
+  if (!(spread < 1.0) || small == big) return worst;
+  const double sine =
+      u.along_long * (1.0 - 0.5 * spread * spread) - u.along_short * spread - 4.0 * kEps;
+  if (!(sine > 0.0)) return worst;
+  const double h2 = small * small + (big * big - small * small) * (sine * sine);
+  const double h = std::sqrt(h2);
+  const double bound = (big * small) * (big * small) / (h2 * h) * (1.0 + 64.0 * kEps) -
+                       h * (1.0 - 64.0 * kEps);
+  return std::min(worst, std::max(0.0, bound));
+}
+
+/// The root of the second-order bound along u turning at the omega_u that minimises
+/// M_u = omega_u^2 P + 2 |omega_u| V_p + |wa| |v_arc| + (omega_u - wa)^2 K_a + (omega_u - wb)^2 K_b
+/// (the comment at the top), P = `farthest`, with K of each ellipse from
+/// `sweep_a(omega_u - wa)` and `sweep_b(omega_u - wb)`; omega_u is chosen with `weight_a` and
+/// `weight_b` in place of the K's. 0 where turning gives nothing. `value` is the separation along
+/// u less its rounding; the rate's own rounding is taken off.
+template <class SweepA, class SweepB>
+double turningRoot(const StepBounds& k, const SeparationAlong& s, double value, double wa,
+                   double wb, double centre_distance, double farthest, double weight_a,
+                   double weight_b, SweepA sweep_a, SweepB sweep_b) {
+  // M_u = A omega^2 - 2 B omega + 2 V_p |omega| + const, least at omega = (B -+ V_p) / A where
+  // |B| > V_p (else at 0, the fixed direction). omega - wa and omega - wb are formed without
+  // cancellation, and omega from the smaller of them, exactly the other being derived: an
+  // ulp of omega - wa times a needle's dh/dtheta near its flat side (~eps R^2 / r per ulp of
+  // the direction) would cost the rate more than the gap (one 1e14 long to thin stopped its
+  // steps at 2.4e-10 s 6e-19 m from a contact 6e-9 s ahead).
+  const double weighted = wa * weight_a + wb * weight_b;
+  if (!(std::fabs(weighted) > k.centre_speed)) return 0.0;
+  const double shift = std::copysign(k.centre_speed, weighted);
+  const double sum = farthest + weight_a + weight_b;
+  double da = ((wb - wa) * weight_b - wa * farthest - shift) / sum;
+  double db = ((wa - wb) * weight_a - wb * farthest - shift) / sum;
+  const bool from_a = std::fabs(da) <= std::fabs(db);
+  const double omega = from_a ? wa + da : wb + db;
+  (from_a ? db : da) = omega - (from_a ? wb : wa);
+  if (!(omega != 0.0 && std::isfinite(omega) && std::isfinite(da) && std::isfinite(db))) {
+    return 0.0;
+  }
+  const double curvature = omega * omega * farthest + 2.0 * std::fabs(omega) * k.centre_speed +
+                           k.arc_curvature + da * da * sweep_a(da) + db * db * sweep_b(db);
+  if (!(curvature >= std::numeric_limits<double>::min() &&
+        curvature <= std::numeric_limits<double>::max())) {
+    return 0.0;
+  }
+  // d/dt [u(t) . p(t) - h_a - h_b]: each h changes with the angle between u and its ellipse.
+  const double terms[] = {s.centre_rate, omega * s.across, da * s.dh_a, db * s.dh_b};
+  // The derived difference carries the rounding of omega too; u . p' and u_perp . p are
+  // rounded to eps of |p'| <= V_p and |p|.
+  double rate = 0.0,
+         size = std::fabs(da) * s.dh_a_spread + std::fabs(db) * s.dh_b_spread +
+                std::fabs(omega) * (std::fabs(from_a ? s.dh_b : s.dh_a) + centre_distance) +
+                k.centre_speed;
+  for (const double term : terms) rate += term, size += std::fabs(term);
+  rate -= 16.0 * std::numeric_limits<double>::epsilon() * size;
+  return quadraticStep(value, rate, curvature);
+}
+
+/// The second-order step along u turning, with the K's over all directions (no limit on the
+/// step from the angles): held to L / V_p so that |p| stays below |p(t)| + L, L from |p(t)| up by
+/// factors of 8 while that limit, not the root, is what holds the step back.
 double turningStep(const StepBounds& k, const SeparationAlong& s, double value, double wa,
                    double wb, double centre_distance) {
   constexpr double kInfinity = std::numeric_limits<double>::infinity();
-  const double weighted = wa * k.sweep_a + wb * k.sweep_b;
+  const auto worst_a = [&k](double) { return k.sweep_a; };
+  const auto worst_b = [&k](double) { return k.sweep_b; };
   double step = 0.0, reach = centre_distance;
   for (int i = 0; i < 4; ++i, reach *= 8.0) {
     const bool moves = k.centre_speed > 0.0;
     const double longest = moves ? reach / k.centre_speed : kInfinity;
     const double farthest = (centre_distance + (moves ? reach : 0.0)) * (1.0 + 1e-9);
-    // M_u = A omega^2 - 2 B omega + 2 V_p |omega| + const, least at omega = (B -+ V_p) / A where
-    // |B| > V_p (else at 0, the fixed direction). omega - wa and omega - wb are formed without
-    // cancellation, and omega from the smaller of them, exactly the other being derived: an
-    // ulp of omega - wa times a needle's dh/dtheta near its flat side (~eps R^2 / r per ulp of
-    // the direction) would cost the rate more than the gap (one 1e14 long to thin stopped its
-    // steps at 2.4e-10 s 6e-19 m from a contact 6e-9 s ahead).
-    if (!(std::fabs(weighted) > k.centre_speed)) return step;
-    const double shift = std::copysign(k.centre_speed, weighted);
-    const double sum = farthest + k.sweep_a + k.sweep_b;
-    double da = ((wb - wa) * k.sweep_b - wa * farthest - shift) / sum;
-    double db = ((wa - wb) * k.sweep_a - wb * farthest - shift) / sum;
-    const bool from_a = std::fabs(da) <= std::fabs(db);
-    const double omega = from_a ? wa + da : wb + db;
-    (from_a ? db : da) = omega - (from_a ? wb : wa);
-    if (!(omega != 0.0 && std::isfinite(omega) && std::isfinite(da) && std::isfinite(db))) {
-      return step;
-    }
-    const double curvature = omega * omega * farthest + 2.0 * std::fabs(omega) * k.centre_speed +
-                             k.arc_curvature + da * da * k.sweep_a + db * db * k.sweep_b;
-    if (!(curvature >= std::numeric_limits<double>::min() &&
-          curvature <= std::numeric_limits<double>::max())) {
-      return step;
-    }
-    // d/dt [u(t) . p(t) - h_a - h_b]: each h changes with the angle between u and its ellipse.
-    const double terms[] = {s.centre_rate, omega * s.across, da * s.dh_a, db * s.dh_b};
-    // The derived difference carries the rounding of omega too; u . p' and u_perp . p are
-    // rounded to eps of |p'| <= V_p and |p|.
-    double rate = 0.0,
-           size = std::fabs(da) * s.dh_a_spread + std::fabs(db) * s.dh_b_spread +
-                  std::fabs(omega) * (std::fabs(from_a ? s.dh_b : s.dh_a) + centre_distance) +
-                  k.centre_speed;
-    for (const double term : terms) rate += term, size += std::fabs(term);
-    rate -= 16.0 * std::numeric_limits<double>::epsilon() * size;
-    const double root = quadraticStep(value, rate, curvature);
+    const double root = turningRoot(k, s, value, wa, wb, centre_distance, farthest, k.sweep_a,
+                                    k.sweep_b, worst_a, worst_b);
+    if (root == 0.0) return step;
     step = std::max(step, std::min(root, longest));
     if (root <= longest) break;  // a larger L only lowers the root
   }
   return step;
+}
+
+/// Where the separation was taken: what the second-order steps need of the poses at t.
+struct StepContext {
+  double centre_distance;      ///< |p(t)|, raised by its rounding [m]
+  double margin_a, margin_b;   ///< the rounding of a's and b's angles at t [rad]
+  double remaining;            ///< horizon - t [s]
+};
+
+/// The larger second-order step within `cap` [s] (fixed and turning u), the K's bounded over the
+/// angles the step sweeps (sweptCurvature()) and P by |p(t)| + V_p cap: min(root, cap), or 0.
+/// With `instant` the K's and P are those at t alone: not a bound, only the guess of the cap.
+double sweptStep(const StepBounds& k, const SeparationAlong& s, double value, double wa,
+                 double wb, const StepContext& at, double cap, bool instant) {
+  const double reach = instant ? 0.0 : cap * (1.0 + 1e-12);
+  const auto sweep_a = [&](double rate) {
+    return sweptCurvature(k.big_a, k.small_a, k.sweep_a, s.shares_a,
+                          std::fabs(rate) * reach + at.margin_a);
+  };
+  const auto sweep_b = [&](double rate) {
+    return sweptCurvature(k.big_b, k.small_b, k.sweep_b, s.shares_b,
+                          std::fabs(rate) * reach + at.margin_b);
+  };
+  const double weight_a = sweep_a(wa), weight_b = sweep_b(wb);
+  const double fixed = k.arc_curvature + wa * wa * weight_a + wb * wb * weight_b;
+  double root = quadraticStep(value, s.rate, fixed);
+  const double farthest = (at.centre_distance + k.centre_speed * reach) * (1.0 + 1e-9);
+  root = std::max(root, turningRoot(k, s, value, wa, wb, at.centre_distance, farthest, weight_a,
+                                    weight_b, sweep_a, sweep_b));
+  return instant ? root : std::min(root, cap);
+}
+
+/// The second-order step of a separation: the largest of the bounds over all directions (fixed
+/// u and u turning) and of those over the angles a step sweeps, whose cap starts at twice the
+/// step that the bounds at t alone would give and grows by 8 while it, not the root, holds the
+/// step back.
+double secondOrderStep(const StepBounds& k, const SeparationAlong& s, double value, double wa,
+                       double wb, const StepContext& at) {
+  double step = std::max(quadraticStep(value, s.rate, k.curvature),
+                         turningStep(k, s, value, wa, wb, at.centre_distance));
+  double cap = std::min(at.remaining, 2.0 * std::max(step, sweptStep(k, s, value, wa, wb, at,
+                                                                     at.remaining, true)));
+  for (int i = 0; i < 4 && cap > step; ++i) {
+    const double swept = sweptStep(k, s, value, wa, wb, at, cap, false);
+    step = std::max(step, swept);
+    if (swept < cap || cap >= at.remaining) break;
+    cap = std::min(at.remaining, 8.0 * cap);
+  }
+  return kStepShrink * step;
 }
 
 /// The steps of rotatingContact(); kArc: the pair has an arc (RotatingPair::hasArc()), so that
@@ -449,11 +571,11 @@ FirstContact advance(const RotatingPair& p, const StepBounds& k, double horizon,
     if constexpr (kArc) moved += p.a_arc_velocity.norm() * t;
     return b.center.norm() + 4.0 * std::numeric_limits<double>::epsilon() * moved;
   };
-  // The larger second-order step of a separation, along u fixed and along u turning.
-  const auto secondOrderStep = [&](const SeparationAlong& s, double value, const Ellipse& b,
-                                   double t) {
-    return kStepShrink * std::max(quadraticStep(value, s.rate, k.curvature),
-                                  turningStep(k, s, value, p.wa, p.wb, centreDistance(b, t)));
+  // What the second-order steps need of the poses at t.
+  const auto contextAt = [&](const Ellipse& a, const Ellipse& b, double t) {
+    constexpr double kEps = std::numeric_limits<double>::epsilon();
+    return StepContext{centreDistance(b, t), 8.0 * kEps * (1.0 + std::fabs(a.angle)),
+                       8.0 * kEps * (1.0 + std::fabs(b.angle)), horizon - t};
   };
   const double resolution = kRotationResolution * horizon;
   double t = 0.0;
@@ -495,7 +617,9 @@ FirstContact advance(const RotatingPair& p, const StepBounds& k, double horizon,
       const double value = s.best.value - s.best.rounding;
       blurred = !(value > kPreciseBelow * s.best.rounding);
       last_direction = s.last_direction;
-      if (value > 0.0) step = std::max(step, secondOrderStep(s.best, value, b, t));
+      if (value > 0.0) {
+        step = std::max(step, secondOrderStep(k, s.best, value, p.wa, p.wb, contextAt(a, b, t)));
+      }
     }
     if (step < resolution) {
       const double probe = std::min(t + resolution, horizon);
@@ -505,7 +629,8 @@ FirstContact advance(const RotatingPair& p, const StepBounds& k, double horizon,
         const SeparationAlong precise =
             preciseSeparation(p, t, centreVelocity(t), last_direction, k.sweep_a >= k.sweep_b);
         if (precise.value > 0.0) {
-          step = std::max(step, secondOrderStep(precise, precise.value, b, t));
+          step = std::max(step, secondOrderStep(k, precise, precise.value, p.wa, p.wb,
+                                                contextAt(a, b, t)));
         }
       }
       if (step < resolution && c.distance <= k.graze) return {true, t};  // a tangency in the band
@@ -553,6 +678,8 @@ FirstContact rotatingContact(const RotatingPair& p, double horizon, RotationWork
   k.tiny_gap = kWitnessGap * (boundingRadius(p.a) + boundingRadius(p.b));
   k.sweep_a = sweepCurvature(p.a, 1.0);
   k.sweep_b = sweepCurvature(p.b, 1.0);
+  k.big_a = boundingRadius(p.a), k.small_a = inscribedRadius(p.a);
+  k.big_b = boundingRadius(p.b), k.small_b = inscribedRadius(p.b);
   return p.hasArc() ? advance<true>(p, k, horizon, until, done)
                     : advance<false>(p, k, horizon, until, done);
 }

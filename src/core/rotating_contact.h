@@ -80,10 +80,10 @@ RotatingPair segmentPair(const Ellipse& link_in_moving, const SegmentMotion& mot
 /// never later than the true first contact and, where the pair overlaps within this of it, no more
 /// than this earlier.
 inline constexpr double kRotationResolution = 2.5e-10;
-/// Safety cap on the steps; the tests and the benchmark count the pairs that reach it (none). Two
-/// needles turning at different rates can still reach it from axis ratios of about 1e7 (their
-/// steps grow about as the ratio to the power 0.37, rotating_contact.cpp); contact is then
-/// claimed where the steps stopped, never late.
+/// Safety cap on the steps; the tests and the benchmark count the pairs that reach it (none, up
+/// to axis ratios of 1e8 for two needles turning at different rates and 1e14 for a needle
+/// against a disc). A pair that reaches it is claimed in contact where the steps stopped, never
+/// late.
 inline constexpr int kMaxRotationSteps = 20000;
 /// A pair within this distance, relative to r_a + r_b, at a time where the steps cannot go on is
 /// at a tangency: reported in contact there (see rotating_contact.cpp).

@@ -11,8 +11,10 @@
 #include <cstring>
 #include <limits>
 #include <string>
+#include <utility>
 
 #include "ellipse_collision/core/first_contact.h"
+#include "ellipse_collision/core/distance.h"
 #include "ellipse_collision/core/overlap.h"
 #include "first_contact_oracle.h"
 #include "grazing_tally.h"
@@ -596,6 +598,67 @@ TEST(FirstContact, EccentricPairsGrazingWhileTurningAreFoundWithinTheResolution)
   checkGrazingPasses(
       tally, g, drawMotionPass,
       firstContactBothWays, rotatingContactOf);
+}
+
+TEST(FirstContact, TwoNeedlesTurningAtDifferentRatesAreResolvedWithoutTheCap) {
+  // Two needles of axis ratio 1e2, 1e5, 1e8 (the thinnest 2e-9 m), turning at rates
+  // 0.2 .. 6 rad/s apart, touching tip to tip or a flat side against a tip, 18 passes per ratio and
+  // kind at depths 1e-8, 1e-10, 1e-12 either side of touching (drawNeedlePairPass()).
+  const std::pair<NeedleContact, const char*> kinds[] = {{NeedleContact::kTips, "tips"},
+                                                         {NeedleContact::kFlatOfA, "flat of a"},
+                                                         {NeedleContact::kFlatOfB, "flat of b"}};
+  for (const double ratio : {1e2, 1e5, 1e8}) {
+    for (const auto& [contact, name] : kinds) {
+      Generator g(1320 + static_cast<int>(std::log10(ratio)) + 10 * static_cast<int>(contact));
+      char family[64];
+      std::snprintf(family, sizeof family, "rotation: needles 1e%d, %s",
+                    static_cast<int>(std::log10(ratio)), name);
+      GrazingTally tally(family);
+      checkGrazingPasses(
+          tally, g,
+          [ratio, contact = contact](ellipse_collision::test::RandomSource& rng, double target,
+                                     TurningPass* out) {
+            return drawNeedlePairPass(rng, ratio, contact, target, out);
+          },
+          firstContactBothWays, rotatingContactOf, 18);
+    }
+  }
+}
+
+TEST(FirstContact, TwoNeedlesParallelAtThePassStayBelowTheCap) {
+  // Both flat sides turned to face each other at the pass, turning at different rates: the
+  // needles cross like scissors, and the contact scale can dip more than once on a time scale of
+  // r / (R |wa - wb|), finer than the oracle's scan of 400 samples (its first contact came out
+  // up to 5e-3 of the horizon late on such passes). So the pair is placed touching at t_pass and
+  // its radii grown by 1e-8, 1e-10 or 1e-12, which makes it overlap there: contact must be
+  // found no later than t_pass, either way round. Or they are shrunk by as much, and the pass
+  // goes by a hair clear at t_pass (whatever it does elsewhere). No call may reach the step cap.
+  for (const double ratio : {1e2, 1e5, 1e8}) {
+    Generator g(1350 + static_cast<int>(std::log10(ratio)));
+    int most_calls = 0;
+    for (int i = 0; i < 60; ++i) {
+      TurningPass p;
+      const double t_pass = placeNeedlePair(g, ratio, NeedleContact::kFlats, &p);
+      const bool touching = (i / 3) % 2;
+      const double grow = touching ? 1.0 + kGrazingDepths[i % 3] : 1.0 - kGrazingDepths[i % 3];
+      for (Ellipse* e : {&p.a, &p.b}) e->radius_x *= grow, e->radius_y *= grow;
+      p.text += " radii times " + exactNumbers({grow});
+      const FirstContact got = firstContactBothWays(p);
+      EXPECT_TRUE(!touching || (got.contact && got.time <= t_pass))
+          << got.time << " after " << t_pass << ": " << p.text;
+      for (const bool swap : {false, true}) {
+        TurningPass q = p;
+        if (swap) std::swap(q.a, q.b), std::swap(q.motion_a, q.motion_b);
+        detail::RotationWork work;
+        const FirstContact direct = rotatingContactOf(q, &work);
+        EXPECT_TRUE(!touching || (direct.contact && direct.time <= t_pass)) << q.text;
+        EXPECT_FALSE(work.capped) << q.text;
+        most_calls = std::max(most_calls, work.distance_calls);
+      }
+    }
+    std::printf("[first_contact] needles 1e%d parallel at the pass: at most %d distance() calls\n",
+                static_cast<int>(std::log10(ratio)), most_calls);
+  }
 }
 
 TEST(FirstContact, ExtremeSizesAndFarCentresMatchOracle) {

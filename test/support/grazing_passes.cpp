@@ -145,4 +145,66 @@ bool drawSegmentPass(RandomSource& rng, double target, TurningPass* out) {
   return true;
 }
 
+double placeNeedlePair(RandomSource& rng, double ratio, NeedleContact contact, TurningPass* out) {
+  TurningPass& p = *out;
+  p = {};
+  const auto needle = [&rng, ratio](double major) {
+    const bool x_major = rng.coin();
+    return Ellipse{{0.0, 0.0}, x_major ? major : major / ratio, x_major ? major / ratio : major,
+                   rng.uniform(-kPi, kPi)};
+  };
+  p.a = needle(rng.logUniform(0.2, 1.0));
+  const double phi = rng.uniform(-kPi, kPi), range = rng.uniform(0.0, 100.0);
+  p.a.center = {range * std::cos(phi), range * std::sin(phi)};
+  p.b = needle(rng.logUniform(0.2, 1.0));
+  const double heading = rng.uniform(-kPi, kPi), speed = rng.uniform(0.0, 1.0);
+  const double wa = (rng.coin() ? 1.0 : -1.0) * rng.uniform(0.4, 3.0);
+  // b turns in either sense at a rate at least 0.2 rad/s away from a's.
+  double wb = wa;
+  while (std::fabs(wb - wa) < 0.2) wb = (rng.coin() ? 1.0 : -1.0) * rng.uniform(0.4, 3.0);
+  p.motion_a = {{speed * std::cos(heading), speed * std::sin(heading)}, wa};
+  p.motion_b = {p.motion_a.velocity + Eigen::Vector2d(rng.uniform(-0.5, 0.5),
+                                                      rng.uniform(-0.5, 0.5)),
+                wb};
+  p.horizon = 1.5;
+  // Touching at t_pass from across the relative velocity, as placeAndScale(), with the flat side
+  // of the chosen needle turned to face the other there.
+  const double t_pass = rng.uniform(0.3, 0.7) * p.horizon;
+  const Eigen::Vector2d relative = p.motion_b.velocity - p.motion_a.velocity;
+  const Eigen::Vector2d n =
+      Eigen::Vector2d(-relative.y(), relative.x()).normalized() * (rng.coin() ? 1.0 : -1.0);
+  // The angle at t = 0 that puts an ellipse's short axis along n at t_pass.
+  const auto facing = [&n, t_pass](const Ellipse& e, double omega) {
+    const double short_axis = std::atan2(n.y(), n.x()) + (e.radius_x > e.radius_y ? kPi / 2 : 0.0);
+    return short_axis - omega * t_pass;
+  };
+  const bool flats = contact == NeedleContact::kFlats;
+  if (contact == NeedleContact::kFlatOfA || flats) p.a.angle = facing(p.a, wa);
+  if (contact == NeedleContact::kFlatOfB || flats) p.b.angle = facing(p.b, wb);
+  Ellipse b_then = p.b;
+  b_then.angle += wb * t_pass;
+  p.b.center = touchingCentre(oraclePoseAt(p.a, oracleMotionOf(p.a, p.motion_a), t_pass), b_then,
+                              n) -
+               p.motion_b.velocity * t_pass;
+  p.text = "a " + linkText(p.a) + " moving " +
+           exactNumbers({p.motion_a.velocity.x(), p.motion_a.velocity.y(), wa}) + "; b " +
+           obstacleText(p);
+  return t_pass;
+}
+
+bool drawNeedlePairPass(RandomSource& rng, double ratio, NeedleContact contact, double target,
+                        TurningPass* out) {
+  TurningPass& p = *out;
+  placeNeedlePair(rng, ratio, contact, out);
+  p.pass = oracleGrazingPass(p.a, oracleMotionOf(p.a, p.motion_a), p.b,
+                             oracleMotionOf(p.b, p.motion_b), p.horizon, target);
+  if (!p.pass.found) return false;
+  // The radii were scaled.
+  p.text = "a " + linkText(p.a) + " moving " +
+           exactNumbers({p.motion_a.velocity.x(), p.motion_a.velocity.y(),
+                         p.motion_a.angular_velocity}) +
+           "; b " + obstacleText(p);
+  return true;
+}
+
 }  // namespace ellipse_collision::core::test

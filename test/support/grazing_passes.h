@@ -48,6 +48,22 @@ bool drawTwistPass(ellipse_collision::test::RandomSource& rng, double target, Tu
 /// turns by 0.4..3 rad over one geometric segment (duration 1).
 bool drawSegmentPass(ellipse_collision::test::RandomSource& rng, double target, TurningPass* out);
 
+/// Where two needles touch in drawNeedlePairPass(): tip to tip (the support points of a needle
+/// lie near its tips for all but a sliver of directions), the flat side of a or of b against
+/// the other's tip, or both flat sides facing (parallel at the pass: such passes can dip more
+/// than once, finer than oracleGrazingPass() scans; placeNeedlePair() only).
+enum class NeedleContact { kTips, kFlatOfA, kFlatOfB, kFlats };
+/// Two needles of axis ratio `ratio` (major radius 0.2..1 m, so that the thinnest stays above
+/// kMinRadius at ratio 1e8 once the pass is scaled), both translating and turning at
+/// 0.4..3 rad/s, in either sense and at rates at least 0.2 rad/s apart, touching as `contact`
+/// says at 0.3..0.7 of the horizon from across their relative velocity; horizon 1.5 s.
+bool drawNeedlePairPass(ellipse_collision::test::RandomSource& rng, double ratio,
+                        NeedleContact contact, double target, TurningPass* out);
+/// The same pair placed touching at t_pass, before any scaling (no oracle, `pass` empty):
+/// returns t_pass [s].
+double placeNeedlePair(ellipse_collision::test::RandomSource& rng, double ratio,
+                       NeedleContact contact, TurningPass* out);
+
 /// The quad oracle's motion of a link under `twist`: the velocity v + wz z x c of its centre at
 /// t = 0 turns with the frame (an arc about the instantaneous centre), and so does its angle.
 OracleRigidMotion oracleTwistMotion(const Ellipse& link, const Twist& twist);

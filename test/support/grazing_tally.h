@@ -35,9 +35,9 @@ class GrazingTally {
     std::printf(
         "[grazing] %-34s passes %3d (contact %3d), wrong %d, clear reported in contact "
         "%d (within the band), worst early %.3g, worst late %.3g (of the horizon), "
-        "at most %d distance() calls, at the cap %d\n",
-        family_, passes_, contacts_, wrong_, conservative_, worst_early_, worst_late_, most_calls_,
-        capped_);
+        "distance() calls %.1f mean, %d at most, at the cap %d\n",
+        family_, passes_, contacts_, wrong_, conservative_, worst_early_, worst_late_,
+        passes_ > 0 ? static_cast<double>(total_calls_) / passes_ : 0.0, most_calls_, capped_);
   }
 
   void check(const FirstContact& got, const OracleGrazingPass& pass, double depth, double horizon,
@@ -70,6 +70,7 @@ class GrazingTally {
   /// The work of the rotating path on the same pass: no call may reach the step cap.
   void work(int distance_calls, bool capped, const std::string& what) {
     most_calls_ = std::max(most_calls_, distance_calls);
+    total_calls_ += distance_calls;
     capped_ += capped;
     EXPECT_FALSE(capped) << "step cap reached: " << what;
   }
@@ -79,6 +80,7 @@ class GrazingTally {
  private:
   const char* family_;
   int passes_ = 0, contacts_ = 0, wrong_ = 0, conservative_ = 0, most_calls_ = 0, capped_ = 0;
+  long total_calls_ = 0;
   double worst_early_ = 0.0, worst_late_ = 0.0;
 };
 
