@@ -17,7 +17,8 @@
 // how early or late it answers against the oracle; and the same for turning passes from head-on
 // to grazing 1e-12 deep (compareTurningPasses()) of each caller of the rotating method:
 // firstContact(), twistContact() (a link's centre on an arc) and segmentContact() (an offset
-// link's centre on a line plus an arc).
+// link's centre on a line plus an arc), and firstContact() on two needles of axis ratio 1e8
+// turning at different rates (drawNeedlePairPass(): tip to tip, tip to flat side).
 //
 // Extra flag: --pairs=N (default 5000; --pairs=64 for a smoke run, which also shrinks the
 // rotating mix to 28 pairs and the turning passes to 14 per caller).
@@ -361,12 +362,19 @@ void compareRotation(int mixed, int grazing, double min_seconds) {
 // conservative advancement it replaced (reference_methods.h), timed in alternating rounds.
 constexpr double kPassDepths[] = {0.5, 1e-2, 1e-4, 1e-6, 1e-8, 1e-10, 1e-12};
 
-enum class PassKind { kMotion, kTwist, kSegment };
+enum class PassKind { kMotion, kTwist, kSegment, kNeedles };
+
+// The needles' axis ratio; their contacts go tip to tip, flat of a, flat of b in turn.
+constexpr double kNeedleRatio = 1e8;
 
 std::vector<test::TurningPass> makePasses(PassKind kind, int per_depth) {
-  ellipse_collision::test::RandomSource rng(kind == PassKind::kMotion  ? 31
-                                            : kind == PassKind::kTwist ? 32
-                                                                       : 33);
+  ellipse_collision::test::RandomSource rng(kind == PassKind::kMotion    ? 31
+                                            : kind == PassKind::kTwist   ? 32
+                                            : kind == PassKind::kSegment ? 33
+                                                                         : 34);
+  const test::NeedleContact contacts[] = {test::NeedleContact::kTips,
+                                          test::NeedleContact::kFlatOfA,
+                                          test::NeedleContact::kFlatOfB};
   std::vector<test::TurningPass> passes;
   for (const double depth : kPassDepths) {
     for (int i = 0; i < 2 * per_depth; ++i) {
@@ -374,9 +382,12 @@ std::vector<test::TurningPass> makePasses(PassKind kind, int per_depth) {
       test::TurningPass p;
       bool found = false;
       while (!found) {
-        found = kind == PassKind::kMotion  ? test::drawMotionPass(rng, target, &p)
-                : kind == PassKind::kTwist ? test::drawTwistPass(rng, target, &p)
-                                           : test::drawSegmentPass(rng, target, &p);
+        found = kind == PassKind::kMotion    ? test::drawMotionPass(rng, target, &p)
+                : kind == PassKind::kTwist   ? test::drawTwistPass(rng, target, &p)
+                : kind == PassKind::kSegment ? test::drawSegmentPass(rng, target, &p)
+                                             : test::drawNeedlePairPass(rng, kNeedleRatio,
+                                                                        contacts[passes.size() % 3],
+                                                                        target, &p);
       }
       passes.push_back(p);
     }
@@ -389,7 +400,7 @@ FirstContact newAnswer(PassKind kind, const test::TurningPass& p, detail::Rotati
   if (work) {
     // The same pass through the rotating path directly (the passes are apart at t = 0).
     const detail::RotatingPair pair =
-        kind == PassKind::kMotion
+        kind == PassKind::kMotion || kind == PassKind::kNeedles
             ? detail::rotatingPair(p.a, p.motion_a.velocity, Eigen::Vector2d::Zero(),
                                    p.motion_a.angular_velocity, p.b, p.motion_b)
         : kind == PassKind::kTwist ? detail::twistPair(p.a, p.twist, p.b, p.motion_b)
@@ -398,6 +409,7 @@ FirstContact newAnswer(PassKind kind, const test::TurningPass& p, detail::Rotati
   }
   switch (kind) {
     case PassKind::kMotion:
+    case PassKind::kNeedles:
       return firstContact(p.a, p.motion_a, p.b, p.motion_b, p.horizon);
     case PassKind::kTwist:
       return twistContact(p.a, p.twist, p.b, p.motion_b, p.horizon);
@@ -410,6 +422,7 @@ FirstContact newAnswer(PassKind kind, const test::TurningPass& p, detail::Rotati
 FirstContact plainAnswer(PassKind kind, const test::TurningPass& p, int* calls) {
   switch (kind) {
     case PassKind::kMotion:
+    case PassKind::kNeedles:
       return plainAdvancementFirstContact(p.a, p.motion_a, p.b, p.motion_b, p.horizon, calls);
     case PassKind::kTwist:
       return plainAdvancementTwistContact(p.a, p.twist, p.b, p.motion_b, p.horizon, calls);
@@ -573,5 +586,8 @@ int main(int argc, char** argv) {
   compareTurningPasses(PassKind::kSegment,
                        "Offset links along a turning path segment (segmentContact())", per_depth,
                        min_seconds);
+  compareTurningPasses(PassKind::kNeedles,
+                       "Two needles of axis ratio 1e8 turning at different rates (firstContact())",
+                       per_depth, min_seconds);
   return 0;
 }
