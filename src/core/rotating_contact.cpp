@@ -512,13 +512,17 @@ struct StepContext {
 double sweptStep(const StepBounds& k, const SeparationAlong& s, double value, double wa,
                  double wb, const StepContext& at, double cap, bool instant) {
   const double reach = instant ? 0.0 : cap * (1.0 + 1e-12);
+  // A rate against an ellipse (omega_u - omega_e) is off by the rounding of omega_u, which lies
+  // between 0, wa and wb (the minimiser of a sum of convex terms centred there).
+  const double rate_rounding = 4.0 * std::numeric_limits<double>::epsilon() *
+                               (std::fabs(wa) + std::fabs(wb));
   const auto sweep_a = [&](double rate) {
     return sweptCurvature(k.big_a, k.small_a, k.sweep_a, s.shares_a,
-                          std::fabs(rate) * reach + at.margin_a);
+                          (std::fabs(rate) + rate_rounding) * reach + at.margin_a);
   };
   const auto sweep_b = [&](double rate) {
     return sweptCurvature(k.big_b, k.small_b, k.sweep_b, s.shares_b,
-                          std::fabs(rate) * reach + at.margin_b);
+                          (std::fabs(rate) + rate_rounding) * reach + at.margin_b);
   };
   const double weight_a = sweep_a(wa), weight_b = sweep_b(wb);
   const double fixed = k.arc_curvature + wa * wa * weight_a + wb * wb * weight_b;
