@@ -148,9 +148,14 @@ SeparationAlong separationAlong(const SinCosPair& trig, const Ellipse& a, const 
   const double value = along - sa.h - sb.h;
   // h'' = rho - h for a support function of the normal angle, so f'' = -f - rho_a - rho_b.
   const double centre_rate = u.dot(centre_velocity);
+  // The poses' angles are rounded to eps of their size, which moves each support point by its
+  // reach times that: a pose whose angle is far from 0 turns by whole ulps (one of 6.9e274 rad
+  // did not turn at all, while the rates below had it turn; a step passed a contact).
   return {value,
           centre_rate - wa * sa.dh_dangle - wb * sb.dh_dangle,
-          16.0 * kEps * (std::fabs(along) + sa.reach + sb.reach),
+          16.0 * kEps *
+              (std::fabs(along) + sa.reach * (1.0 + std::fabs(a.angle)) +
+               sb.reach * (1.0 + std::fabs(b.angle))),
           across + sa.dh_dangle + sb.dh_dangle,
           -value - sa.curvature_radius - sb.curvature_radius,
           centre_rate,

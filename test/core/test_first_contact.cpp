@@ -661,6 +661,38 @@ TEST(FirstContact, TwoNeedlesParallelAtThePassStayBelowTheCap) {
   }
 }
 
+TEST(FirstContact, APoseAngleFarFromZeroIsNeverLate) {
+  // fuzz_first_contact finding (test/fuzz_corpus/fuzz_first_contact/huge-angle-turning): a's
+  // angle -6.9e274 rad, whose double poses do not turn at all (an ulp of it is 1e259 rad),
+  // while the steps' rates had a turn. Once the curvature was bounded over the swept angles the
+  // steps grew and passed the contact: 0.2112 s, where the poses overlap from before 0.2109.
+  // The separation's rounding allowance now holds the angles' rounding (eps of their size times
+  // each support point's reach).
+  const Ellipse a{{2.6075092568427325e-310, 0.0}, 1.0, 0.20000000000000001,
+                  -6.9244620785013907e+274};
+  const Motion ma{{0.50011968612670898, 0.0}, 0.50011968612670898};
+  const Ellipse b{{2.0000014975667, 0.0}, 1.0000003986060619, 0.30036573130644528, 0.0};
+  const Motion mb{{-2.0, 0.0}, -1.0};
+  const FirstContact got = firstContact(a, ma, b, mb, 3.0);
+  // The first of 3,000 samples at which the poses, turned as double arithmetic turns them,
+  // overlap.
+  double first_overlap = 3.0;
+  for (int k = 1; k <= 3000; ++k) {
+    const double t = 1e-3 * k;
+    Ellipse x = a, y = b;
+    x.center += ma.velocity * t, x.angle += ma.angular_velocity * t;
+    y.center += mb.velocity * t, y.angle += mb.angular_velocity * t;
+    if (overlap(x, y)) {
+      first_overlap = t;
+      break;
+    }
+  }
+  EXPECT_LT(first_overlap, 0.211);
+  EXPECT_TRUE(got.contact);
+  EXPECT_LE(got.time, first_overlap);
+  EXPECT_TRUE(sameResult(got, firstContact(b, mb, a, ma, 3.0)));
+}
+
 TEST(FirstContact, ExtremeSizesAndFarCentresMatchOracle) {
   Generator g(1309);
   Report report("sizes 1e-4..1e4, 1e6 out");
