@@ -72,7 +72,7 @@ namespace ellipse_collision::core::detail {
 // sqrt(2 g / M) (a few steps for the whole pass instead of sqrt(size / g)); into an exact
 // tangency they shrink geometrically. f is evaluated in double with a rounding allowance of
 // 16 eps of its terms (each h counted as its support point's distance from the centre,
-// SupportRates); a pass within ~1e-14 of the radii of touching leaves nothing of f above
+// SupportRates, times 1 + |angle| of its pose, whose rounding turns it); a pass within ~1e-14 of the radii of touching leaves nothing of f above
 // that allowance, and where the steps would then stop short of a contact f is evaluated again in
 // long double (64-bit significand), where the allowance is 2048 times smaller: a contact grazed
 // 1e-12 deep is crossed at ~1e-7 m/s, and the double allowance alone stopped the steps up to
@@ -343,6 +343,11 @@ constexpr double kPreciseBelow = 64.0;
 /// The positive root of value + rate s - curvature s^2 / 2 (value > 0, curvature > 0; a curvature
 /// of 0 gives the linear root, or infinity).
 double quadraticStep(double value, double rate, double curvature) {
+  // A curvature of 0 (a swept bound over a needle's tips, a pair with no turn) is the linear
+  // bound, without dividing by it.
+  if (!(curvature > 0.0)) {
+    return rate < 0.0 ? value / -rate : std::numeric_limits<double>::infinity();
+  }
   const double root = std::sqrt(rate * rate + 2.0 * curvature * value);
   // Each form where it has no cancellation.
   return rate > 0.0 ? (rate + root) / curvature : 2.0 * value / (root - rate);
