@@ -86,7 +86,10 @@ for _ in $(seq 200); do
   if ! kill -0 "${run_pid}" 2>/dev/null; then stopped=0; break; fi
   sleep 0.2
 done
-check "Ctrl-C stops the demo" "${stopped}" "run.sh still alive 40 s after SIGINT"
+check "Ctrl-C stops the demo" "${stopped}" "run.sh still alive 40 s after SIGINT; still running:
+$(ps -o pid=,stat=,etime=,args= -g "${run_pid}" 2>/dev/null | cut -c1-160)
+run.sh log:
+$(tail -n 30 "${out}/run.log")"
 run_pid=""
 
 # rviz's harmless media_export look-up (README) prints two lines; anything else is shown.
