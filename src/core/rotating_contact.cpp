@@ -42,44 +42,44 @@ namespace ellipse_collision::core::detail {
 // 2 omega_u u_perp . p' + u . p'', so
 //   f'' >= -M_u,  M_u = omega_u^2 P + 2 |omega_u| V_p + |wa| |v_arc|
 //                     + (omega_u - wa)^2 (R_a^2 / r_a - r_a) + (omega_u - wb)^2 (R_b^2 / r_b - r_b),
-// P a bound of |p| over the step: |p(t)| + V_p s, held below |p(t)| + L by steps no longer than
-// L / V_p (L = |p(t)| 8^k, the first k whose root is below L / V_p). omega_u minimises M_u (a
-// convex quadratic plus 2 V_p |omega_u|): for a turning needle against a disc it is about the
-// needle's own rate, and M_u drops from omega^2 R^2 / r to about omega^2 |p| + 2 |omega| V_p,
-// free of the axis ratio. f' there is u . p' + omega_u u_perp . p + (omega_u - wa) dh_a/dtheta_a
-// + (omega_u - wb) dh_b/dtheta_b, less its rounding. The step is the largest of the three roots
-// (first order, fixed u, turning u); each is certified. The witness direction of a needle is
-// taken with care too (below). Fuzzer pairs, a disc by a needle 1.4e14 or 2e12 long to thin
-// and turning slowly, reached the 20,000-step cap at first-order steps (the direction between
-// the witness points was off along the needle, and M of the fixed direction 1.3e8 and 4.7e14
-// m/s^2); they now take 2 to 8 steps.
+// P a bound of |p| over the step: |p(t)| + V_p s, with s held to a cap (below). omega_u minimises
+// M_u (a convex quadratic plus 2 V_p |omega_u|): for a turning needle against a disc it is about
+// the needle's own rate, and M_u drops from omega^2 R^2 / r to about omega^2 |p| + 2 |omega| V_p,
+// free of the axis ratio. f' there is u . p' + omega_u u_perp . p + (omega_u - wa) dh_a/dtheta_a +
+// (omega_u - wb) dh_b/dtheta_b, less its rounding. The step is the largest of the three roots
+// (first order, fixed u, turning u); each is certified. The witness direction of a needle is taken
+// with care too (below). Fuzzer pairs, a disc by a needle 1.4e14 or 2e12 long to thin and turning
+// slowly, reached the 20,000-step cap at first-order steps (the direction between the witness
+// points was off along the needle, and M of the fixed direction 1.3e8 and 4.7e14 m/s^2); they now
+// take 2 to 8 steps.
 // Over the angles a step sweeps: no one direction turns with two needles that turn at different
 // rates, and with K = R^2 / r - r over all directions M_u kept about (wa - wb)^2 times the smaller
-// R^2 / r: their steps shrank with the axis ratio (about as its power -0.37, the cap from ratios
-// of about 1e7). But K is the worst of rho - h over every direction, while a step of length s
-// turns the direction against an ellipse by at most |omega_rel| s (omega_e for u fixed,
-// omega_e - omega_u for u turning): rho - h is then bounded over that arc of directions alone
-// (sweptCurvature()), R^2 / r only where the arc reaches the flat side's normal. A needle seen
-// near its tips curves as little as r^2 / R there. The bound holds only for steps within the
-// length s it was taken for (a cap), so the step is min(root, cap), the cap starting at twice the
-// step the curvatures at t alone would give and growing by 8 while it, not the root, holds the
-// step back; the bounds over all directions stay as a floor. Two needles of axis ratio 1e8
-// turning at rates 0.2..6 rad/s apart, touching tip to tip or tip to flat side, take 20 to 37
-// distance() calls on average through a grazing pass, as at ratio 1e2 (before: 10,000 to 15,000,
-// a half at the cap).
-// Approaching a transversal contact the root is a Newton step from the left (quadratic
-// convergence, never past the contact); through a grazing pass of gap g the steps stay about
-// sqrt(2 g / M) (a few steps for the whole pass instead of sqrt(size / g)); into an exact
-// tangency they shrink geometrically. f is evaluated in double with a rounding allowance of
-// 16 eps of its terms (each h counted as its support point's distance from the centre,
-// SupportRates, times 1 + |angle| of its pose, whose rounding turns it); a pass within ~1e-14 of the radii of touching leaves nothing of f above
-// that allowance, and where the steps would then stop short of a contact f is evaluated again in
-// long double (64-bit significand), where the allowance is 2048 times smaller: a contact grazed
-// 1e-12 deep is crossed at ~1e-7 m/s, and the double allowance alone stopped the steps up to
-// ~6e-8 of the horizon before it. Below gaps of 1e-10 of the radii the witness points' rounding
-// can turn, or reverse, the direction between them: a's rim normal at its point is taken; where
-// the direction gives a separation below half the distance, the rim normals at both witness
-// points are tried too (a needle's witness point can lie far along its flat side).
+// R^2 / r: their steps shrank with the axis ratio (about as its power -0.37, the cap from ratios of
+// about 1e7). But K is the worst of rho - h over every direction, while a step of length s turns
+// the direction against an ellipse by at most |omega_rel| s (omega_e for u fixed, omega_e - omega_u
+// for u turning): rho - h is then bounded over that arc of directions alone (sweptCurvature()),
+// R^2 / r only where the arc reaches the flat side's normal. A needle seen near its tips curves as
+// little as r^2 / R there. The bound holds only for steps within the length s it was taken for (a
+// cap), so the step is min(root, cap), the cap starting at twice the step the curvatures at t alone
+// would give and growing by 8 while it, not the root, holds the step back; the fixed direction's
+// bound over all directions stays as a floor (the turning direction's over all directions gave no
+// longer steps once the swept one was taken, and cost 2-8 % of the time). Two needles of axis ratio
+// 1e8 turning at rates 0.2..6 rad/s apart, touching tip to tip or tip to flat side, take 20 to 37
+// distance() calls on average through a grazing pass, as at ratio 1e2 (before: 10,000 to 15,000, a
+// half at the cap).
+// Approaching a transversal contact the root is a Newton step from the left (quadratic convergence,
+// never past the contact); through a grazing pass of gap g the steps stay about sqrt(2 g / M) (a
+// few steps for the whole pass instead of sqrt(size / g)); into an exact tangency they shrink
+// geometrically. f is evaluated in double with a rounding allowance of 16 eps of its terms (each h
+// counted as its support point's distance from the centre, SupportRates, times 1 + |angle| of its
+// pose, whose rounding turns it); a pass within ~1e-14 of the radii of touching leaves nothing of f
+// above that allowance, and where the steps would then stop short of a contact f is evaluated again
+// in long double (64-bit significand), where the allowance is 2048 times smaller: a contact grazed
+// 1e-12 deep is crossed at ~1e-7 m/s, and the double allowance alone stopped the steps up to ~6e-8
+// of the horizon before it. Below gaps of 1e-10 of the radii the witness points' rounding can turn,
+// or reverse, the direction between them: a's rim normal at its point is taken; where the direction
+// gives a separation below half the distance, the rim normals at both witness points are tried too
+// (a needle's witness point can lie far along its flat side).
 // Stopping: once a step is below the resolution (kRotationResolution * horizon), overlap() one
 // resolution ahead; if the pair overlaps there, the first contact lies within the resolution
 // after t and t is the answer (never late, at most one resolution early). If not and the distance
@@ -102,7 +102,7 @@ struct SeparationAlong {
   double value, rate, rounding;
   double slope, curvature;  // d/dphi, d2/dphi2 of the value, phi the angle of u
   // The parts of the rate: u . p', (u turned +90 deg) . p, and dh/dtheta of a and b (theta the
-  // ellipse's angle), for the rate in a turning direction (turningStep()), with what bounds the
+  // ellipse's angle), for the rate in a turning direction (turningRoot()), with what bounds the
   // rounding of each dh/dtheta in units of eps (SupportRates).
   double centre_rate, across, dh_a, dh_b;
   double dh_a_spread, dh_b_spread;
@@ -410,7 +410,7 @@ struct StepBounds {
   bool second_order;
   double graze;     ///< the grazing band [m]
   double tiny_gap;  ///< below it the witness direction is a's normal [m]
-  // The turning direction's bound (turningStep()):
+  // The turning direction's bound (turningRoot()):
   double centre_speed;    ///< V_p [m/s]
   double arc_curvature;   ///< |wa| |v_arc| [m/s^2]
   double sweep_a, sweep_b;  ///< K = R^2 / r - r of a and b, 0 for a circle [m]
@@ -487,28 +487,6 @@ double turningRoot(const StepBounds& k, const SeparationAlong& s, double value, 
   return quadraticStep(value, rate, curvature);
 }
 
-/// The second-order step along u turning, with the K's over all directions (no limit on the
-/// step from the angles): held to L / V_p so that |p| stays below |p(t)| + L, L from |p(t)| up by
-/// factors of 8 while that limit, not the root, is what holds the step back.
-double turningStep(const StepBounds& k, const SeparationAlong& s, double value, double wa,
-                   double wb, double centre_distance) {
-  constexpr double kInfinity = std::numeric_limits<double>::infinity();
-  const auto worst_a = [&k](double) { return k.sweep_a; };
-  const auto worst_b = [&k](double) { return k.sweep_b; };
-  double step = 0.0, reach = centre_distance;
-  for (int i = 0; i < 4; ++i, reach *= 8.0) {
-    const bool moves = k.centre_speed > 0.0;
-    const double longest = moves ? reach / k.centre_speed : kInfinity;
-    const double farthest = (centre_distance + (moves ? reach : 0.0)) * (1.0 + 1e-9);
-    const double root = turningRoot(k, s, value, wa, wb, centre_distance, farthest, k.sweep_a,
-                                    k.sweep_b, worst_a, worst_b);
-    if (root == 0.0) return step;
-    step = std::max(step, std::min(root, longest));
-    if (root <= longest) break;  // a larger L only lowers the root
-  }
-  return step;
-}
-
 /// Where the separation was taken: what the second-order steps need of the poses at t.
 struct StepContext {
   double centre_distance;      ///< |p(t)|, raised by its rounding [m]
@@ -543,14 +521,13 @@ double sweptStep(const StepBounds& k, const SeparationAlong& s, double value, do
   return instant ? root : std::min(root, cap);
 }
 
-/// The second-order step of a separation: the largest of the bounds over all directions (fixed
-/// u and u turning) and of those over the angles a step sweeps, whose cap starts at twice the
-/// step that the bounds at t alone would give and grows by 8 while it, not the root, holds the
-/// step back.
+/// The second-order step of a separation: the larger of the fixed direction's bound over all
+/// directions and of the bounds over the angles a step sweeps (fixed and turning u), whose cap
+/// starts at twice the step that the bounds at t alone would give and grows by 8 while it, not
+/// the root, holds the step back.
 double secondOrderStep(const StepBounds& k, const SeparationAlong& s, double value, double wa,
                        double wb, const StepContext& at) {
-  double step = std::max(quadraticStep(value, s.rate, k.curvature),
-                         turningStep(k, s, value, wa, wb, at.centre_distance));
+  double step = quadraticStep(value, s.rate, k.curvature);
   double cap = std::min(at.remaining, 2.0 * std::max(step, sweptStep(k, s, value, wa, wb, at,
                                                                      at.remaining, true)));
   for (int i = 0; i < 4 && cap > step; ++i) {
