@@ -31,19 +31,30 @@ Eigen::Vector2d touchingCentre(const Ellipse& a_at_t, const Ellipse& b_at_t,
   return a_at_t.center + n * (support(a_at_t) + support(b_at_t));
 }
 
+/// A unit across the relative velocity `relative`, to either side.
+Eigen::Vector2d acrossVelocity(RandomSource& rng, const Eigen::Vector2d& relative) {
+  return Eigen::Vector2d(-relative.y(), relative.x()).normalized() * (rng.coin() ? 1.0 : -1.0);
+}
+
+/// Moves `out->b` (moving by `out->motion_b`) so that it touches `out->a` (moving by `motion_a`)
+/// at t_pass from the unit direction `n`.
+void placeTouching(const OracleRigidMotion& motion_a, double t_pass, const Eigen::Vector2d& n,
+                   TurningPass* out) {
+  const Motion& mb = out->motion_b;
+  Ellipse b_then = out->b;
+  b_then.angle += mb.angular_velocity * t_pass;
+  out->b.center =
+      touchingCentre(oraclePoseAt(out->a, motion_a, t_pass), b_then, n) - mb.velocity * t_pass;
+}
+
 /// Places `out->b` against `out->a` (moving by `motion_a`) at 0.3..0.7 of the horizon, from
 /// across their relative velocity there, and makes the pass pass at `target`.
 bool placeAndScale(RandomSource& rng, const OracleRigidMotion& motion_a, double target,
                    TurningPass* out) {
   const double t_pass = rng.uniform(0.3, 0.7) * out->horizon;
   const Motion& mb = out->motion_b;
-  const Eigen::Vector2d relative = mb.velocity - oracleVelocityAt(motion_a, t_pass);
-  const Eigen::Vector2d n =
-      Eigen::Vector2d(-relative.y(), relative.x()).normalized() * (rng.coin() ? 1.0 : -1.0);
-  Ellipse b_then = out->b;
-  b_then.angle += mb.angular_velocity * t_pass;
-  out->b.center =
-      touchingCentre(oraclePoseAt(out->a, motion_a, t_pass), b_then, n) - mb.velocity * t_pass;
+  placeTouching(motion_a, t_pass,
+                acrossVelocity(rng, mb.velocity - oracleVelocityAt(motion_a, t_pass)), out);
   out->pass = oracleGrazingPass(out->a, motion_a, out->b, oracleMotionOf(out->b, mb),
                                 out->horizon, target);
   return out->pass.found;
@@ -57,6 +68,14 @@ std::string obstacleText(const TurningPass& p) {
 
 std::string linkText(const Ellipse& e) {
   return exactNumbers({e.center.x(), e.center.y(), e.radius_x, e.radius_y, e.angle});
+}
+
+/// The numbers of a pass of two ellipses that translate and turn about their centres.
+std::string motionPassText(const TurningPass& p) {
+  return "a " + linkText(p.a) + " moving " +
+         exactNumbers({p.motion_a.velocity.x(), p.motion_a.velocity.y(),
+                       p.motion_a.angular_velocity}) +
+         "; b " + obstacleText(p);
 }
 
 /// A link offset 0.2..1.5 m from its frame's origin, major radius 0.1..1 m.
@@ -105,10 +124,7 @@ bool drawMotionPass(RandomSource& rng, double target, TurningPass* out) {
   p.motion_b.velocity += p.motion_a.velocity;
   p.horizon = 1.5;
   if (!placeAndScale(rng, oracleMotionOf(p.a, p.motion_a), target, out)) return false;
-  p.text = "a " + linkText(p.a) + " moving " +
-           exactNumbers({p.motion_a.velocity.x(), p.motion_a.velocity.y(),
-                         p.motion_a.angular_velocity}) +
-           "; b " + obstacleText(p);
+  p.text = motionPassText(p);
   return true;
 }
 
@@ -170,9 +186,7 @@ double placeNeedlePair(RandomSource& rng, double ratio, NeedleContact contact, T
   // Touching at t_pass from across the relative velocity, as placeAndScale(), with the flat side
   // of the chosen needle turned to face the other there.
   const double t_pass = rng.uniform(0.3, 0.7) * p.horizon;
-  const Eigen::Vector2d relative = p.motion_b.velocity - p.motion_a.velocity;
-  const Eigen::Vector2d n =
-      Eigen::Vector2d(-relative.y(), relative.x()).normalized() * (rng.coin() ? 1.0 : -1.0);
+  const Eigen::Vector2d n = acrossVelocity(rng, p.motion_b.velocity - p.motion_a.velocity);
   // The angle at t = 0 that puts an ellipse's short axis along n at t_pass.
   const auto facing = [&n, t_pass](const Ellipse& e, double omega) {
     const double short_axis = std::atan2(n.y(), n.x()) + (e.radius_x > e.radius_y ? kPi / 2 : 0.0);
@@ -181,14 +195,8 @@ double placeNeedlePair(RandomSource& rng, double ratio, NeedleContact contact, T
   const bool flats = contact == NeedleContact::kFlats;
   if (contact == NeedleContact::kFlatOfA || flats) p.a.angle = facing(p.a, wa);
   if (contact == NeedleContact::kFlatOfB || flats) p.b.angle = facing(p.b, wb);
-  Ellipse b_then = p.b;
-  b_then.angle += wb * t_pass;
-  p.b.center = touchingCentre(oraclePoseAt(p.a, oracleMotionOf(p.a, p.motion_a), t_pass), b_then,
-                              n) -
-               p.motion_b.velocity * t_pass;
-  p.text = "a " + linkText(p.a) + " moving " +
-           exactNumbers({p.motion_a.velocity.x(), p.motion_a.velocity.y(), wa}) + "; b " +
-           obstacleText(p);
+  placeTouching(oracleMotionOf(p.a, p.motion_a), t_pass, n, out);
+  p.text = motionPassText(p);
   return t_pass;
 }
 
@@ -199,11 +207,7 @@ bool drawNeedlePairPass(RandomSource& rng, double ratio, NeedleContact contact, 
   p.pass = oracleGrazingPass(p.a, oracleMotionOf(p.a, p.motion_a), p.b,
                              oracleMotionOf(p.b, p.motion_b), p.horizon, target);
   if (!p.pass.found) return false;
-  // The radii were scaled.
-  p.text = "a " + linkText(p.a) + " moving " +
-           exactNumbers({p.motion_a.velocity.x(), p.motion_a.velocity.y(),
-                         p.motion_a.angular_velocity}) +
-           "; b " + obstacleText(p);
+  p.text = motionPassText(p);  // with the scaled radii
   return true;
 }
 
