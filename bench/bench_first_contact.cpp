@@ -41,12 +41,13 @@
 #include "ellipse_collision/core/first_contact.h"
 #include "ellipse_collision/core/overlap.h"
 #include "ellipse_collision/core/path_motion.h"
-#include "ellipse_collision/core/velocity_gate.h"
+#include "ellipse_collision/core/twist_motion.h"
 #include "first_contact_oracle.h"
 #include "grazing_passes.h"
 #include "random_source.h"
 #include "reference_methods.h"
 #include "rotating_contact.h"
+#include "twist_motion_detail.h"
 
 namespace ellipse_collision::core::bench {
 namespace {

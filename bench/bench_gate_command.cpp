@@ -1,6 +1,6 @@
 // Command in to command out without ROS: app::CollisionMonitor::gateCommand(), what the node does
 // in its ~cmd_vel_in callback (a full check at the latest transforms through the placement cache,
-// the robot placed, core::gateCommand()), for 20 links on a base that moves every command among N
+// the robot placed, core::gateTwist()), for 20 links on a base that moves every command among N
 // standing obstacles. Two floors: `warehouse`, one obstacle per 4 m^2 (a 200 m x 200 m floor at
 // 10,000), a few within the robot's reach; `crowded`, all N on 20 m x 20 m as bench_run_check
 // places them (25 per m^2 at 10,000: hundreds within reach, every command slowed). The command

@@ -1,4 +1,4 @@
-// The velocity gate (core::gateCommand()) for one command: a 20-link base (ringBase()) driving at
+// The velocity gate (core::gateTwist()) for one command: a 20-link base (ringBase()) driving at
 // 0.5 m/s and turning at 0.3 rad/s, horizon 3 s, among 1,000 / 10,000 / 100,000 obstacles scattered
 // at one per 4 m^2 (so a few are within reach whatever their number), all standing or 10 % moving;
 // or, `crowded`, all on 20 m x 20 m (25 per m^2 at 10,000: hundreds within reach of each link).
@@ -63,7 +63,7 @@ void BM_GateCommand(benchmark::State& state) {
   GateResult result;
   for (auto _ : state) {
     const auto start = std::chrono::steady_clock::now();
-    result = gateCommand(scene, twist, settings);
+    result = gateTwist(scene, twist, settings);
     const auto end = std::chrono::steady_clock::now();
     benchmark::DoNotOptimize(result);
     times.push_back(std::chrono::duration<double, std::micro>(end - start).count());

@@ -9,7 +9,7 @@
 #include "ellipse_collision/core/ellipse.h"
 #include "ellipse_collision/core/first_contact.h"
 #include "ellipse_collision/core/path_motion.h"
-#include "ellipse_collision/core/velocity_gate.h"
+#include "ellipse_collision/core/twist_motion.h"
 
 namespace ellipse_collision::core::bench {
 

@@ -15,6 +15,7 @@ set(ELLIPSE_COLLISION_CORE_SOURCES
   src/core/enclosing_ellipse.cpp
   src/core/first_contact.cpp
   src/core/frame_projection.cpp
+  src/core/gate_action.cpp
   src/core/indexed_obstacles.cpp
   src/core/median_partition.cpp
   src/core/motion_line_parser.cpp
@@ -38,6 +39,7 @@ set(ELLIPSE_COLLISION_CORE_SOURCES
   src/core/scene_nearest.cpp
   src/core/shape_hull.cpp
   src/core/shape_outline.cpp
+  src/core/twist_motion.cpp
   src/core/unique_names.cpp
   src/core/velocity_gate.cpp)
 
@@ -45,11 +47,12 @@ set(ELLIPSE_COLLISION_APP_SOURCES
   src/app/check_health.cpp
   src/app/collision_check.cpp
   src/app/collision_monitor.cpp
-  src/app/command_gate.cpp
   src/app/contact_prediction.cpp
   src/app/ellipse_registry.cpp
   src/app/ellipse_spec.cpp
   src/app/field_error.cpp
+  src/app/gate_config.cpp
+  src/app/gate_marker_layout.cpp
   src/app/joint_chain.cpp
   src/app/link_fitting.cpp
   src/app/marker_layout.cpp
@@ -66,4 +69,6 @@ set(ELLIPSE_COLLISION_APP_SOURCES
   src/app/standing_obstacles.cpp
   src/app/stored_placement.cpp
   src/app/transform_lookup.cpp
-  src/app/tunable_settings.cpp)
+  src/app/tunable_settings.cpp
+  src/app/velocity_command.cpp
+  src/app/velocity_gate.cpp)

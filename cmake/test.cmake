@@ -65,13 +65,22 @@ ellipse_collision_add_gtest(test_path_check LIBRARIES ellipse_collision_core qua
 # src/core for rotating_contact.h: the grazing test counts the rotating path's work.
 target_include_directories(test_path_check PRIVATE ${PROJECT_SOURCE_DIR}/src/core)
 
-# The velocity gate: poses and first contacts under a twist against quad-precision arcs, the
-# translation oracle and dense overlap() scans; the gate's decisions against the same scans.
-ellipse_collision_add_gtest(test_velocity_gate LIBRARIES ellipse_collision_core quadmath SOURCES
-  test/core/test_velocity_gate.cpp
+# Motion under a twist: poses and first contacts against quad-precision arcs, the translation
+# oracle and dense overlap() scans.
+ellipse_collision_add_gtest(test_twist_motion LIBRARIES ellipse_collision_core quadmath SOURCES
+  test/core/test_twist_motion.cpp
+  test/support/twist_oracle.cpp
   test/support/first_contact_oracle.cpp
   test/support/grazing_passes.cpp)
 # src/core for rotating_contact.h: the grazing test counts the rotating path's work.
+target_include_directories(test_twist_motion PRIVATE ${PROJECT_SOURCE_DIR}/src/core)
+
+# The velocity gate: its decisions against dense overlap() scans of the exact arcs.
+ellipse_collision_add_gtest(test_velocity_gate LIBRARIES ellipse_collision_core quadmath SOURCES
+  test/core/test_velocity_gate.cpp
+  test/support/twist_oracle.cpp
+  test/support/first_contact_oracle.cpp
+  test/support/grazing_passes.cpp)
 target_include_directories(test_velocity_gate PRIVATE ${PROJECT_SOURCE_DIR}/src/core)
 
 # Ellipsoids: the shadow against projected surface samples, the minimum-volume fit against
@@ -99,7 +108,8 @@ ellipse_collision_add_gtest(test_app LIBRARIES ellipse_collision_app quadmath SO
   test/app/test_field_validation.cpp
   test/app/test_collision_check.cpp
   test/app/test_collision_monitor.cpp
-  test/app/test_command_gate.cpp
+  test/app/test_velocity_gate.cpp
+  test/app/test_gate_marker_layout.cpp
   test/app/test_obstacle_store.cpp
   test/app/test_obstacle_store_writer.cpp
   test/app/test_check_health.cpp

@@ -30,13 +30,12 @@ std::string findInvalidStored(const StoredObstacles& stored, double global_paddi
 }  // namespace
 
 CollisionMonitor::CollisionMonitor(MonitorSettings settings, const std::vector<EllipseSpec>& links,
-                                   const std::vector<EllipseSpec>& obstacles,
-                                   RegistryLimits limits, const StoreOptions& store,
-                                   MonitorHooks hooks)
+                                   const std::vector<EllipseSpec>& obstacles, RegistryLimits limits,
+                                   const StoreOptions& store, MonitorHooks hooks)
     : settings_(std::move(settings)),
       hooks_(std::move(hooks)),
       registry_(links, obstacles, limits),
-      gate_enabled_(settings_.gate.enabled) {
+      gate_(settings_.gate) {
   std::string refusal;
   const std::uint64_t service_revision = restore(store, refusal);
   persistence_ = std::make_unique<ObstaclePersistence>(store.path, store.session,
@@ -258,122 +257,41 @@ std::string CollisionMonitor::replaceTopicObstacles(const std::vector<EllipseSpe
 GateDecision CollisionMonitor::gateCommand(const VelocityCommand& command, double now_s,
                                            const TransformLookup& latest,
                                            const TransformAtLookup& at) {
-  gate_heard_ = true;
-  last_command_s_ = now_s;
-  timeout_sent_ = false;
-  GateDecision decision = decideGate(command, now_s, latest, at);
-  recordGate(decision);
-  return decision;
-}
-
-void CollisionMonitor::recordGate(const GateDecision& decision) {
-  last_gate_action_ = toString(decision.action);
-  last_gate_reason_ = decision.reason;
-  const GateAction action = decision.action;
-  if (action == GateAction::Stop || action == GateAction::Incomplete ||
-      action == GateAction::Timeout) {
-    ++gate_stops_;
-  }
-  if (action == GateAction::Slow) ++gate_slowdowns_;
-}
-
-std::optional<GateDecision> CollisionMonitor::gateWatchdog(double now_s) {
-  const double timeout = settings_.gate.cmd_vel_timeout_s;
-  if (!gate_enabled_ || !(timeout > 0.0)) return std::nullopt;
-  if (!gate_heard_ || now_s < last_command_s_) {  // the first call, or time jumped back
-    gate_heard_ = true;
-    last_command_s_ = now_s;
-    return std::nullopt;
-  }
-  if (timeout_sent_ || now_s - last_command_s_ < timeout) return std::nullopt;
-  timeout_sent_ = true;
-  GateDecision decision = stoppedDecision(
-      GateAction::Timeout, VelocityCommand(),
-      "stopped: no command on ~cmd_vel_in within cmd_vel_timeout " + core::formatNumber(timeout) +
-          " s of the last one");
-  recordGate(decision);
-  return decision;
-}
-
-GateDecision CollisionMonitor::decideGate(const VelocityCommand& command, double now_s,
-                                          const TransformLookup& latest,
-                                          const TransformAtLookup& at) {
-  const GateConfig& gate = settings_.gate;
-  if (!gate_enabled_) {
-    GateDecision decision;
-    decision.action = GateAction::Disabled;
-    decision.scale = 1.0;
-    decision.input = command;
-    decision.output = command;
-    decision.reason = "the gate is disabled: commands pass unchanged";
-    return decision;
-  }
-  if (const auto invalid = findInvalidCommand(command, gate)) {
-    return stoppedDecision(GateAction::Stop, command,
-                           "stopped: refused command: " + describeFieldError("cmd_vel", *invalid));
-  }
+  if (auto screened = gate_.screen(command, now_s)) return std::move(*screened);
   const CheckOutcome& outcome = fullCheck(now_s, latest, at, StatePublishing::OnChange, "");
-  if (!outcome.error.empty()) {
-    return stoppedDecision(GateAction::Stop, command, "stopped: the check failed: " + outcome.error);
-  }
-  const auto known = outcome.frames.find(gate.robot_frame);
-  const FrameTransform robot =
-      known != outcome.frames.end() ? known->second : latest(gate.robot_frame);
-  const Freshness freshness{settings_.check.max_transform_age_s, now_s};
-  if (!robot.ok || isStale(robot, freshness)) {
-    // Without the robot's own pose there is nothing to gate on, whatever on_incomplete says.
-    return stoppedDecision(
-        GateAction::Incomplete, command,
-        "stopped: robot_frame '" + gate.robot_frame + "': " +
-            (robot.ok ? "its transform to '" + settings_.check.fixed_frame + "' is " +
-                            core::formatNumber(ageOf(robot, freshness)) +
-                            " s old, older than max_transform_age " +
-                            core::formatNumber(freshness.max_age_s) + " s"
-                      : "no transform to '" + settings_.check.fixed_frame + "' (" + robot.error +
-                            ")"));
-  }
-  std::vector<std::string> missing;
-  if (!outcome.unavailable_frames.empty()) {
-    missing.push_back("frames unavailable: " + joinText(outcome.unavailable_frames, ", "));
-  }
-  if (!outcome.stale_frames.empty()) {
-    missing.push_back("frames stale: " + joinText(outcome.stale_frames, ", "));
-  }
-  if (!outcome.complete && missing.empty()) {
-    missing.push_back("skipped: " + joinText(outcome.skipped, "; "));
-  }
+  return gate_.decide(command, gateView(outcome, now_s, latest));
+}
+
+GateView CollisionMonitor::gateView(const CheckOutcome& outcome, double now_s,
+                                    const TransformLookup& latest) const {
+  GateView view;
+  view.outcome = &outcome;
+  view.fixed_frame = settings_.check.fixed_frame;
+  view.freshness = Freshness{settings_.check.max_transform_age_s, now_s};
+  view.allowed = &settings_.check.rules.allowed;
+  if (!outcome.error.empty()) return view;
+  const std::string& robot_frame = gate_.config().robot_frame;
+  const auto known = outcome.frames.find(robot_frame);
+  view.robot = known != outcome.frames.end() ? known->second : latest(robot_frame);
   if (topic_obstacles_expired_) {
-    missing.push_back("obstacles from ~obstacles dropped, older than obstacle_timeout " +
-                      core::formatNumber(settings_.obstacle_timeout_s) + " s");
+    view.silent_sources.push_back(
+        "obstacles from ~obstacles dropped, older than obstacle_timeout " +
+        core::formatNumber(settings_.obstacle_timeout_s) + " s");
   }
-  if (!missing.empty() && gate.on_incomplete == OnIncomplete::Stop) {
-    return stoppedDecision(GateAction::Incomplete, command,
-                           "stopped: incomplete data (on_incomplete: stop): " +
-                               joinText(missing, "; "));
-  }
-  // The robot frame's pose in the fixed frame's plane (its heading from its x axis).
-  const Eigen::Isometry3d& pose = robot.fixed_from_frame;
-  PlanarPose planar;
-  planar.position = pose.translation().head<2>();
-  planar.yaw = std::atan2(pose.linear()(1, 0), pose.linear()(0, 0));
   // Obstacles move by their own velocity only: one attached to a moving frame (a scan in the
   // sensor's frame) is where that frame puts it now and does not travel with the robot.
   const core::Scene& placed = outcome.placed;
-  std::vector<core::Motion> motions(placed.size());
+  view.obstacle_motions.resize(placed.size());
   const std::set<std::string>& moving = registry_.movingNames();
   for (std::size_t i = 0; i < placed.size() && !moving.empty(); ++i) {
     if (placed.role(i) != core::EllipseRole::Obstacle || !moving.count(placed.name(i))) continue;
     const EllipseSpec& spec = registry_.entries().at(placed.name(i)).spec;
     const auto frame = outcome.frames.find(spec.frame_id);
-    if (frame != outcome.frames.end()) motions[i] = ownMotion(spec, frame->second.fixed_from_frame);
+    if (frame != outcome.frames.end()) {
+      view.obstacle_motions[i] = ownMotion(spec, frame->second.fixed_from_frame);
+    }
   }
-  GateDecision decision =
-      decideOnScene(command, placed, motions, planar, settings_.check.rules.allowed, gate);
-  if (!missing.empty()) {
-    decision.reason += " (incomplete data, passed by on_incomplete: pass: " +
-                       joinText(missing, "; ") + ")";
-  }
-  return decision;
+  return view;
 }
 
 CollisionMonitor::Health CollisionMonitor::health(double now_s) const {
@@ -411,10 +329,7 @@ CollisionMonitor::Health CollisionMonitor::health(double now_s) const {
                                                 : core::formatNumber(outcome.predicted.front().time));
   values.emplace_back("predicted contacts", std::to_string(outcome.predicted.size()));
   values.emplace_back("prediction notes", joinText(outcome.prediction_notes, "; "));
-  values.emplace_back("gate", !gate_enabled_ ? "disabled" : last_gate_action_);
-  values.emplace_back("gate reason", last_gate_reason_);
-  values.emplace_back("gate stops", std::to_string(gate_stops_));
-  values.emplace_back("gate slow-downs", std::to_string(gate_slowdowns_));
+  for (auto& value : gate_.healthValues()) values.push_back(std::move(value));
   return report;
 }
 
@@ -426,16 +341,15 @@ TunableSettings CollisionMonitor::tunable() const {
   tunable.prediction_horizon_s = settings_.prediction_horizon_s;
   tunable.max_transform_age_s = settings_.check.max_transform_age_s;
   tunable.obstacle_timeout_s = settings_.obstacle_timeout_s;
-  tunable.gate = settings_.gate;
-  tunable.gate.enabled = gate_enabled_;
+  tunable.gate = gate_.config();
   return tunable;
 }
 
 std::optional<FieldError> CollisionMonitor::retune(const TunableSettings& tunable) {
   if (auto invalid = findInvalidTunable(tunable)) return invalid;
-  if (tunable.gate.robot_frame != settings_.gate.robot_frame) {
+  if (tunable.gate.robot_frame != gate_.config().robot_frame) {
     return FieldError{"gate/robot_frame",
-                      "'" + settings_.gate.robot_frame + "' (set at start-up only)",
+                      "'" + gate_.config().robot_frame + "' (set at start-up only)",
                       "'" + tunable.gate.robot_frame + "'"};
   }
   for (const auto& [name, stored] : registry_.entries()) {
@@ -452,8 +366,7 @@ std::optional<FieldError> CollisionMonitor::retune(const TunableSettings& tunabl
   settings_.prediction_horizon_s = tunable.prediction_horizon_s;
   settings_.check.max_transform_age_s = tunable.max_transform_age_s;
   settings_.obstacle_timeout_s = tunable.obstacle_timeout_s;
-  settings_.gate = tunable.gate;
-  gate_enabled_ = tunable.gate.enabled;
+  gate_.configure(tunable.gate);
   return std::nullopt;
 }
 

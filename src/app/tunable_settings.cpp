@@ -2,6 +2,9 @@
 
 #include <array>
 #include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include "ellipse_collision/core/ellipse.h"
@@ -23,21 +26,46 @@ std::optional<FieldError> findOutsideSettingRange(const std::string& key, double
   return outside;
 }
 
+namespace {
+
+constexpr double kUnbounded = std::numeric_limits<double>::infinity();
+
+const std::array<SettingRange, 9> kSettingRanges{{
+    {"rate", kMinRateHz, kMaxRateHz, true},
+    {"prediction_horizon", 0.0, kMaxPredictionHorizonS, false},
+    {"tf_timeout", 0.0, kMaxDurationS, false},
+    {"padding", 0.0, core::kMaxRadius, false},
+    {"warning_distance", 0.0, kUnbounded, false},
+    {"max_transform_age", 0.0, kMaxDurationS, false},
+    {"obstacle_timeout", 0.0, kMaxDurationS, false},
+    {"obstacle_store_period", 0.0, kMaxDurationS, false},
+    {"marker_refresh_period", 0.0, kMaxDurationS, false},
+}};
+
+}  // namespace
+
+const SettingRange& settingRange(const std::string& key) {
+  for (const SettingRange& range : kSettingRanges) {
+    if (key == range.key) return range;
+  }
+  throw std::invalid_argument("settingRange: no parameter '" + key + "'");
+}
+
+std::optional<FieldError> findOutsideSettingRange(const std::string& key, double value) {
+  const SettingRange& range = settingRange(key);
+  if (range.max == kUnbounded) return findNegativeSetting(key, value);
+  return findOutsideSettingRange(key, value, range.min, range.max, range.zero_allowed);
+}
+
 std::optional<FieldError> findInvalidTunable(const TunableSettings& s) {
-  if (auto e = findOutsideSettingRange("prediction_horizon", s.prediction_horizon_s, 0.0,
-                                       kMaxPredictionHorizonS)) {
-    return e;
-  }
-  if (auto e = findOutsideSettingRange("rate", s.rate_hz, kMinRateHz, kMaxRateHz, true)) return e;
-  if (auto e = findOutsideSettingRange("padding", s.padding_m, 0.0, core::kMaxRadius)) return e;
-  if (auto e = findNegativeSetting("warning_distance", s.warning_distance_m)) return e;
-  if (auto e = findOutsideSettingRange("max_transform_age", s.max_transform_age_s, 0.0,
-                                       kMaxDurationS)) {
-    return e;
-  }
-  if (auto e = findOutsideSettingRange("obstacle_timeout", s.obstacle_timeout_s, 0.0,
-                                       kMaxDurationS)) {
-    return e;
+  const std::pair<const char*, double> values[] = {{"prediction_horizon", s.prediction_horizon_s},
+                                                   {"rate", s.rate_hz},
+                                                   {"padding", s.padding_m},
+                                                   {"warning_distance", s.warning_distance_m},
+                                                   {"max_transform_age", s.max_transform_age_s},
+                                                   {"obstacle_timeout", s.obstacle_timeout_s}};
+  for (const auto& [key, value] : values) {
+    if (auto e = findOutsideSettingRange(key, value)) return e;
   }
   return findInvalidGateSetting(s.gate);
 }

@@ -9,7 +9,6 @@
 
 namespace ellipse_collision::core {
 struct SegmentMotion;
-struct Twist;
 }  // namespace ellipse_collision::core
 
 namespace ellipse_collision::core::detail {
@@ -65,11 +64,6 @@ struct RotatingPair {
 RotatingPair rotatingPair(const Ellipse& a, const Eigen::Vector2d& a_velocity,
                           const Eigen::Vector2d& a_arc_velocity, double wa, const Ellipse& b,
                           const Motion& motion_b);
-
-/// twistContact()'s pair for a turning frame (wz != 0): the link's centre on an arc about the
-/// instantaneous centre (defined in velocity_gate.cpp).
-RotatingPair twistPair(const Ellipse& link, const Twist& twist, const Ellipse& obstacle,
-                       const Motion& obstacle_motion);
 
 /// segmentContact()'s pair for an offset link of a turning frame: its centre on the line plus an
 /// arc about the frame's origin (defined in path_motion.cpp).

@@ -12,8 +12,8 @@
 #include "ellipse_collision/core/number_format.h"
 #include "ellipse_collision/core/overlap.h"
 #include "ellipse_collision/core/unique_names.h"
-#include "arc_motion.h"
 #include "rotating_contact.h"
+#include "twist_motion_detail.h"
 
 namespace ellipse_collision::core {
 namespace {
@@ -37,8 +37,6 @@ std::string readable(double value) {
   std::snprintf(text, sizeof text, "%.4g", value);
   return formatNumber(std::strtod(text, nullptr));
 }
-
-Eigen::Vector2d linear(const Twist& twist) { return {twist.vx, twist.vy}; }
 
 /// Velocity of the robot-fixed point `p` (in the robot frame at t = 0) at t = 0: v + wz z x p.
 Eigen::Vector2d pointVelocity(const Twist& twist, const Eigen::Vector2d& p) {
@@ -102,50 +100,18 @@ double widened(double bound, double coordinate) {
   return bound * (1.0 + kReachWidening) + 1e-12 * coordinate;
 }
 
+/// A violation in the core's words: "stop_time = 2 must be within [0, 1.5] (at most
+/// time_before_collision)".
 std::string settingsReason(const GateSettings& s) {
-  const std::pair<const char*, double> fields[] = {
-      {"horizon", s.horizon},
-      {"time_before_collision", s.time_before_collision},
-      {"stop_time", s.stop_time},
-      {"margin", s.margin},
-      {"resolution", s.resolution}};
-  for (const auto& [name, value] : fields) {
-    if (!std::isfinite(value))
-      return std::string(name) + " = " + formatNumber(value) + " must be finite";
-  }
-  const auto order = [](const char* a, double va, const char* b, double vb) {
-    return std::string(a) + " = " + formatNumber(va) + " must be <= " + b + " = " +
-           formatNumber(vb);
-  };
-  if (!(s.horizon > 0.0)) return "horizon = " + formatNumber(s.horizon) + " must be > 0";
-  if (s.stop_time < 0.0) return "stop_time = " + formatNumber(s.stop_time) + " must be >= 0";
-  if (s.stop_time > s.time_before_collision) {
-    return order("stop_time", s.stop_time, "time_before_collision", s.time_before_collision);
-  }
-  if (s.time_before_collision > s.horizon) {
-    return order("time_before_collision", s.time_before_collision, "horizon", s.horizon);
-  }
-  if (!(s.margin >= 0.0 && s.margin <= kMaxCoordinate)) {
-    return "margin = " + formatNumber(s.margin) + " is outside [0, " +
-           formatNumber(kMaxCoordinate) + "] m";
-  }
-  if (!(s.resolution > 0.0 && s.resolution <= 1.0)) {
-    return "resolution = " + formatNumber(s.resolution) + " is outside (0, 1]";
-  }
-  return {};
+  const auto violation = findInvalidGateSettings(s);
+  if (!violation) return {};
+  const GateSettingViolation& v = *violation;
+  return std::string(v.field) + " = " + formatNumber(v.value) + " must be within " +
+         (v.min_excluded ? "(" : "[") + formatNumber(v.min) + ", " + formatNumber(v.max) + "]" +
+         (v.max_field ? std::string(" (at most ") + v.max_field + ")" : std::string());
 }
 
-std::string linkReachReason(const Ellipse& link, const Twist& twist, double horizon) {
-  const double reach = link.center.norm() + boundingRadius(link) + linear(twist).norm() * horizon;
-  if (!(reach <= kMaxCoordinate)) {
-    return "reaches " + formatNumber(reach) +
-           " m from the origin within horizon = " + formatNumber(horizon) + " s, beyond " +
-           formatNumber(kMaxCoordinate) + " m";
-  }
-  return {};
-}
-
-/// Everything gateCommand() checks on every call (no work per obstacle).
+/// Everything gateTwist() checks on every call (no work per obstacle).
 std::string cheapGateReason(const PathScene& scene, const Twist& twist, const GateSettings& s) {
   if (std::string r = settingsReason(s); !r.empty()) return "settings: " + r;
   if (std::string r = invalidTwistReason(twist, s.horizon); !r.empty()) return r;
@@ -157,7 +123,7 @@ std::string cheapGateReason(const PathScene& scene, const Twist& twist, const Ga
     if (std::string r = invalidReason(link.ellipse); !r.empty()) {
       return "link '" + link.name + "': " + r;
     }
-    if (std::string r = linkReachReason(link.ellipse, twist, s.horizon); !r.empty()) {
+    if (std::string r = detail::linkReachReason(link.ellipse, twist, s.horizon); !r.empty()) {
       return "link '" + link.name + "': " + r;
     }
   }
@@ -170,47 +136,6 @@ std::string obstacleReason(const NamedEllipse& obstacle, const Motion& motion, d
   }
   return {};
 }
-
-/// twistContact() over `horizon` when its contact comes at or before `until` [s], no contact
-/// otherwise: the same steps (detail::rotatingContact()'s `until`), stopped once the next one
-/// would pass `until`, so that a search for the earliest of many pairs can stop each pair at the
-/// earliest contact found so far and still get the horizon's time for the earliest.
-FirstContact twistContactUntil(const Ellipse& link, const Twist& twist, const Ellipse& obstacle,
-                               const Motion& obstacle_motion, double horizon, double until) {
-  if (twist.wz == 0.0) {
-    // The frame does not turn: the link translates by (vx, vy), a Motion of the core.
-    const FirstContact contact =
-        firstContact(link, Motion{linear(twist), 0.0}, obstacle, obstacle_motion, horizon);
-    return contact.contact && contact.time <= until ? contact : FirstContact{};
-  }
-  if (overlap(link, obstacle)) return {true, 0.0};
-  if (!(horizon > 0.0)) return {};
-  // Apart at t = 0 (overlap() above): time 0 is for pairs that overlap now.
-  return detail::apartAtZero(
-      detail::rotatingContact(detail::twistPair(link, twist, obstacle, obstacle_motion), horizon,
-                              nullptr, until),
-      horizon);
-}
-
-}  // namespace
-
-namespace detail {
-
-RotatingPair twistPair(const Ellipse& link, const Twist& twist, const Ellipse& obstacle,
-                       const Motion& obstacle_motion) {
-  RotatingPair pair = rotatingPair(link, Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero(), twist.wz,
-                                   obstacle, obstacle_motion);
-  // The link's centre moves on an arc: its whole velocity v + wz z x c turns with the frame.
-  using Long = long double;
-  Eigen::Vector2d& low = pair.low.a_arc_velocity;
-  pair.a_arc_velocity = {split(Long(twist.vx) - Long(twist.wz) * link.center.y(), &low.x()),
-                         split(Long(twist.vy) + Long(twist.wz) * link.center.x(), &low.y())};
-  return pair;
-}
-
-}  // namespace detail
-
-namespace {
 
 // ---- the gate ---------------------------------------------------------------------------------
 
@@ -271,15 +196,17 @@ class Gate {
   bool findCandidates();
   void measureClearance(std::vector<ClosePair>& close);
   bool pushesIn(const std::vector<ClosePair>& close);
-  void contactRule(bool escaping);
+  /// The contact rule: the scale on the grid, the action and its reason (pairs close now that
+  /// the command moves apart make it Escape).
+  void scaleRule(bool escaping);
   void keepEarliest(PairTime& best, bool standing, double k, double until);
 
   /// twistContact() over `horizon`, reported only when at or before `until` (<= horizon).
   FirstContact contactOf(const Candidate& c, const Twist& twist, double horizon, double until) {
     ++result_.pair_tests;
-    return twistContactUntil(scene_.links[c.link].ellipse, twist,
-                             scene_.obstacles[c.obstacle].ellipse,
-                             scene_.obstacle_motions[c.obstacle], horizon, until);
+    return detail::twistContactUntil(scene_.links[c.link].ellipse, twist,
+                                     scene_.obstacles[c.obstacle].ellipse,
+                                     scene_.obstacle_motions[c.obstacle], horizon, until);
   }
   /// Keeps the earlier of `best` and `p`; ties to the smaller link, then obstacle name.
   void keepEarlier(PairTime& best, const PairTime& p) const {
@@ -410,8 +337,8 @@ bool Gate::pushesIn(const std::vector<ClosePair>& close) {
     // The distance's rate at t = 0 from the robot's motion alone is -n . velocity (the envelope
     // theorem on the support-function dual, distance.h); a slide along the rim is rate 0.
     const double closing = touch.normal.dot(velocity);
-    const double rounding =
-        kRateRounding * (linear(twist_).norm() + std::fabs(twist_.wz) * touch.point_a.norm());
+    const double rounding = kRateRounding * (Eigen::Vector2d(twist_.vx, twist_.vy).norm() +
+                                             std::fabs(twist_.wz) * touch.point_a.norm());
     const bool still = twist_.vx == 0.0 && twist_.vy == 0.0 && twist_.wz == 0.0;
     if ((touch.found && closing <= rounding) || still) continue;
     result_.limiting.found = true;
@@ -434,44 +361,47 @@ bool Gate::pushesIn(const std::vector<ClosePair>& close) {
   return false;
 }
 
-void Gate::contactRule(bool escaping) {
+void Gate::scaleRule(bool escaping) {
   const double horizon = settings_.horizon;
   const double before = settings_.time_before_collision;
   const double res = settings_.resolution;
-  // The first contact of every pair at k = 1 over the horizon: `still`, the earliest standing
-  // pair's; `moving`, the earliest moving pair's when it comes no later than `still` (only then can
-  // it decide: after a standing contact before T_b the moving search runs whatever `moving` is, and
-  // otherwise one after `still` is not before T_b); `full`, the earlier of the two.
-  PairTime still, moving;
+  // The first contact of every pair at k = 1 over the horizon: `standing_first`, the earliest
+  // standing pair's; `moving_first`, the earliest moving pair's when it comes no later than
+  // `standing_first` (only then can it decide: after a standing contact before T_b the moving
+  // search runs whatever it is, and otherwise one after `standing_first` is not before T_b);
+  // `first`, the earlier of the two.
+  PairTime standing_first, moving_first;
   std::size_t moving_count = 0;
   for (const Candidate& c : candidates_) moving_count += !c.overlapping && !c.standing;
-  keepEarliest(still, true, 1.0, horizon);
-  if (moving_count > 0) keepEarliest(moving, false, 1.0, still.found ? still.time : horizon);
-  PairTime full = still;
-  keepEarlier(full, moving);
+  keepEarliest(standing_first, true, 1.0, horizon);
+  if (moving_count > 0) {
+    keepEarliest(moving_first, false, 1.0, standing_first.found ? standing_first.time : horizon);
+  }
+  PairTime first = standing_first;
+  keepEarlier(first, moving_first);
   // The grid: k_n = n res for n = 0 .. top, and 1 (top_n: the largest n with n res < 1).
   const auto gridValue = [res](long n, long top) { return n > top ? 1.0 : n * res; };
   const long top = static_cast<long>(std::ceil(1.0 / res)) - 1;  // n res < 1 for n <= top
   double k = 1.0;
   long n = top + 1;
-  PairTime limiting = full;
+  PairTime limiting = first;
   double limiting_scale = 1.0;
   std::string why;
-  if (full.found && full.time <= settings_.stop_time) {
+  if (first.found && first.time <= settings_.stop_time) {
     k = 0.0;
     why = " within stop_time " + formatNumber(settings_.stop_time) + " s";
   } else {
-    if (still.found && still.time < before) {
+    if (standing_first.found && standing_first.time < before) {
       // The largest grid k with t_s / k >= T_b, from below t_s / T_b (rounded down).
-      n = std::min(top, static_cast<long>(std::floor(still.time / before / res)));
-      while (n > 0 && still.time / (n * res) < before) --n;
+      n = std::min(top, static_cast<long>(std::floor(standing_first.time / before / res)));
+      while (n > 0 && standing_first.time / (n * res) < before) --n;
       k = gridValue(n, top);
-      limiting = still;
+      limiting = standing_first;
     }
-    if (moving_count > 0 && k == 1.0 && moving.found && moving.time < before) {
+    if (moving_count > 0 && k == 1.0 && moving_first.found && moving_first.time < before) {
       // k = 1 was judged over the horizon already: the search starts below it. A standing
       // command is the same at every scale: nothing to search.
-      limiting = moving;
+      limiting = moving_first;
       const bool still_command = twist_.vx == 0.0 && twist_.vy == 0.0 && twist_.wz == 0.0;
       n = still_command ? 0 : top;
       k = gridValue(n, top);
@@ -516,10 +446,10 @@ void Gate::contactRule(bool escaping) {
   // The first contact under the output command over the horizon.
   PairTime output;
   if (k == 1.0) {
-    output = full;
+    output = first;
   } else {
-    if (k > 0.0 && still.found && still.time <= k * horizon) {
-      output = {true, still.time / k, still.link, still.obstacle};
+    if (k > 0.0 && standing_first.found && standing_first.time <= k * horizon) {
+      output = {true, standing_first.time / k, standing_first.link, standing_first.obstacle};
     }
     if (moving_count > 0) keepEarliest(output, false, k, horizon);
   }
@@ -532,18 +462,19 @@ void Gate::contactRule(bool escaping) {
     text = "moves every close pair apart (nearest: link '" + result_.clearance_link + "' " +
            readable(result_.clearance) + " m from '" + result_.clearance_obstacle + "'); ";
   }
-  const std::string first = full.found ? "contact of " + pairText(describe(full, 1.0)) + " in " +
-                                             readable(full.time) + " s under the full command"
-                                       : "no contact within horizon " + formatNumber(horizon) +
-                                             " s under the full command";
+  const std::string under_full =
+      first.found
+          ? "contact of " + pairText(describe(first, 1.0)) + " in " + readable(first.time) +
+                " s under the full command"
+          : "no contact within horizon " + formatNumber(horizon) + " s under the full command";
   if (k == 1.0) {
     result_.action = escaping ? GateAction::Escape : GateAction::Pass;
-    text += first + (full.found
-                         ? ", no sooner than time_before_collision " + formatNumber(before) + " s"
+    text += under_full +
+            (first.found ? ", no sooner than time_before_collision " + formatNumber(before) + " s"
                          : std::string());
   } else if (k > 0.0) {
     result_.action = escaping ? GateAction::Escape : GateAction::Slow;
-    text += first + "; slowed to " + readable(k) + " so that ";
+    text += under_full + "; slowed to " + readable(k) + " so that ";
     text += limiting_scale < 1.0
                 ? "no moving obstacle comes sooner than time_before_collision " +
                       formatNumber(before) + " s (at " + readable(lim.scale) + ", " +
@@ -551,7 +482,7 @@ void Gate::contactRule(bool escaping) {
                 : "it comes no sooner than time_before_collision " + formatNumber(before) + " s";
   } else {
     result_.action = GateAction::Stop;
-    text += first;
+    text += under_full;
     text += !why.empty() ? why
                          : "; no scale above 0 on the " + formatNumber(res) +
                                " grid keeps every contact beyond time_before_collision " +
@@ -607,70 +538,30 @@ void Gate::run() {
   std::vector<ClosePair> close;
   measureClearance(close);
   if (!close.empty() && pushesIn(close)) return;
-  contactRule(!close.empty());
+  scaleRule(!close.empty());
 }
 
 }  // namespace
 
-Twist scaled(const Twist& twist, double k) { return {k * twist.vx, k * twist.vy, k * twist.wz}; }
-
-PathPose poseAfter(const Twist& twist, double t) {
-  const detail::Displacement<double> moved =
-      detail::arcDisplacement(twist.vx, twist.vy, twist.wz, t);
-  return {moved.x, moved.y, twist.wz * t, t};
-}
-
-Ellipse linkAfter(const Ellipse& link, const Twist& twist, double t) {
-  const PathPose pose = poseAfter(twist, t);
-  return placeAt(link, {pose.x, pose.y}, pose.yaw);
-}
-
-std::vector<NamedEllipse> linksAtTime(const std::vector<NamedEllipse>& links, const Twist& twist,
-                                      double t) {
-  const PathPose pose = poseAfter(twist, t);
-  std::vector<NamedEllipse> placed = links;
-  for (NamedEllipse& link : placed)
-    link.ellipse = placeAt(link.ellipse, {pose.x, pose.y}, pose.yaw);
-  return placed;
-}
-
-std::string invalidTwistReason(const Twist& twist, double horizon) {
-  return invalidVelocityReason(Motion{linear(twist), twist.wz}, horizon,
-                               {"twist.vx", "twist.vy", "twist.wz"});
-}
-
-std::string invalidTwistContactReason(const Ellipse& link, const Twist& twist,
-                                      const Ellipse& obstacle, const Motion& obstacle_motion,
-                                      double horizon) {
-  if (std::string r = invalidReason(link); !r.empty()) return "link: " + r;
-  if (std::string r = invalidReason(obstacle); !r.empty()) return "obstacle: " + r;
-  if (!std::isfinite(horizon)) return "horizon = " + formatNumber(horizon) + " must be finite";
-  if (horizon < 0.0) return "horizon = " + formatNumber(horizon) + " must be >= 0";
-  if (std::string r = invalidTwistReason(twist, horizon); !r.empty()) return r;
-  if (std::string r = linkReachReason(link, twist, horizon); !r.empty()) return "link: " + r;
-  if (std::string r = invalidMotionReason(obstacle, obstacle_motion, horizon); !r.empty()) {
-    return "obstacle: " + r;
+std::optional<GateSettingViolation> findInvalidGateSettings(const GateSettings& s) {
+  const auto outside = [](const char* field, double value, double min, double max,
+                          bool min_excluded = false,
+                          const char* max_field = nullptr) -> std::optional<GateSettingViolation> {
+    const bool above_min = min_excluded ? value > min : value >= min;
+    if (above_min && value <= max) return std::nullopt;  // NaN is within no range
+    return GateSettingViolation{field, value, min, max, min_excluded, max_field};
+  };
+  if (auto v = outside("horizon", s.horizon, 0.0, kMaxGateHorizonS, true)) return v;
+  if (auto v = outside("time_before_collision", s.time_before_collision, 0.0, s.horizon, false,
+                       "horizon")) {
+    return v;
   }
-  return {};
-}
-
-FirstContact twistContact(const Ellipse& link, const Twist& twist, const Ellipse& obstacle,
-                          const Motion& obstacle_motion, double horizon) {
-  return twistContactUntil(link, twist, obstacle, obstacle_motion, horizon, horizon);
-}
-
-const char* toString(GateAction action) {
-  switch (action) {
-    case GateAction::Pass:
-      return "pass";
-    case GateAction::Slow:
-      return "slow";
-    case GateAction::Stop:
-      return "stop";
-    case GateAction::Escape:
-      return "escape";
+  if (auto v = outside("stop_time", s.stop_time, 0.0, s.time_before_collision, false,
+                       "time_before_collision")) {
+    return v;
   }
-  return "stop";
+  if (auto v = outside("margin", s.margin, 0.0, kMaxRadius)) return v;
+  return outside("resolution", s.resolution, kMinGateResolution, 1.0);
 }
 
 std::string invalidGateReason(const PathScene& scene, const Twist& twist,
@@ -699,7 +590,7 @@ std::string invalidGateReason(const PathScene& scene, const Twist& twist,
   return {};
 }
 
-GateResult gateCommand(const PathScene& scene, const Twist& twist, const GateSettings& settings) {
+GateResult gateTwist(const PathScene& scene, const Twist& twist, const GateSettings& settings) {
   GateResult result;
   if (std::string r = cheapGateReason(scene, twist, settings); !r.empty()) {
     result.error = std::move(r);

@@ -13,24 +13,6 @@
 namespace ellipse_collision {
 namespace {
 
-app::MonitorSettings makeMonitorSettings(const NodeConfig& config) {
-  app::MonitorSettings settings;
-  app::CheckSettings& check = settings.check;
-  check.fixed_frame = config.fixed_frame;
-  check.global_padding_m = config.padding_m;
-  check.rules.self_collision = config.self_collision;
-  check.rules.warning_distance = config.warning_distance_m;
-  check.max_transform_age_s = config.max_transform_age_s;
-  for (const auto& pair : config.allowed_pairs) check.rules.allowed.add(pair.first, pair.second);
-  settings.robot_frame = config.robot_frame;
-  settings.rate_hz = config.rate_hz;
-  settings.obstacle_timeout_s = config.obstacle_timeout_s;
-  settings.prediction_horizon_s = config.prediction_horizon_s;
-  settings.obstacle_store_period_s = config.obstacle_store_period_s;
-  settings.gate = config.gate;
-  return settings;
-}
-
 /// `node_name`: the private namespace, the node's name (or the nodelet's, in a manager).
 app::StoreOptions storeOptions(const NodeConfig& config, const std::string& node_name) {
   app::StoreOptions store;
@@ -105,11 +87,11 @@ CollisionNode::CollisionNode(const ros::NodeHandle& nh, const ros::NodeHandle& p
                               "ellipse_collision: cannot persist the runtime obstacles: " << error);
   };
   monitor_ = std::make_unique<app::CollisionMonitor>(
-      makeMonitorSettings(config_), config_.links, config_.obstacles, config_.limits,
+      config_.monitor, config_.links, config_.obstacles, config_.limits,
       storeOptions(config_, private_nh_.getNamespace()), std::move(hooks));
   for (const app::StartupNote& note : monitor_->startupNotes()) logStartupNote(note);
-  if (monitor_->storeEnabled() && config_.obstacle_store_period_s > 0.0) {
-    store_timer_ = nh_.createWallTimer(ros::WallDuration(config_.obstacle_store_period_s),
+  if (monitor_->storeEnabled() && config_.monitor.obstacle_store_period_s > 0.0) {
+    store_timer_ = nh_.createWallTimer(ros::WallDuration(config_.monitor.obstacle_store_period_s),
                                        &CollisionNode::onStoreTimer, this);
   }
   collisions_pub_ = private_nh_.advertise<CollisionState>("collisions", 1, /*latch=*/true);
@@ -160,11 +142,14 @@ CollisionNode::CollisionNode(const ros::NodeHandle& nh, const ros::NodeHandle& p
   }
   ROS_INFO_STREAM("ellipse_collision: "
                   << config_.links.size() << " links, " << config_.obstacles.size()
-                  << " obstacles in '" << config_.fixed_frame << "', "
-                  << (config_.rate_hz > 0.0 ? "checking at " + core::formatNumber(config_.rate_hz) + " Hz"
-                                            : std::string("checking on service calls only"))
-                  << (config_.warning_distance_m > 0.0
-                          ? ", warning within " + core::formatNumber(config_.warning_distance_m) + " m"
+                  << " obstacles in '" << config_.monitor.check.fixed_frame << "', "
+                  << (config_.monitor.rate_hz > 0.0
+                          ? "checking at " + core::formatNumber(config_.monitor.rate_hz) + " Hz"
+                          : std::string("checking on service calls only"))
+                  << (config_.monitor.check.rules.warning_distance > 0.0
+                          ? ", warning within " +
+                                core::formatNumber(config_.monitor.check.rules.warning_distance) +
+                                " m"
                           : std::string()));
 }
 
@@ -180,7 +165,7 @@ void CollisionNode::scheduleTimers() {
     check_timer_.stop();
   }
   // Checked four times per timeout: the zero goes out at most a quarter timeout late.
-  const double timeout_s = monitor_->settings().gate.cmd_vel_timeout_s;
+  const double timeout_s = monitor_->gate().config().cmd_vel_timeout_s;
   if (timeout_s > 0.0 && gate_watchdog_timer_.isValid()) {
     gate_watchdog_timer_.setPeriod(ros::Duration(timeout_s / 4.0));
     gate_watchdog_timer_.start();
@@ -227,12 +212,13 @@ void CollisionNode::retune(const std::optional<app::FieldError>& at_bound,
 
 app::TransformLookup CollisionNode::lookup(const ros::Time& stamp,
                                            const ros::Duration& timeout) const {
-  return tfLookup(tf_buffer_, config_.fixed_frame, stamp, timeout);
+  return tfLookup(tf_buffer_, config_.monitor.check.fixed_frame, stamp, timeout);
 }
 
 app::TransformAtLookup CollisionNode::lookupAt() const {
   return [this](const std::string& frame, double time_s) {
-    return tfLookup(tf_buffer_, config_.fixed_frame, ros::Time(time_s), ros::Duration(0))(frame);
+    return tfLookup(tf_buffer_, config_.monitor.check.fixed_frame, ros::Time(time_s),
+                    ros::Duration(0))(frame);
   };
 }
 
@@ -275,7 +261,7 @@ void CollisionNode::publishState(app::StatePublishing publishing) {
   const app::MonitorState& state = monitor_->state();
   CollisionState msg;
   msg.header.stamp = ros::Time(state.stamp_s);
-  msg.header.frame_id = config_.fixed_frame;
+  msg.header.frame_id = config_.monitor.check.fixed_frame;
   msg.collisions = toMsg(state.outcome.collisions);
   msg.in_collision = !msg.collisions.empty();
   msg.unavailable_frames = state.outcome.unavailable_frames;
@@ -306,7 +292,7 @@ void CollisionNode::publishMarkers() {
   // Only what changed since the last array: an unchanged scene publishes nothing.
   visualization_msgs::MarkerArray changes =
       markers_.update(state.outcome.placed, state.outcome.collisions, state.outcome.warnings,
-                      config_.fixed_frame, ros::Time(state.stamp_s), predicted);
+                      config_.monitor.check.fixed_frame, ros::Time(state.stamp_s), predicted);
   // Plus a slice of the refresh sweep, by wall time: it heals what a network lost, whatever the
   // ROS clock does.
   const ros::WallTime now = ros::WallTime::now();
@@ -431,13 +417,13 @@ void CollisionNode::publishGate(const app::GateDecision& decision, const ros::Ti
   cmd_vel_pub_.publish(toMsg(decision.output));
   GateState state = toMsg(decision);
   state.header.stamp = stamp;
-  state.header.frame_id = config_.fixed_frame;
+  state.header.frame_id = config_.monitor.check.fixed_frame;
   gate_state_pub_.publish(state);
   if (gate_markers_pub_.getNumSubscribers() > 0) {
-    gate_markers_pub_.publish(gate_markers_.update(decision, config_.fixed_frame, stamp));
+    gate_markers_pub_.publish(
+        gate_markers_.update(decision, config_.monitor.check.fixed_frame, stamp));
   }
-  if (decision.action == app::GateAction::Stop || decision.action == app::GateAction::Incomplete ||
-      decision.action == app::GateAction::Timeout) {
+  if (app::stops(decision.action)) {
     ROS_WARN_STREAM_THROTTLE(2.0, "ellipse_collision: gate " << state.action << ": "
                                                               << decision.reason);
   }
@@ -447,7 +433,7 @@ void CollisionNode::onDiagnosticsTimer(const ros::TimerEvent& /*event*/) {
   const app::CollisionMonitor::Health report = monitor_->health(ros::Time::now().toSec());
   diagnostic_msgs::DiagnosticStatus status;
   status.name = private_nh_.getNamespace() + ": collision check";
-  status.hardware_id = config_.fixed_frame;
+  status.hardware_id = config_.monitor.check.fixed_frame;
   status.level = report.health.level == app::CheckHealth::Level::Error
                      ? diagnostic_msgs::DiagnosticStatus::ERROR
                  : report.health.level == app::CheckHealth::Level::Warn

@@ -9,26 +9,6 @@
 namespace ellipse_collision {
 namespace {
 
-std_msgs::ColorRGBA actionColour(app::GateAction action) {
-  std_msgs::ColorRGBA colour;
-  colour.a = 1.0f;
-  switch (action) {
-    case app::GateAction::Pass:
-    case app::GateAction::Disabled:
-      colour.g = 0.8f;
-      break;
-    case app::GateAction::Slow:
-    case app::GateAction::Escape:
-      colour.r = 1.0f;
-      colour.g = 0.8f;
-      break;
-    default:
-      colour.r = 1.0f;
-      break;
-  }
-  return colour;
-}
-
 /// A closed outline of `ellipse` (its drawn polygon, first vertex repeated).
 void outline(visualization_msgs::Marker& m, const core::Ellipse& ellipse, double width,
              const std_msgs::ColorRGBA& colour) {
@@ -50,37 +30,34 @@ void outline(visualization_msgs::Marker& m, const core::Ellipse& ellipse, double
 visualization_msgs::MarkerArray GateMarkers::update(const app::GateDecision& decision,
                                                     const std::string& frame_id,
                                                     const ros::Time& stamp) {
+  const app::GateMarkerLayout::Drawing drawing = layout_.update(decision);
+  std_msgs::ColorRGBA colour;
+  colour.r = drawing.colour.r;
+  colour.g = drawing.colour.g;
+  colour.b = drawing.colour.b;
+  colour.a = drawing.colour.a;
   visualization_msgs::MarkerArray array;
-  const std_msgs::ColorRGBA colour = actionColour(decision.action);
-  for (std::size_t i = 0; i < decision.outline.size(); ++i) {
-    visualization_msgs::Marker m =
-        blankMarker(frame_id, stamp, "gate_outline", static_cast<std::int32_t>(i));
-    outline(m, decision.outline[i].ellipse, 0.01, colour);
+  for (const app::GateMarkerLayout::Outline& shown : drawing.outlines) {
+    visualization_msgs::Marker m = blankMarker(frame_id, stamp, shown.ns, shown.id);
+    if (shown.show) {
+      outline(m, shown.ellipse, shown.width, colour);
+    } else {
+      m.action = visualization_msgs::Marker::DELETE;
+    }
     array.markers.push_back(std::move(m));
   }
-  for (std::size_t i = decision.outline.size(); i < outline_count_; ++i) {
-    visualization_msgs::Marker m =
-        blankMarker(frame_id, stamp, "gate_outline", static_cast<std::int32_t>(i));
-    m.action = visualization_msgs::Marker::DELETE;
-    array.markers.push_back(std::move(m));
-  }
-  outline_count_ = decision.outline.size();
-
-  visualization_msgs::Marker obstacle = blankMarker(frame_id, stamp, "gate_obstacle", 0);
-  visualization_msgs::Marker contact = blankMarker(frame_id, stamp, "gate_contact", 0);
-  if (decision.contact_predicted && !decision.obstacle.empty()) {
-    outline(obstacle, decision.obstacle_ellipse, 0.03, colour);
+  visualization_msgs::Marker contact =
+      blankMarker(frame_id, stamp, app::GateMarkerLayout::kContactNamespace, 0);
+  if (drawing.show_contact) {
     contact.type = visualization_msgs::Marker::SPHERE;
     contact.action = visualization_msgs::Marker::ADD;
-    contact.pose.position.x = decision.contact_point.x();
-    contact.pose.position.y = decision.contact_point.y();
-    contact.scale.x = contact.scale.y = contact.scale.z = 0.08;
+    contact.pose.position.x = drawing.contact_point.x();
+    contact.pose.position.y = drawing.contact_point.y();
+    contact.scale.x = contact.scale.y = contact.scale.z = app::GateMarkerLayout::kContactSize;
     contact.color = colour;
   } else {
-    obstacle.action = visualization_msgs::Marker::DELETE;
     contact.action = visualization_msgs::Marker::DELETE;
   }
-  array.markers.push_back(std::move(obstacle));
   array.markers.push_back(std::move(contact));
   return array;
 }

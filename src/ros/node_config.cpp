@@ -94,18 +94,21 @@ void failOn(const std::optional<app::FieldError>& error, const std::string& wher
   if (error) fail(where, error->key, error->expected, error->actual);
 }
 
-double readNonNegative(const XmlRpcValue& value, const std::string& where, const std::string& key) {
-  const double number = readNumber(value, where, key);
-  failOn(app::findNegativeSetting(key, number), where);
-  return number;
-}
-
 /// A finite number >= 0 within [min, max] (or exactly 0 when zero_allowed, for "off"):
 /// app::findOutsideSettingRange(). Refused, never clamped.
 double readInRange(const XmlRpcValue& value, const std::string& where, const std::string& key,
                    double min, double max, bool zero_allowed = false) {
   const double number = readNumber(value, where, key);
   failOn(app::findOutsideSettingRange(key, number, min, max, zero_allowed), where);
+  return number;
+}
+
+/// Top-level scalar parameter `key` ("rate") in its range from the one table,
+/// app::settingRange(): the same rule reconfigure applies.
+double readSetting(const XmlRpcValue& root, const std::string& key) {
+  const std::string where = "parameter ~" + key;
+  const double number = readNumber(root[key], where, key);
+  failOn(app::findOutsideSettingRange(key, number), where);
   return number;
 }
 
@@ -255,7 +258,9 @@ app::LinkFitResult readLinksFromUrdf(const XmlRpcValue& value, const UrdfLinkFit
     }
   }
   if (value.hasMember("padding")) {
-    options.padding = readInRange(value["padding"], where, "padding", 0.0, core::kMaxRadius);
+    // The links' own padding keeps the range of the global one.
+    const app::SettingRange& padding = app::settingRange("padding");
+    options.padding = readInRange(value["padding"], where, "padding", padding.min, padding.max);
   }
   if (value.hasMember("shape")) {
     const std::string name = readString(value["shape"], where, "shape");
@@ -317,6 +322,12 @@ std::string describeConfigError(const std::string& where, const app::FieldError&
   return where + ", key '" + error.key + "': expected " + error.expected + ", got " + error.actual;
 }
 
+app::MonitorSettings nodeMonitorDefaults() {
+  app::MonitorSettings settings;
+  settings.check.max_transform_age_s = 0.5;
+  return settings;
+}
+
 NodeConfig parseNodeConfig(const XmlRpcValue& params, const UrdfLinkFitter& fit_urdf_links) {
   XmlRpcValue root = params;
   if (root.getType() == XmlRpcValue::TypeInvalid) root = XmlRpcValue();
@@ -344,43 +355,37 @@ NodeConfig parseNodeConfig(const XmlRpcValue& params, const UrdfLinkFitter& fit_
 
   NodeConfig config;
   if (has("fixed_frame")) {
-    config.fixed_frame = readFrame(root["fixed_frame"], "parameter ~fixed_frame", "fixed_frame");
+    config.monitor.check.fixed_frame =
+        readFrame(root["fixed_frame"], "parameter ~fixed_frame", "fixed_frame");
   }
   if (has("robot_frame")) {
-    config.robot_frame = readFrame(root["robot_frame"], "parameter ~robot_frame", "robot_frame");
+    config.monitor.robot_frame =
+        readFrame(root["robot_frame"], "parameter ~robot_frame", "robot_frame");
   }
   if (has("prediction_horizon")) {
-    config.prediction_horizon_s =
-        readInRange(root["prediction_horizon"], "parameter ~prediction_horizon",
-                    "prediction_horizon", 0.0, kMaxPredictionHorizonS);
+    config.monitor.prediction_horizon_s = readSetting(root, "prediction_horizon");
   }
   if (has("rate")) {
-    config.rate_hz =
-        readInRange(root["rate"], "parameter ~rate", "rate", kMinRateHz, kMaxRateHz, true);
+    config.monitor.rate_hz = readSetting(root, "rate");
   }
   if (has("tf_timeout")) {
-    config.tf_timeout_s =
-        readInRange(root["tf_timeout"], "parameter ~tf_timeout", "tf_timeout", 0.0, kMaxDurationS);
+    config.tf_timeout_s = readSetting(root, "tf_timeout");
   }
   if (has("padding")) {
-    config.padding_m =
-        readInRange(root["padding"], "parameter ~padding", "padding", 0.0, core::kMaxRadius);
+    config.monitor.check.global_padding_m = readSetting(root, "padding");
   }
   if (has("self_collision")) {
-    config.self_collision =
+    config.monitor.check.rules.self_collision =
         readBool(root["self_collision"], "parameter ~self_collision", "self_collision");
   }
   if (has("warning_distance")) {
-    config.warning_distance_m = readNonNegative(root["warning_distance"],
-                                                "parameter ~warning_distance", "warning_distance");
+    config.monitor.check.rules.warning_distance = readSetting(root, "warning_distance");
   }
   if (has("max_transform_age")) {
-    config.max_transform_age_s = readInRange(root["max_transform_age"], "parameter ~max_transform_age",
-                                             "max_transform_age", 0.0, kMaxDurationS);
+    config.monitor.check.max_transform_age_s = readSetting(root, "max_transform_age");
   }
   if (has("obstacle_timeout")) {
-    config.obstacle_timeout_s = readInRange(root["obstacle_timeout"], "parameter ~obstacle_timeout",
-                                            "obstacle_timeout", 0.0, kMaxDurationS);
+    config.monitor.obstacle_timeout_s = readSetting(root, "obstacle_timeout");
   }
   if (has("max_obstacles")) {
     config.limits.max_obstacles = static_cast<std::size_t>(readWhole(
@@ -394,27 +399,25 @@ NodeConfig parseNodeConfig(const XmlRpcValue& params, const UrdfLinkFitter& fit_
     config.obstacle_store = readString(root["obstacle_store"], "parameter ~obstacle_store", "obstacle_store");
   }
   if (has("obstacle_store_period")) {
-    config.obstacle_store_period_s =
-        readInRange(root["obstacle_store_period"], "parameter ~obstacle_store_period",
-                    "obstacle_store_period", 0.0, kMaxDurationS);
+    config.monitor.obstacle_store_period_s = readSetting(root, "obstacle_store_period");
   }
   if (has("marker_refresh_period")) {
-    config.marker_refresh_period_s =
-        readInRange(root["marker_refresh_period"], "parameter ~marker_refresh_period",
-                    "marker_refresh_period", 0.0, kMaxDurationS);
+    config.marker_refresh_period_s = readSetting(root, "marker_refresh_period");
   }
-  if (has("gate")) config.gate = readGate(root["gate"]);
+  if (has("gate")) config.monitor.gate = readGate(root["gate"]);
   if (!has("links") && !has("links_from_urdf")) {
     throw ConfigError(
         "parameter ~links, key 'links': expected a list of ellipses (required unless "
         "links_from_urdf is given; may be []), got nothing (is the YAML loaded into the node's "
         "private namespace?)");
   }
-  if (has("links")) config.links = readEllipseList(root["links"], "links", config.padding_m);
+  if (has("links"))
+    config.links = readEllipseList(root["links"], "links", config.monitor.check.global_padding_m);
   if (has("links_from_urdf")) {
     const app::LinkFitResult fitted = readLinksFromUrdf(root["links_from_urdf"], fit_urdf_links);
     for (const app::EllipseSpec& spec : fitted.links) {
-      if (const auto invalid = app::findInvalidPaddedField(spec, config.padding_m, "frame")) {
+      if (const auto invalid =
+              app::findInvalidPaddedField(spec, config.monitor.check.global_padding_m, "frame")) {
         fail("parameter ~links_from_urdf (link '" + spec.name + "')", invalid->key,
              invalid->expected, invalid->actual);
       }
@@ -423,7 +426,8 @@ NodeConfig parseNodeConfig(const XmlRpcValue& params, const UrdfLinkFitter& fit_
     config.urdf_links_skipped = fitted.skipped;
   }
   if (has("obstacles")) {
-    config.obstacles = readEllipseList(root["obstacles"], "obstacles", config.padding_m);
+    config.obstacles =
+        readEllipseList(root["obstacles"], "obstacles", config.monitor.check.global_padding_m);
   }
 
   // Links and obstacles share one name space; each entry's own name is non-empty already.
@@ -442,7 +446,11 @@ NodeConfig parseNodeConfig(const XmlRpcValue& params, const UrdfLinkFitter& fit_
   }
   std::map<std::string, std::string> defined;  // name -> entry that defines it
   for (const auto& [where, spec] : entries) defined.emplace(spec->name, where);
-  if (has("allowed_pairs")) config.allowed_pairs = readAllowedPairs(root["allowed_pairs"], defined);
+  if (has("allowed_pairs")) {
+    for (const auto& [a, b] : readAllowedPairs(root["allowed_pairs"], defined)) {
+      config.monitor.check.rules.allowed.add(a, b);
+    }
+  }
   return config;
 }
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <string>
 
-#include "ellipse_collision/app/command_gate.h"
+#include "ellipse_collision/app/gate_config.h"
 #include "ellipse_collision/core/number_format.h"
 
 namespace ellipse_collision {

@@ -397,7 +397,8 @@ TEST(DemoInRviz, CollidingEllipsesAreRedNearOnesYellowAndClearOnesGreen) {
 
   // Where every ellipse is now, from tf, the configuration and scan_obstacles' last message.
   app::ScenePlacement placement(
-      tfLookup(tf_buffer, config.fixed_frame, ros::Time(0), ros::Duration(1.0)), config.padding_m);
+      tfLookup(tf_buffer, config.monitor.check.fixed_frame, ros::Time(0), ros::Duration(1.0)),
+      config.monitor.check.global_padding_m);
   std::vector<core::NamedEllipse> placed;
   std::vector<Eigen::Vector2d> frame_origins;
   auto place = [&](const app::EllipseSpec& spec, core::EllipseRole role) {
@@ -408,7 +409,7 @@ TEST(DemoInRviz, CollidingEllipsesAreRedNearOnesYellowAndClearOnesGreen) {
   for (const app::EllipseSpec& spec : config.links) {
     place(spec, core::EllipseRole::Link);
     const geometry_msgs::TransformStamped t =
-        tf_buffer.lookupTransform(config.fixed_frame, spec.frame_id, ros::Time(0));
+        tf_buffer.lookupTransform(config.monitor.check.fixed_frame, spec.frame_id, ros::Time(0));
     frame_origins.emplace_back(t.transform.translation.x, t.transform.translation.y);
   }
   frame_origins.emplace_back(0.0, 0.0);  // the fixed frame's own axes
@@ -418,7 +419,7 @@ TEST(DemoInRviz, CollidingEllipsesAreRedNearOnesYellowAndClearOnesGreen) {
   {
     // The scanner's frame draws its axes too.
     const geometry_msgs::TransformStamped t = tf_buffer.lookupTransform(
-        config.fixed_frame, streamed.back().header.frame_id, ros::Time(0));
+        config.monitor.check.fixed_frame, streamed.back().header.frame_id, ros::Time(0));
     frame_origins.emplace_back(t.transform.translation.x, t.transform.translation.y);
   }
   std::vector<Segment> clearance_lines;
@@ -429,9 +430,9 @@ TEST(DemoInRviz, CollidingEllipsesAreRedNearOnesYellowAndClearOnesGreen) {
   if (HasFatalFailure()) return;
   // The frozen state is about this geometry: checking it here finds the same colliding ellipses.
   core::SceneRules rules;
-  rules.self_collision = config.self_collision;
-  rules.warning_distance = config.warning_distance_m;
-  for (const auto& pair : config.allowed_pairs) rules.allowed.add(pair.first, pair.second);
+  rules.self_collision = config.monitor.check.rules.self_collision;
+  rules.warning_distance = config.monitor.check.rules.warning_distance;
+  rules.allowed = config.monitor.check.rules.allowed;
   const core::SceneCheckResult check = core::checkScene(placed, rules);
   ASSERT_TRUE(check.ok()) << check.error;
   CollisionState here;

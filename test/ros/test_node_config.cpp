@@ -65,12 +65,12 @@ std::string errorOf(const XmlRpcValue& params) {
 
 TEST(NodeConfig, ValidConfigurationIsReadCompletely) {
   const NodeConfig config = parseNodeConfig(validParams());
-  EXPECT_EQ(config.fixed_frame, "map");
-  EXPECT_EQ(config.rate_hz, 5.0);
+  EXPECT_EQ(config.monitor.check.fixed_frame, "map");
+  EXPECT_EQ(config.monitor.rate_hz, 5.0);
   EXPECT_EQ(config.tf_timeout_s, 0.5);
-  EXPECT_EQ(config.padding_m, 0.01);
-  EXPECT_FALSE(config.self_collision);
-  EXPECT_EQ(config.warning_distance_m, 0.25);
+  EXPECT_EQ(config.monitor.check.global_padding_m, 0.01);
+  EXPECT_FALSE(config.monitor.check.rules.self_collision);
+  EXPECT_EQ(config.monitor.check.rules.warning_distance, 0.25);
   ASSERT_EQ(config.links.size(), 2u);
   EXPECT_EQ(config.links[1].name, "hand");
   EXPECT_EQ(config.links[1].frame_id, "hand_link");
@@ -80,23 +80,23 @@ TEST(NodeConfig, ValidConfigurationIsReadCompletely) {
   EXPECT_EQ(config.links[0].padding, 0.0);
   ASSERT_EQ(config.obstacles.size(), 1u);
   EXPECT_EQ(config.obstacles[0].name, "table");
-  ASSERT_EQ(config.allowed_pairs.size(), 1u);
-  EXPECT_EQ(config.allowed_pairs[0], std::make_pair(std::string("arm"), std::string("hand")));
+  ASSERT_EQ(config.monitor.check.rules.allowed.size(), 1u);
+  EXPECT_TRUE(config.monitor.check.rules.allowed.contains("arm", "hand"));
 }
 
 TEST(NodeConfig, OptionalKeysTakeTheirDocumentedDefaults) {
   XmlRpcValue p;
   p["links"].setSize(0);
   const NodeConfig config = parseNodeConfig(p);
-  EXPECT_EQ(config.fixed_frame, "base_link");
-  EXPECT_EQ(config.rate_hz, 10.0);
+  EXPECT_EQ(config.monitor.check.fixed_frame, "base_link");
+  EXPECT_EQ(config.monitor.rate_hz, 10.0);
   EXPECT_EQ(config.tf_timeout_s, 0.1);
-  EXPECT_EQ(config.padding_m, 0.0);
-  EXPECT_TRUE(config.self_collision);
-  EXPECT_EQ(config.warning_distance_m, 0.0);
+  EXPECT_EQ(config.monitor.check.global_padding_m, 0.0);
+  EXPECT_TRUE(config.monitor.check.rules.self_collision);
+  EXPECT_EQ(config.monitor.check.rules.warning_distance, 0.0);
   EXPECT_TRUE(config.links.empty());
   EXPECT_TRUE(config.obstacles.empty());
-  EXPECT_TRUE(config.allowed_pairs.empty());
+  EXPECT_EQ(config.monitor.check.rules.allowed.size(), 0u);
   EXPECT_EQ(config.marker_refresh_period_s, 10.0);
 }
 
@@ -106,7 +106,7 @@ TEST(NodeConfig, IntegersAreAcceptedWhereNumbersAreExpected) {
   p["links"][0]["radius_x"] = 1;
   p["links"][0]["x"] = -3;
   const NodeConfig config = parseNodeConfig(p);
-  EXPECT_EQ(config.rate_hz, 20.0);
+  EXPECT_EQ(config.monitor.rate_hz, 20.0);
   EXPECT_EQ(config.links[0].radius_x, 1.0);
   EXPECT_EQ(config.links[0].x, -3.0);
 }
@@ -268,7 +268,7 @@ TEST(NodeConfig, ScalarParametersAreTypeChecked) {
 TEST(NodeConfig, WarningDistanceMustBeAFiniteNumberNotBelowZero) {
   XmlRpcValue p = validParams();
   p["warning_distance"] = 1;  // an int is a number
-  EXPECT_EQ(parseNodeConfig(p).warning_distance_m, 1.0);
+  EXPECT_EQ(parseNodeConfig(p).monitor.check.rules.warning_distance, 1.0);
   const std::pair<double, const char*> bad[] = {
       {-0.1, "got -0.1"},
       {std::numeric_limits<double>::quiet_NaN(), "got nan"},
@@ -308,7 +308,7 @@ TEST(NodeConfig, RateIsZeroOrWithinItsDocumentedRange) {
   XmlRpcValue p = validParams();
   for (double ok : {0.0, kMinRateHz, kMaxRateHz, 1e-3, 1e3}) {
     p["rate"] = ok;
-    EXPECT_EQ(parseNodeConfig(p).rate_hz, ok);
+    EXPECT_EQ(parseNodeConfig(p).monitor.rate_hz, ok);
   }
   // 1e-12 Hz: a period of 1e12 s, beyond ros::Duration; 1e12 Hz: a period that rounds to 0.
   const std::pair<double, const char*> bad[] = {
@@ -321,6 +321,43 @@ TEST(NodeConfig, RateIsZeroOrWithinItsDocumentedRange) {
   }
   p["rate"] = std::numeric_limits<double>::infinity();
   EXPECT_EQ(errorOf(p), "parameter ~rate, key 'rate': expected a finite number >= 0, got inf");
+}
+
+TEST(NodeConfig, StartUpAndReconfigureRefuseTheSameValuesFromOneRangeTable) {
+  // Every reconfigurable scalar: just past its range (or negative where it has no upper bound) is
+  // refused at start-up and by the reconfigure rule with the same expectation text; its bound is
+  // accepted by both.
+  struct Field {
+    const char* key;
+    double app::TunableSettings::*member;
+  };
+  const Field fields[] = {{"rate", &app::TunableSettings::rate_hz},
+                          {"prediction_horizon", &app::TunableSettings::prediction_horizon_s},
+                          {"padding", &app::TunableSettings::padding_m},
+                          {"warning_distance", &app::TunableSettings::warning_distance_m},
+                          {"max_transform_age", &app::TunableSettings::max_transform_age_s},
+                          {"obstacle_timeout", &app::TunableSettings::obstacle_timeout_s}};
+  for (const Field& field : fields) {
+    const app::SettingRange& range = app::settingRange(field.key);
+    const double outside = std::isinf(range.max) ? -1.0 : range.max * 1.5;
+    XmlRpcValue p = validParams();
+    p[field.key] = outside;
+    app::TunableSettings tunable;
+    tunable.*field.member = outside;
+    const auto refused = app::findInvalidTunable(tunable);
+    ASSERT_TRUE(refused) << field.key;
+    EXPECT_EQ(refused->key, field.key);
+    EXPECT_EQ(errorOf(p), "parameter ~" + std::string(field.key) + ", key '" + field.key +
+                              "': expected " + refused->expected + ", got " + refused->actual);
+    // (At the padding's bound every link's radius would pass kMaxRadius: refused for the links.)
+    if (!std::isinf(range.max) && std::string(field.key) != "padding") {
+      p[field.key] = range.max;
+      tunable.*field.member = range.max;
+      EXPECT_EQ(errorOf(p), "") << field.key;
+      EXPECT_FALSE(app::findInvalidTunable(tunable)) << field.key;
+    }
+  }
+  EXPECT_THROW(app::settingRange("no_such_parameter"), std::invalid_argument);
 }
 
 TEST(NodeConfig, TfTimeoutIsWithinItsDocumentedRange) {
@@ -362,7 +399,7 @@ TEST(NodeConfig, GlobalPaddingIsWithinTheCoreRadiusRange) {
   XmlRpcValue p;
   p["links"].setSize(0);  // no entries: the padding's own range is checked
   p["padding"] = core::kMaxRadius;
-  EXPECT_EQ(parseNodeConfig(p).padding_m, core::kMaxRadius);
+  EXPECT_EQ(parseNodeConfig(p).monitor.check.global_padding_m, core::kMaxRadius);
   p["padding"] = 1.5e9;
   EXPECT_EQ(errorOf(p),
             "parameter ~padding, key 'padding': expected a number within [0, 1e+09], got 1.5e+09");
@@ -408,12 +445,12 @@ TEST(NodeConfig, TheGateIsOffByDefaultAndItsKeysAreReadAndRangeChecked) {
   p["gate"]["stop_time"] = 0.5;
   p["gate"]["on_incomplete"] = "pass";
   const NodeConfig config = parseNodeConfig(p);
-  EXPECT_TRUE(config.gate.enabled);
-  EXPECT_EQ(config.gate.robot_frame, "base_footprint");
-  EXPECT_EQ(config.gate.timing.horizon, 4.0);
-  EXPECT_EQ(config.gate.timing.time_before_collision, 2.0);
-  EXPECT_EQ(config.gate.timing.stop_time, 0.5);
-  EXPECT_EQ(config.gate.on_incomplete, app::OnIncomplete::Pass);
+  EXPECT_TRUE(config.monitor.gate.enabled);
+  EXPECT_EQ(config.monitor.gate.robot_frame, "base_footprint");
+  EXPECT_EQ(config.monitor.gate.timing.horizon, 4.0);
+  EXPECT_EQ(config.monitor.gate.timing.time_before_collision, 2.0);
+  EXPECT_EQ(config.monitor.gate.timing.stop_time, 0.5);
+  EXPECT_EQ(config.monitor.gate.on_incomplete, app::OnIncomplete::Pass);
 
   p["gate"]["stop_time"] = 3.0;
   EXPECT_EQ(errorOf(p),

@@ -457,7 +457,7 @@ TEST(LinksFromUrdf, AppendsFittedLinksToConfiguredOnes) {
   EXPECT_EQ(config.links[1].padding, 0.02);
   EXPECT_EQ(config.urdf_links_skipped,
             std::vector<std::string>{"base_footprint: no collision geometry"});
-  EXPECT_EQ(config.allowed_pairs.size(), 1u);
+  EXPECT_EQ(config.monitor.check.rules.allowed.size(), 1u);
 }
 
 /// Which fitted links of `path` are ellipsoids, under `shape`.

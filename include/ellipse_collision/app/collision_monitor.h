@@ -12,13 +12,13 @@
 
 #include "ellipse_collision/app/check_health.h"
 #include "ellipse_collision/app/collision_check.h"
-#include "ellipse_collision/app/command_gate.h"
 #include "ellipse_collision/app/ellipse_registry.h"
 #include "ellipse_collision/app/obstacle_persistence.h"
 #include "ellipse_collision/app/path_request.h"
 #include "ellipse_collision/app/placement_cache.h"
 #include "ellipse_collision/app/transform_lookup.h"
 #include "ellipse_collision/app/tunable_settings.h"
+#include "ellipse_collision/app/velocity_gate.h"
 
 namespace ellipse_collision::app {
 
@@ -34,7 +34,7 @@ struct MonitorSettings {
   double prediction_horizon_s{0.0};  ///< time-to-contact prediction [s]; 0 = off
   /// Longest wait before a change from ~obstacles reaches the store [s]; 0 = after every message.
   double obstacle_store_period_s{1.0};
-  GateConfig gate;  ///< the velocity gate (off by default)
+  GateConfig gate;  ///< the velocity gate at start-up (off by default); then gate().config()
 };
 
 /// Where the runtime obstacles are kept across a crash, and the launch they belong to.
@@ -127,24 +127,21 @@ class CollisionMonitor {
                              const std::function<TransformLookup(const std::string&)>& lookup_to);
 
   // ---- the velocity gate --------------------------------------------------------------------
-  /// One ~cmd_vel_in command at `now_s`: disabled, it passes unchanged (DISABLED); a non-finite
-  /// or absurd one stops, naming the field; otherwise a full check at the latest transforms
-  /// (recorded as state(), like a service call's) places the robot, and the gate decides on it
-  /// (decideOnScene()): obstacles move by their own velocity (vx, vy, angular_velocity), the
-  /// links rigidly with gate.robot_frame. Incomplete data (a frame unavailable or stale, the
-  /// robot frame unknown or stale, topic obstacles dropped by obstacle_timeout) stops with
-  /// INCOMPLETE under on_incomplete: stop; with pass, the reason says what is missing (the robot
-  /// frame's own pose is needed either way). `robot` gives transforms into gate.robot_frame's
-  /// parent chain: the robot frame's pose in the fixed frame (`latest`'s frame).
+  /// One ~cmd_vel_in command at `now_s`: screened by the gate (disabled: DISABLED; a non-finite
+  /// or absurd one stops, naming the field), otherwise a full check at the latest transforms
+  /// (recorded as state(), like a service call's) places the robot and the gate decides on it
+  /// (VelocityGate::decide()): obstacles move by their own velocity (vx, vy, angular_velocity),
+  /// the links rigidly with gate.robot_frame; topic obstacles dropped by obstacle_timeout count as
+  /// incomplete data.
   GateDecision gateCommand(const VelocityCommand& command, double now_s,
                            const TransformLookup& latest, const TransformAtLookup& at);
-  /// The silence rule: the first call at least cmd_vel_timeout after the last command (or after
-  /// the first call, when none came yet) returns one TIMEOUT decision (a zero command); nothing
-  /// before the next command. Nothing while the gate is disabled or the timeout is 0.
-  std::optional<GateDecision> gateWatchdog(double now_s);
+  /// The gate's silence rule (VelocityGate::watchdog()).
+  std::optional<GateDecision> gateWatchdog(double now_s) { return gate_.watchdog(now_s); }
   /// ~gate/set_enabled.
-  void setGateEnabled(bool enabled) { gate_enabled_ = enabled; }
-  bool gateEnabled() const { return gate_enabled_; }
+  void setGateEnabled(bool enabled) { gate_.setEnabled(enabled); }
+  bool gateEnabled() const { return gate_.enabled(); }
+  /// The velocity gate: its settings in force, its counts.
+  const VelocityGate& gate() const { return gate_; }
 
   // ---- obstacle changes -------------------------------------------------------------------
   /// ~add_obstacles: field rules, a transform for every frame, the registry's name rules, then
@@ -234,19 +231,10 @@ class CollisionMonitor {
   /// perception is gone.
   bool topic_obstacles_expired_{false};
 
-  // The velocity gate.
-  GateDecision decideGate(const VelocityCommand& command, double now_s,
-                          const TransformLookup& latest, const TransformAtLookup& at);
-  /// The gate's last action and reason, and its counts (STOP, INCOMPLETE and TIMEOUT stop).
-  void recordGate(const GateDecision& decision);
-  bool gate_enabled_{false};
-  bool gate_heard_{false};      ///< a command came, or the watchdog started counting
-  double last_command_s_{0.0};  ///< when the last command came (or the watchdog started)
-  bool timeout_sent_{false};    ///< the watchdog's zero went out since the last command
-  std::string last_gate_action_{"none"};
-  std::string last_gate_reason_;
-  std::uint64_t gate_stops_{0};
-  std::uint64_t gate_slowdowns_{0};
+  /// What the gate judges a command on: the robot frame and the obstacles' own motions from
+  /// the full check `outcome`.
+  GateView gateView(const CheckOutcome& outcome, double now_s, const TransformLookup& latest) const;
+  VelocityGate gate_;
 };
 
 }  // namespace ellipse_collision::app

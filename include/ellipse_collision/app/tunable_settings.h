@@ -3,8 +3,8 @@
 #include <optional>
 #include <string>
 
-#include "ellipse_collision/app/command_gate.h"
 #include "ellipse_collision/app/field_error.h"
+#include "ellipse_collision/app/gate_config.h"
 
 namespace ellipse_collision::app {
 
@@ -21,6 +21,24 @@ constexpr double kMaxDurationS = 3600.0;
 /// constant velocities predict well, and keeps |angular_velocity| * horizon within the core's turn
 /// limit for any turn rate a robot has.
 constexpr double kMaxPredictionHorizonS = 60.0;
+
+/// The range of one scalar parameter of the node: finite, >= 0, within [min, max] (max infinite:
+/// no upper bound), or exactly 0 when `zero_allowed` ("off").
+struct SettingRange {
+  const char* key;  ///< as in YAML and dynamic_reconfigure ("rate")
+  double min;
+  double max;
+  bool zero_allowed;
+};
+
+/// The one key -> range table of the node's scalar parameters (besides gate/, whose ranges are
+/// findInvalidGateSetting()'s): start-up (parseNodeConfig()) and reconfigure (findInvalidTunable())
+/// both read it. rate, prediction_horizon, tf_timeout, padding, warning_distance,
+/// max_transform_age, obstacle_timeout, obstacle_store_period, marker_refresh_period.
+const SettingRange& settingRange(const std::string& key);
+
+/// `value` against settingRange(key): the violation naming the key, or nothing.
+std::optional<FieldError> findOutsideSettingRange(const std::string& key, double value);
 
 /// The range rule of a scalar parameter: a finite number >= 0 ("a finite number >= 0"), within
 /// [min, max] ("a number within [min, max]"), or exactly 0 when `zero_allowed` (then "0 or a

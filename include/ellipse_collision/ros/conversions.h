@@ -1,14 +1,14 @@
 #pragma once
 
+#include <geometry_msgs/Twist.h>
+
 #include <string>
 #include <vector>
 
-#include <geometry_msgs/Twist.h>
-
 #include "ellipse_collision/app/collision_check.h"
-#include "ellipse_collision/app/command_gate.h"
 #include "ellipse_collision/app/ellipse_spec.h"
 #include "ellipse_collision/app/path_request.h"
+#include "ellipse_collision/app/velocity_gate.h"
 #include "ellipse_collision/core/contact_prediction.h"
 #include "ellipse_collision/core/scene_check.h"
 #include "ellipse_collision/ros/messages.h"

@@ -10,9 +10,10 @@
 #include <utility>
 #include <vector>
 
-#include "ellipse_collision/app/command_gate.h"
+#include "ellipse_collision/app/collision_monitor.h"
 #include "ellipse_collision/app/ellipse_registry.h"
 #include "ellipse_collision/app/ellipse_spec.h"
+#include "ellipse_collision/app/gate_config.h"
 #include "ellipse_collision/app/link_fitting.h"
 #include "ellipse_collision/app/scan_obstacles.h"
 #include "ellipse_collision/app/tunable_settings.h"
@@ -35,25 +36,21 @@ using app::kMinRateHz;
 constexpr double kMaxObstaclesLimit = 1e7;   ///< max_obstacles within [1, kMaxObstaclesLimit]
 constexpr double kMaxNameLengthLimit = 1e6;  ///< max_name_length within [1, kMaxNameLengthLimit]
 
+/// The node's defaults where they differ from the application layer's own: max_transform_age
+/// 0.5 s (config/ellipse_collision.yaml).
+app::MonitorSettings nodeMonitorDefaults();
+
 /// The node's private parameters (see config/ellipse_collision.yaml for the documentation).
 struct NodeConfig {
-  std::string fixed_frame{"base_link"};
-  std::string robot_frame{"base_link"};  ///< ~check_path's moving frame when the request has none
-  double prediction_horizon_s{0.0};      ///< time-to-contact prediction [s]; 0 = off
-  double rate_hz{10.0};       ///< periodic checks [Hz]; 0 = only on service calls, else [1e-3, 1e3]
-  double tf_timeout_s{0.1};   ///< how long a service call waits for a transform [s], [0, 3600]
-  double padding_m{0.0};      ///< added to both radii of every ellipse [m], [0, kMaxRadius]
-  bool self_collision{true};  ///< also check link against link
-  double warning_distance_m{0.0};  ///< separated pairs closer than this are warnings [m]; 0 = off
-  double max_transform_age_s{0.5};  ///< older non-static transforms are stale [s]; 0 = off
-  double obstacle_timeout_s{0.0};   ///< ~obstacles older than this are dropped [s]; 0 = never
+  /// What the application layer runs with, parsed straight into its settings: fixed_frame,
+  /// robot_frame, rate, padding, self_collision, warning_distance, max_transform_age,
+  /// obstacle_timeout, prediction_horizon, obstacle_store_period, allowed_pairs and gate/.
+  app::MonitorSettings monitor{nodeMonitorDefaults()};
+  double tf_timeout_s{0.1};  ///< how long a service call waits for a transform [s], [0, 3600]
   app::RegistryLimits limits;       ///< max_obstacles, max_name_length
   /// File that keeps the runtime obstacles across a crash; unset = defaultObstacleStore(),
   /// "" = off.
   std::optional<std::string> obstacle_store;
-  /// Longest wait before a change from ~obstacles (or its expiry) is written to the store [s];
-  /// 0 = after every message. The services' changes are written before they answer.
-  double obstacle_store_period_s{1.0};
   /// Every ~markers marker is sent again within this period, a slice per published array, so a
   /// subscriber that lost arrays heals [s]; 0 = off.
   double marker_refresh_period_s{10.0};
@@ -62,8 +59,6 @@ struct NodeConfig {
   /// geometry"); the node logs them at start-up.
   std::vector<std::string> urdf_links_skipped;
   std::vector<app::EllipseSpec> obstacles;
-  std::vector<std::pair<std::string, std::string>> allowed_pairs;
-  app::GateConfig gate;  ///< `gate/`: the velocity gate on ~cmd_vel_in (off by default)
 };
 
 /// How a configuration error reads, at start-up and when reconfigured: "<where>, key '<key>':

@@ -1,0 +1,115 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "ellipse_collision/app/collision_check.h"
+#include "ellipse_collision/app/gate_config.h"
+#include "ellipse_collision/app/transform_lookup.h"
+#include "ellipse_collision/app/velocity_command.h"
+#include "ellipse_collision/core/gate_action.h"
+#include "ellipse_collision/core/scene_check.h"
+
+namespace ellipse_collision::app {
+
+using core::GateAction;
+using core::stops;
+using core::toString;
+
+/// What the gate did with one command (the node's ~gate_state).
+struct GateDecision {
+  GateAction action{GateAction::Stop};
+  double scale{0.0};  ///< output = scale * input (1 for DISABLED)
+  VelocityCommand input;
+  VelocityCommand output;
+  /// A contact within the horizon under the output command (for STOP: of a moving obstacle with
+  /// the standing robot), else the limiting one that set the scale.
+  bool contact_predicted{false};
+  double time_to_contact_s{0.0};  ///< [s] from the command, when contact_predicted
+  std::string link;               ///< the limiting link and obstacle ("" when none)
+  std::string obstacle;
+  Eigen::Vector2d contact_point{0.0, 0.0};  ///< in the fixed frame [m], when contact_predicted
+  /// The links in the fixed frame at the predicted contact (or at the horizon when none), under
+  /// the output command: the robot's outline to draw. Empty when nothing was predicted.
+  std::vector<core::NamedEllipse> outline;
+  /// The limiting obstacle where it stands at the command, in the fixed frame (when `obstacle`).
+  core::Ellipse obstacle_ellipse;
+  std::string reason;  ///< why, in words a user reads
+};
+
+/// A zero-output decision of `action` for `input` with `reason`.
+GateDecision stoppedDecision(GateAction action, const VelocityCommand& input, std::string reason);
+
+/// The robot frame's pose in the fixed frame's plane: position [m] and heading [rad].
+struct PlanarPose {
+  Eigen::Vector2d position{0.0, 0.0};
+  double yaw{0.0};
+};
+
+/// The gate on a placed scene: `placed` (links and obstacles in the fixed frame) moved into the
+/// robot frame at `robot` (links rigidly with it, obstacles by `obstacle_motions`, one per placed
+/// entry, zero for links, in the fixed frame), then core::gateTwist() on the command's planar part
+/// (linear.x, linear.y, angular.z) and its answer put back into the fixed frame. A core error
+/// stops (an internal failure never passes).
+GateDecision gateOnScene(const VelocityCommand& command, const core::Scene& placed,
+                         const std::vector<core::Motion>& obstacle_motions, const PlanarPose& robot,
+                         const core::AllowedPairs& allowed, const GateConfig& config);
+
+/// What the gate judges a command on, gathered by the monitor from the full check it ran.
+struct GateView {
+  const CheckOutcome* outcome{nullptr};  ///< the full check (placed scene, completeness)
+  FrameTransform robot;                  ///< the robot frame in the fixed frame
+  std::string fixed_frame;
+  Freshness freshness;  ///< max_transform_age and now, for the robot frame
+  /// Obstacle sources whose data is gone ("obstacles from ~obstacles dropped, ..."): incomplete.
+  std::vector<std::string> silent_sources;
+  std::vector<core::Motion> obstacle_motions;  ///< one per placed entry, in the fixed frame
+  const core::AllowedPairs* allowed{nullptr};
+};
+
+/// The velocity gate's state and policy, without ROS: its settings, whether it is on, the
+/// watchdog on silence, the decision on each command and what it counts. Single-threaded.
+class VelocityGate {
+ public:
+  explicit VelocityGate(GateConfig config);
+
+  /// Settings in force (`enabled` as set at start-up, by set_enabled or reconfigure).
+  const GateConfig& config() const { return config_; }
+  /// New settings (already validated: findInvalidGateSetting()), from the next command on.
+  void configure(const GateConfig& config) { config_ = config; }
+  void setEnabled(bool enabled) { config_.enabled = enabled; }
+  bool enabled() const { return config_.enabled; }
+
+  /// A command arrives at `now_s`: the decision when it needs no check (disabled: DISABLED;
+  /// non-finite or absurd: STOP naming the field), recorded; nothing when it must be judged on a
+  /// check (then decide()).
+  std::optional<GateDecision> screen(const VelocityCommand& command, double now_s);
+  /// The decision on a full check: STOP when it failed, INCOMPLETE without a fresh robot frame or
+  /// (on_incomplete: stop) with data missing, otherwise gateOnScene(); recorded.
+  GateDecision decide(const VelocityCommand& command, const GateView& view);
+  /// The silence rule: the first call at least cmd_vel_timeout after the last command (or after
+  /// the first call, when none came yet) returns one TIMEOUT decision (a zero command); nothing
+  /// before the next command. Nothing while the gate is disabled or the timeout is 0.
+  std::optional<GateDecision> watchdog(double now_s);
+
+  /// The gate's values for /diagnostics ("gate", "gate reason", "gate stops", "gate slow-downs").
+  std::vector<std::pair<std::string, std::string>> healthValues() const;
+
+ private:
+  GateDecision record(GateDecision decision);
+
+  GateConfig config_;
+  bool heard_{false};           ///< a command came, or the watchdog started counting
+  double last_command_s_{0.0};  ///< when the last command came (or the watchdog started)
+  bool timeout_sent_{false};    ///< the watchdog's zero went out since the last command
+  std::string last_action_{"none"};
+  std::string last_reason_;
+  std::uint64_t stops_{0};
+  std::uint64_t slowdowns_{0};
+};
+
+}  // namespace ellipse_collision::app

@@ -1,0 +1,49 @@
+#include "ellipse_collision/app/gate_config.h"
+
+#include "ellipse_collision/core/number_format.h"
+
+namespace ellipse_collision::app {
+
+const char* toString(OnIncomplete policy) { return policy == OnIncomplete::Stop ? "stop" : "pass"; }
+
+std::optional<FieldError> parseOnIncomplete(const std::string& text, OnIncomplete* policy) {
+  for (const OnIncomplete candidate : {OnIncomplete::Stop, OnIncomplete::Pass}) {
+    if (text == toString(candidate)) {
+      *policy = candidate;
+      return std::nullopt;
+    }
+  }
+  return FieldError{"gate/on_incomplete", "'stop' or 'pass'", "'" + text + "'"};
+}
+
+std::optional<FieldError> findInvalidGateSetting(const GateConfig& config) {
+  if (config.robot_frame.empty()) {
+    return FieldError{"gate/robot_frame", "a non-empty tf frame id", "''"};
+  }
+  if (config.robot_frame.front() == '/') {
+    return FieldError{"gate/robot_frame", "a tf2 frame id without a leading '/'",
+                      "'" + config.robot_frame + "'"};
+  }
+  // The core's ranges, in the words of the configuration.
+  if (const auto v = core::findInvalidGateSettings(config.timing)) {
+    FieldError e = *findOutsideRange(std::string("gate/") + v->field, v->value, v->min, v->max,
+                                     v->min_excluded);
+    if (v->max_field) e.expected += std::string(" (at most gate/") + v->max_field + ")";
+    return e;
+  }
+  if (auto e = findOutsideRange("gate/cmd_vel_timeout", config.cmd_vel_timeout_s, 0.0,
+                                core::kMaxGateHorizonS)) {
+    return e;
+  }
+  if (auto e = findOutsideRange("gate/max_linear_speed", config.max_linear_speed, 0.0,
+                                kMaxGateSpeed, true)) {
+    return e;
+  }
+  if (auto e = findOutsideRange("gate/max_angular_speed", config.max_angular_speed, 0.0,
+                                kMaxGateTurnRate, true)) {
+    return e;
+  }
+  return std::nullopt;
+}
+
+}  // namespace ellipse_collision::app

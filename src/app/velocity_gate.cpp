@@ -1,0 +1,214 @@
+#include "ellipse_collision/app/velocity_gate.h"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include "ellipse_collision/core/number_format.h"
+#include "ellipse_collision/core/velocity_gate.h"
+
+namespace ellipse_collision::app {
+namespace {
+
+/// A 2D rigid motion: from the fixed frame's plane into the robot frame at t = 0, and back.
+struct PlaneTransform {
+  Eigen::Matrix2d rotation;  ///< robot axes in the fixed frame
+  Eigen::Vector2d origin;
+  double yaw;
+  explicit PlaneTransform(const PlanarPose& robot) : origin(robot.position), yaw(robot.yaw) {
+    rotation << std::cos(yaw), -std::sin(yaw), std::sin(yaw), std::cos(yaw);
+  }
+  core::Ellipse toRobot(core::Ellipse e) const {
+    e.center = rotation.transpose() * (e.center - origin);
+    e.angle -= yaw;
+    return e;
+  }
+  core::Ellipse toFixed(core::Ellipse e) const {
+    e.center = rotation * e.center + origin;
+    e.angle += yaw;
+    return e;
+  }
+  Eigen::Vector2d pointToFixed(const Eigen::Vector2d& p) const { return rotation * p + origin; }
+  core::Motion toRobot(core::Motion m) const {
+    m.velocity = rotation.transpose() * m.velocity;
+    return m;
+  }
+};
+
+}  // namespace
+
+GateDecision stoppedDecision(GateAction action, const VelocityCommand& input, std::string reason) {
+  GateDecision decision;
+  decision.action = action;
+  decision.scale = 0.0;
+  decision.input = input;
+  decision.output = VelocityCommand();
+  decision.reason = std::move(reason);
+  return decision;
+}
+
+GateDecision gateOnScene(const VelocityCommand& command, const core::Scene& placed,
+                         const std::vector<core::Motion>& obstacle_motions, const PlanarPose& robot,
+                         const core::AllowedPairs& allowed, const GateConfig& config) {
+  const PlaneTransform frame(robot);
+  const core::Twist twist{command.linear.x(), command.linear.y(), command.angular.z()};
+  const double horizon = config.timing.horizon;
+  core::PathScene scene;
+  scene.allowed = allowed;
+  double reach = 0.0;  // every link stays within this of the robot frame's origin at t = 0
+  for (std::size_t i = 0; i < placed.size(); ++i) {
+    if (placed.role(i) == core::EllipseRole::Obstacle) continue;
+    core::NamedEllipse link = placed.entry(i);
+    link.ellipse = frame.toRobot(link.ellipse);
+    reach = std::max(reach, link.ellipse.center.norm() + core::boundingRadius(link.ellipse));
+    scene.links.push_back(std::move(link));
+  }
+  // Only obstacles that can come within reach are handed on (their names copied): the core's own
+  // broadphase would rule the others out, so the answer is the same. The robot's origin moves at
+  // most |v| horizon (an arc is no longer than its chord's path), a link point at most
+  // |v| horizon + reach from the origin at t = 0.
+  reach += std::hypot(twist.vx, twist.vy) * horizon + config.timing.margin;
+  for (std::size_t i = 0; i < placed.size(); ++i) {
+    if (placed.role(i) != core::EllipseRole::Obstacle) continue;
+    const core::Ellipse& e = placed.ellipse(i);
+    const core::Motion& motion = obstacle_motions[i];
+    const double sweep = motion.velocity.norm() * horizon;
+    if ((e.center - frame.origin).norm() > reach + core::boundingRadius(e) + sweep) continue;
+    scene.obstacles.push_back({placed.name(i), core::EllipseRole::Obstacle, frame.toRobot(e)});
+    scene.obstacle_motions.push_back(frame.toRobot(motion));
+  }
+  const core::GateResult result = core::gateTwist(scene, twist, config.timing);
+  if (!result.ok()) {
+    return stoppedDecision(GateAction::Stop, command,
+                           "stopped: the command could not be judged: " + result.error);
+  }
+  GateDecision decision;
+  decision.action = result.action;
+  decision.scale = result.scale;
+  decision.input = command;
+  decision.output = scaledCommand(command, result.scale);
+  decision.reason = result.reason;
+  const core::GateContact& shown = result.contact.found ? result.contact : result.limiting;
+  if (shown.found) {
+    decision.contact_predicted = true;
+    decision.time_to_contact_s = shown.time;
+    decision.link = shown.link;
+    decision.obstacle = shown.obstacle;
+    decision.contact_point = frame.pointToFixed(shown.point);
+    for (const core::NamedEllipse& obstacle : scene.obstacles) {
+      if (obstacle.name == shown.obstacle)
+        decision.obstacle_ellipse = frame.toFixed(obstacle.ellipse);
+    }
+  }
+  // The robot where the output command takes it: at the contact, or at the horizon.
+  const core::Twist output = core::scaled(twist, result.scale);
+  const double at = result.contact.found ? result.contact.time : horizon;
+  for (core::NamedEllipse& link : core::linksAtTime(scene.links, output, at)) {
+    link.ellipse = frame.toFixed(link.ellipse);
+    decision.outline.push_back(std::move(link));
+  }
+  return decision;
+}
+
+VelocityGate::VelocityGate(GateConfig config) : config_(std::move(config)) {}
+
+GateDecision VelocityGate::record(GateDecision decision) {
+  last_action_ = toString(decision.action);
+  last_reason_ = decision.reason;
+  if (stops(decision.action)) ++stops_;
+  if (decision.action == GateAction::Slow) ++slowdowns_;
+  return decision;
+}
+
+std::optional<GateDecision> VelocityGate::screen(const VelocityCommand& command, double now_s) {
+  heard_ = true;
+  last_command_s_ = now_s;
+  timeout_sent_ = false;
+  if (!config_.enabled) {
+    GateDecision decision;
+    decision.action = GateAction::Disabled;
+    decision.scale = 1.0;
+    decision.input = command;
+    decision.output = command;
+    decision.reason = "the gate is disabled: commands pass unchanged";
+    return record(std::move(decision));
+  }
+  if (const auto invalid = findInvalidCommand(command, config_)) {
+    return record(
+        stoppedDecision(GateAction::Stop, command,
+                        "stopped: refused command: " + describeFieldError("cmd_vel", *invalid)));
+  }
+  return std::nullopt;
+}
+
+GateDecision VelocityGate::decide(const VelocityCommand& command, const GateView& view) {
+  const CheckOutcome& outcome = *view.outcome;
+  if (!outcome.error.empty()) {
+    return record(
+        stoppedDecision(GateAction::Stop, command, "stopped: the check failed: " + outcome.error));
+  }
+  const FrameTransform& robot = view.robot;
+  if (!robot.ok || isStale(robot, view.freshness)) {
+    // Without the robot's own pose there is nothing to gate on, whatever on_incomplete says.
+    return record(stoppedDecision(
+        GateAction::Incomplete, command,
+        "stopped: robot_frame '" + config_.robot_frame + "': " +
+            (robot.ok ? "its transform to '" + view.fixed_frame + "' is " +
+                            core::formatNumber(ageOf(robot, view.freshness)) +
+                            " s old, older than max_transform_age " +
+                            core::formatNumber(view.freshness.max_age_s) + " s"
+                      : "no transform to '" + view.fixed_frame + "' (" + robot.error + ")")));
+  }
+  std::vector<std::string> missing;
+  if (!outcome.unavailable_frames.empty()) {
+    missing.push_back("frames unavailable: " + joinText(outcome.unavailable_frames, ", "));
+  }
+  if (!outcome.stale_frames.empty()) {
+    missing.push_back("frames stale: " + joinText(outcome.stale_frames, ", "));
+  }
+  if (!outcome.complete && missing.empty()) {
+    missing.push_back("skipped: " + joinText(outcome.skipped, "; "));
+  }
+  missing.insert(missing.end(), view.silent_sources.begin(), view.silent_sources.end());
+  if (!missing.empty() && config_.on_incomplete == OnIncomplete::Stop) {
+    return record(stoppedDecision(
+        GateAction::Incomplete, command,
+        "stopped: incomplete data (on_incomplete: stop): " + joinText(missing, "; ")));
+  }
+  // The robot frame's pose in the fixed frame's plane (its heading from its x axis).
+  const Eigen::Isometry3d& pose = robot.fixed_from_frame;
+  PlanarPose planar;
+  planar.position = pose.translation().head<2>();
+  planar.yaw = std::atan2(pose.linear()(1, 0), pose.linear()(0, 0));
+  GateDecision decision =
+      gateOnScene(command, outcome.placed, view.obstacle_motions, planar, *view.allowed, config_);
+  if (!missing.empty()) {
+    decision.reason +=
+        " (incomplete data, passed by on_incomplete: pass: " + joinText(missing, "; ") + ")";
+  }
+  return record(std::move(decision));
+}
+
+std::optional<GateDecision> VelocityGate::watchdog(double now_s) {
+  const double timeout = config_.cmd_vel_timeout_s;
+  if (!config_.enabled || !(timeout > 0.0)) return std::nullopt;
+  if (!heard_ || now_s < last_command_s_) {  // the first call, or time jumped back
+    heard_ = true;
+    last_command_s_ = now_s;
+    return std::nullopt;
+  }
+  if (timeout_sent_ || now_s - last_command_s_ < timeout) return std::nullopt;
+  timeout_sent_ = true;
+  return record(stoppedDecision(GateAction::Timeout, VelocityCommand(),
+                                "stopped: no command on ~cmd_vel_in within cmd_vel_timeout " +
+                                    core::formatNumber(timeout) + " s of the last one"));
+}
+
+std::vector<std::pair<std::string, std::string>> VelocityGate::healthValues() const {
+  return {{"gate", !config_.enabled ? "disabled" : last_action_},
+          {"gate reason", last_reason_},
+          {"gate stops", std::to_string(stops_)},
+          {"gate slow-downs", std::to_string(slowdowns_)}};
+}
+
+}  // namespace ellipse_collision::app
