@@ -436,7 +436,7 @@ TEST(NodeConfig, PaddedRadiiBeyondTheCoreRangeStopTheNode) {
 }
 
 TEST(NodeConfig, TheGateIsOffByDefaultAndItsKeysAreReadAndRangeChecked) {
-  EXPECT_FALSE(parseNodeConfig(validParams()).gate.enabled);
+  EXPECT_FALSE(parseNodeConfig(validParams()).monitor.gate.enabled);
   XmlRpcValue p = validParams();
   p["gate"]["enabled"] = true;
   p["gate"]["robot_frame"] = "base_footprint";
