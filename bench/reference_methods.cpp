@@ -9,7 +9,7 @@
 #include <utility>
 
 #include "ellipse_collision/core/distance.h"
-#include "ellipse_collision/core/eigenvalue_test.h"
+#include "ellipse_collision/core/contact_scale.h"
 #include "ellipse_collision/core/overlap.h"
 #include "rotating_contact.h"
 

@@ -19,9 +19,9 @@ endfunction()
 # ---- core (test/core): link the core alone, so a stray ROS dependency fails the build ----------
 ellipse_collision_add_gtest(test_core LIBRARIES ellipse_collision_core quadmath SOURCES
   test/core/test_ellipse.cpp
-  test/core/test_eigenvalue_test.cpp
+  test/core/test_contact_scale.cpp
   test/core/test_contact_scale_quartic.cpp
-  test/core/test_polygonal_test.cpp
+  test/core/test_polygonal_early_out.cpp
   test/core/test_overlap_accuracy.cpp
   test/core/test_early_outs.cpp
   test/core/test_batch_overlap.cpp
