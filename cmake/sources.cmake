@@ -24,6 +24,7 @@ set(ELLIPSE_COLLISION_CORE_SOURCES
   src/core/pair_culling.cpp
   src/core/pair_line_parser.cpp
   src/core/path_check.cpp
+  src/core/pair_collector.cpp
   src/core/path_motion.cpp
   src/core/point_clusters.cpp
   src/core/free_space.cpp
