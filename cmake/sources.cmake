@@ -33,6 +33,9 @@ set(ELLIPSE_COLLISION_CORE_SOURCES
   src/core/prepared_ellipse.cpp
   src/core/relative_shape.cpp
   src/core/rotating_contact.cpp
+  src/core/rotating_pair.cpp
+  src/core/rotating_separation.cpp
+  src/core/rotating_step_bounds.cpp
   src/core/scene.cpp
   src/core/scene_check.cpp
   src/core/scene_entry_ref.cpp
