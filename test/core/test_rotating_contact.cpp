@@ -1,10 +1,11 @@
 // detail::rotatingContact() (src/core/rotating_contact.*) on its own, against an oracle that
 // shares none of its code: the pair's poses at t evaluated in long double from the motion (a's
 // centre on its arc integrated in closed form), overlap judged by the quad-precision contact scale
-// (contact_scale_oracle.h), the first contact found by dense sampling and bisection. Transversal
-// crossings only (pairs that come within a few percent of grazing are left to the grazing
-// families of test_first_contact, test_path_check and test_velocity_gate): the answer must never
-// be late and at most the resolution early. Also largestCentreSpeed() against dense sampling.
+// (contact_scale_oracle.h), the first contact found by dense sampling, golden-section search of
+// the sampled minima near 1 and bisection. Transversal crossings only (a pair whose minimum comes
+// within 1e-6 of touching is left to the grazing families of test_first_contact,
+// test_path_check and test_velocity_gate): the answer must never be late and at most the
+// resolution early. Also largestCentreSpeed() against dense sampling.
 
 #include <gtest/gtest.h>
 
@@ -26,11 +27,11 @@ using Long = long double;
 using detail::RotatingPair;
 
 // Samples of the oracle over the horizon, and the bisection steps on the first crossing.
-constexpr int kSamples = 2000;
+constexpr int kSamples = 500;
 constexpr int kBisections = 60;
 // A sampled local minimum of the contact scale below this, before the first crossing, may hide a
-// grazing contact between samples: such pairs are not judged here.
-constexpr double kGrazingMargin = 1.02;
+// contact between the samples: it is refined.
+constexpr double kGrazingMargin = 1.1;
 // The oracle's poses are rounded to double: its crossing time is exact to about this [horizon].
 constexpr double kOracleSlack = 1e-12;
 
@@ -70,28 +71,50 @@ struct OracleAnswer {
   double time{0.0};  // the first crossing of scale 1 [s]
 };
 
+// The first t in [lo, hi] where the scale is <= 1, given it is > 1 at lo and <= 1 at hi.
+Long firstCrossing(const RotatingPair& p, Long lo, Long hi) {
+  for (int i = 0; i < kBisections; ++i) {
+    const Long mid = (lo + hi) / 2;
+    (scaleAt(p, mid) <= 1.0 ? hi : lo) = mid;
+  }
+  return hi;
+}
+
 OracleAnswer oracleFirstContact(const RotatingPair& p, double horizon) {
   OracleAnswer answer;
+  const auto timeOf = [horizon](int k) { return Long(horizon) * k / kSamples; };
+  const auto contactAt = [&](Long lo, Long hi) {
+    answer.contact = true;
+    answer.time = static_cast<double>(firstCrossing(p, lo, hi));
+    // Transversal: overlapping by a percent of the scale a hundredth of the horizon later (or
+    // at the horizon).
+    const Long deeper = std::min(Long(answer.time) + Long(horizon) / 100, Long(horizon));
+    answer.judged = deeper == Long(answer.time) || scaleAt(p, deeper) < 0.99;
+    return answer;
+  };
   double before = scaleAt(p, 0.0), previous = before;
   if (!(before > kGrazingMargin)) return answer;  // apart at t = 0 with room to spare
   for (int k = 1; k <= kSamples; ++k) {
-    const Long t = Long(horizon) * k / kSamples;
-    const double scale = scaleAt(p, t);
-    if (scale <= 1.0) {
-      Long lo = Long(horizon) * (k - 1) / kSamples, hi = t;
-      for (int i = 0; i < kBisections; ++i) {
-        const Long mid = (lo + hi) / 2;
-        (scaleAt(p, mid) <= 1.0 ? hi : lo) = mid;
+    const double scale = scaleAt(p, timeOf(k));
+    if (scale <= 1.0) return contactAt(timeOf(k - 1), timeOf(k));
+    // A sampled local minimum near 1 may hide a contact between the samples: the minimum is
+    // refined by golden-section search between the neighbours of sample k - 1.
+    if (k >= 2 && scale > previous && previous < before && previous < kGrazingMargin) {
+      Long lo = timeOf(k - 2), hi = timeOf(k);
+      const Long golden = (std::sqrt(Long(5)) - 1) / 2;
+      Long x1 = hi - golden * (hi - lo), x2 = lo + golden * (hi - lo);
+      double f1 = scaleAt(p, x1), f2 = scaleAt(p, x2);
+      for (int i = 0; i < kBisections && f1 > 1.0 && f2 > 1.0; ++i) {
+        if (f1 < f2) {
+          hi = x2, x2 = x1, f2 = f1, x1 = hi - golden * (hi - lo), f1 = scaleAt(p, x1);
+        } else {
+          lo = x1, x1 = x2, f1 = f2, x2 = lo + golden * (hi - lo), f2 = scaleAt(p, x2);
+        }
       }
-      // Transversal: clearly overlapping a hundredth of the horizon later (or at the horizon).
-      const Long deeper = std::min(hi + Long(horizon) / 100, Long(horizon));
-      answer.judged = deeper == hi || scaleAt(p, deeper) < 1.0 / kGrazingMargin;
-      answer.contact = true;
-      answer.time = static_cast<double>(hi);
-      return answer;
+      if (f1 <= 1.0) return contactAt(timeOf(k - 2), x1);
+      if (f2 <= 1.0) return contactAt(timeOf(k - 2), x2);
+      if (std::min(f1, f2) < 1.0 + 1e-6) return answer;  // a tangency: not judged here
     }
-    // A local minimum near 1 between samples may be a grazing contact the samples miss.
-    if (scale > previous && previous < before && previous < kGrazingMargin) return answer;
     before = previous;
     previous = scale;
   }
@@ -116,21 +139,19 @@ RotatingPair pairOf(const Ellipse& a, double wa, const Eigen::Vector2d& a_arc_ve
   return detail::rotatingPair(a, Eigen::Vector2d::Zero(), a_arc_velocity, wa, b, motion_b);
 }
 
-// Checks the answer against the oracle; returns whether the pair was judged.
-bool expectAgreesWithOracle(const RotatingPair& p, double horizon) {
-  const OracleAnswer oracle = oracleFirstContact(p, horizon);
-  if (!oracle.judged) return false;
+// Checks the answer against the oracle's (not judged: nothing to check).
+void expectAgreesWithOracle(const RotatingPair& p, double horizon, const OracleAnswer& oracle) {
+  if (!oracle.judged) return;
   detail::RotationWork work;
   const FirstContact found = detail::rotatingContact(p, horizon, &work);
   EXPECT_FALSE(work.capped) << describe(p, horizon);
   EXPECT_GT(work.distance_calls, 0) << describe(p, horizon);
   EXPECT_EQ(found.contact, oracle.contact) << describe(p, horizon);
-  if (!found.contact || !oracle.contact) return true;
+  if (!found.contact || !oracle.contact) return;
   // Never late, at most one resolution early.
   EXPECT_LE(found.time, oracle.time + kOracleSlack * horizon) << describe(p, horizon);
   EXPECT_GE(found.time, oracle.time - (detail::kRotationResolution + kOracleSlack) * horizon)
       << describe(p, horizon);
-  return true;
 }
 
 TEST(RotatingContact, TwoTurningEllipsesMeetNeverLateWithinResolution) {
@@ -138,7 +159,7 @@ TEST(RotatingContact, TwoTurningEllipsesMeetNeverLateWithinResolution) {
                                 {{3.0, 0.2}, 0.8, 0.2, 0.5}, Motion{{-1.0, 0.0}, -3.0});
   const OracleAnswer oracle = oracleFirstContact(p, 3.0);
   ASSERT_TRUE(oracle.judged && oracle.contact) << describe(p, 3.0);
-  EXPECT_TRUE(expectAgreesWithOracle(p, 3.0));
+  expectAgreesWithOracle(p, 3.0, oracle);
 }
 
 TEST(RotatingContact, TurningNeedleSweepsIntoDisc) {
@@ -149,17 +170,19 @@ TEST(RotatingContact, TurningNeedleSweepsIntoDisc) {
   const OracleAnswer oracle = oracleFirstContact(p, 2.0);
   ASSERT_TRUE(oracle.judged && oracle.contact) << describe(p, 2.0);
   EXPECT_NEAR(oracle.time, 0.31, 0.05);
-  EXPECT_TRUE(expectAgreesWithOracle(p, 2.0));
+  expectAgreesWithOracle(p, 2.0, oracle);
 }
 
 TEST(RotatingContact, LinkOnAnArcMeetsApproachingObstacle) {
-  // a's centre on an arc of radius 1 about (-1, 0), as a link of a turning frame.
+  // a's centre on an arc of radius 1 about (-1, 0), as a link of a turning frame; they meet about
+  // 1.1 s in.
   const RotatingPair p = pairOf({{0.0, 0.0}, 0.5, 0.2, 0.3}, 1.0, {0.0, 1.0},
-                                {{2.0, 0.5}, 0.3, 0.3, 0.0}, Motion{{-0.8, 0.0}, 0.0});
+                                {{2.0, 0.5}, 0.3, 0.3, 0.0}, Motion{{-2.0, 0.0}, 0.0});
   ASSERT_TRUE(p.hasArc());
-  const OracleAnswer oracle = oracleFirstContact(p, 4.0);
-  ASSERT_TRUE(oracle.judged && oracle.contact) << describe(p, 4.0);
-  EXPECT_TRUE(expectAgreesWithOracle(p, 4.0));
+  const OracleAnswer oracle = oracleFirstContact(p, 2.0);
+  ASSERT_TRUE(oracle.judged && oracle.contact) << describe(p, 2.0);
+  EXPECT_NEAR(oracle.time, 1.1, 0.2);
+  expectAgreesWithOracle(p, 2.0, oracle);
 }
 
 TEST(RotatingContact, ClearPassIsClear) {
@@ -168,13 +191,13 @@ TEST(RotatingContact, ClearPassIsClear) {
                                 {{-4.0, 1.7}, 0.2, 0.1, 0.0}, Motion{{2.0, 0.0}, 1.0});
   const OracleAnswer oracle = oracleFirstContact(p, 4.0);
   ASSERT_TRUE(oracle.judged && !oracle.contact) << describe(p, 4.0);
-  EXPECT_TRUE(expectAgreesWithOracle(p, 4.0));
+  expectAgreesWithOracle(p, 4.0, oracle);
 }
 
 TEST(RotatingContact, RandomTurningPairsAgreeWithOracle) {
   ellipse_collision::test::RandomSource random(40);
   int judged = 0, contacts = 0;
-  const int pairs = 24;
+  const int pairs = 12;
   for (int i = 0; i < pairs; ++i) {
     const double radius_a = random.uniform(0.2, 1.0), radius_b = random.uniform(0.1, 0.8);
     const Ellipse a{
@@ -195,15 +218,15 @@ TEST(RotatingContact, RandomTurningPairsAgreeWithOracle) {
                       : Eigen::Vector2d::Zero();
     const RotatingPair p = pairOf(a, wa, arc, b, motion_b);
     const double horizon = 3.0;
-    if (expectAgreesWithOracle(p, horizon)) {
-      ++judged;
-      contacts += oracleFirstContact(p, horizon).contact ? 1 : 0;
-    }
+    const OracleAnswer oracle = oracleFirstContact(p, horizon);
+    expectAgreesWithOracle(p, horizon, oracle);
+    judged += oracle.judged ? 1 : 0;
+    contacts += oracle.judged && oracle.contact ? 1 : 0;
   }
   std::printf("random turning pairs: %d of %d judged, %d in contact\n", judged, pairs, contacts);
   // Enough of both kinds for the family to mean something.
   EXPECT_GE(judged, pairs / 2);
-  EXPECT_GE(contacts, 4);
+  EXPECT_GE(contacts, 3);
   EXPECT_GE(judged - contacts, 2);
 }
 
@@ -223,12 +246,12 @@ TEST(RotatingContact, UntilStopsBeforeALaterContactAndKeepsAnEarlierOne) {
 
 TEST(RotatingContact, LargestCentreSpeedBoundsSampledSpeedTightly) {
   ellipse_collision::test::RandomSource random(41);
-  for (int i = 0; i < 40; ++i) {
+  for (int i = 0; i < 12; ++i) {
     const Eigen::Vector2d w(random.uniform(-2.0, 2.0), random.uniform(-2.0, 2.0));
     const Eigen::Vector2d v(random.uniform(-2.0, 2.0), random.uniform(-2.0, 2.0));
     const double turn = random.uniform(-7.0, 7.0);
     Long sampled = 0;
-    constexpr int kSpeedSamples = 100000;
+    constexpr int kSpeedSamples = 20000;
     for (int k = 0; k <= kSpeedSamples; ++k) {
       const Long s = Long(turn) * k / kSpeedSamples, c = std::cos(s), sn = std::sin(s);
       const Long x = w.x() - (c * v.x() - sn * v.y()), y = w.y() - (sn * v.x() + c * v.y());
@@ -236,8 +259,8 @@ TEST(RotatingContact, LargestCentreSpeedBoundsSampledSpeedTightly) {
     }
     const double bound = detail::largestCentreSpeed(w, v, turn);
     EXPECT_GE(bound, static_cast<double>(sampled)) << i;
-    // The samples miss the maximum by at most |w| |v| (step)^2 / 2 over it.
-    EXPECT_LE(bound, static_cast<double>(sampled) * (1.0 + 1e-8)) << i;
+    // The samples miss the maximum by at most |w| |v| step^2 / 2 (step <= 3.5e-4 rad) over it.
+    EXPECT_LE(bound, static_cast<double>(sampled) * (1.0 + 1e-6)) << i;
   }
 }
 
