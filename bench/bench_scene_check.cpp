@@ -39,7 +39,7 @@
 #include "bench_scenes.h"
 #include "scene_test_helpers.h"
 #include "ellipse_collision/core/broadphase.h"
-#include "ellipse_collision/core/eigenvalue_test.h"
+#include "ellipse_collision/core/contact_scale.h"
 #include "ellipse_collision/core/indexed_obstacles.h"
 #include "ellipse_collision/core/overlap.h"
 #include "ellipse_collision/core/prepared_ellipse.h"

@@ -9,7 +9,7 @@
 #include <utility>
 
 #include "ellipse_collision/core/distance.h"
-#include "ellipse_collision/core/eigenvalue_test.h"
+#include "ellipse_collision/core/contact_scale.h"
 #include "ellipse_collision/core/overlap.h"
 #include "rotating_contact.h"
 
@@ -227,7 +227,7 @@ FirstContact secantFirstContact(const Ellipse& a, const Motion& motion_a, const 
 
 // ---- plain conservative advancement: rotating first contacts before the second-order steps ----
 // Steps of D / V on the exact distance (Mirtich 1996; Zhang, Lee, Kim, Manocha 2006), V a bound on
-// how fast the rims approach (rotating_contact.cpp derives it): certified never late, but near a
+// how fast the rims approach (doc/rotating_contact.md derives it): certified never late, but near a
 // grazing pass the steps shrink with the gap (about sqrt(size / gap) of them), so the pair is
 // reported in contact once the distance is within the grazing band, or at the cap.
 namespace plain {

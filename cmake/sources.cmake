@@ -5,10 +5,10 @@ set(ELLIPSE_COLLISION_CORE_SOURCES
   src/core/batch_overlap.cpp
   src/core/broadphase.cpp
   src/core/contact_prediction.cpp
+  src/core/contact_scale.cpp
   src/core/contact_scale_quartic.cpp
   src/core/distance.cpp
   src/core/ellipse_polygon.cpp
-  src/core/eigenvalue_test.cpp
   src/core/ellipse.cpp
   src/core/ellipsoid.cpp
   src/core/enclosing_ellipsoid.cpp
@@ -25,14 +25,18 @@ set(ELLIPSE_COLLISION_CORE_SOURCES
   src/core/pair_culling.cpp
   src/core/pair_line_parser.cpp
   src/core/path_check.cpp
+  src/core/pair_collector.cpp
   src/core/path_motion.cpp
   src/core/point_clusters.cpp
   src/core/free_space.cpp
   src/core/scan_contours.cpp
-  src/core/polygonal_test.cpp
+  src/core/polygonal_early_out.cpp
   src/core/prepared_ellipse.cpp
   src/core/relative_shape.cpp
   src/core/rotating_contact.cpp
+  src/core/rotating_pair.cpp
+  src/core/rotating_separation.cpp
+  src/core/rotating_step_bounds.cpp
   src/core/scene.cpp
   src/core/scene_check.cpp
   src/core/scene_entry_ref.cpp

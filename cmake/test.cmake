@@ -19,9 +19,9 @@ endfunction()
 # ---- core (test/core): link the core alone, so a stray ROS dependency fails the build ----------
 ellipse_collision_add_gtest(test_core LIBRARIES ellipse_collision_core quadmath SOURCES
   test/core/test_ellipse.cpp
-  test/core/test_eigenvalue_test.cpp
+  test/core/test_contact_scale.cpp
   test/core/test_contact_scale_quartic.cpp
-  test/core/test_polygonal_test.cpp
+  test/core/test_polygonal_early_out.cpp
   test/core/test_overlap_accuracy.cpp
   test/core/test_early_outs.cpp
   test/core/test_batch_overlap.cpp
@@ -55,6 +55,14 @@ ellipse_collision_add_gtest(test_first_contact LIBRARIES ellipse_collision_core 
   test/support/grazing_passes.cpp)
 # src/core for rotating_contact.h: the grazing tests count the rotating path's work.
 target_include_directories(test_first_contact PRIVATE ${PROJECT_SOURCE_DIR}/src/core)
+
+# The rotating pairs' first contact on its own: never late and within its resolution against
+# long double poses, the quad contact scale sampled densely and bisected.
+ellipse_collision_add_gtest(test_rotating_contact LIBRARIES ellipse_collision_core quadmath SOURCES
+  test/core/test_rotating_contact.cpp
+  test/support/contact_scale_oracle.cpp)
+# src/core for rotating_contact.h, an internal header.
+target_include_directories(test_rotating_contact PRIVATE ${PROJECT_SOURCE_DIR}/src/core)
 
 # Continuous path checks against the quad oracle and brute force over every pair.
 ellipse_collision_add_gtest(test_path_check LIBRARIES ellipse_collision_core quadmath SOURCES

@@ -29,7 +29,7 @@
 #include "ellipse_collision/core/distance.h"
 #include "ellipse_collision/ellipse_collision.h"
 #include "ellipse_collision/core/scene_check.h"
-#include "eigenvalue_test_detail.h"
+#include "contact_scale_detail.h"
 #include "fuzz_input.h"
 #include "relative_shape.h"
 

@@ -22,7 +22,7 @@
 #include <limits>
 #include <string>
 
-#include "ellipse_collision/core/eigenvalue_test.h"
+#include "ellipse_collision/core/contact_scale.h"
 #include "ellipse_collision/core/first_contact.h"
 #include "ellipse_collision/core/overlap.h"
 #include "fuzz_input.h"

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include "eigenvalue_test_detail.h"
+#include "contact_scale_detail.h"
 
 namespace ellipse_collision::core::detail {
 namespace {

@@ -3,7 +3,7 @@
 #include <Eigen/Core>
 
 #include "ellipse_collision/core/ellipse.h"
-#include "ellipse_collision/core/polygonal_test.h"
+#include "ellipse_collision/core/polygonal_early_out.h"
 #include "sin_cos.h"
 
 namespace ellipse_collision::core::detail {

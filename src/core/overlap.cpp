@@ -3,12 +3,12 @@
 #include <Eigen/Core>
 
 #include "centre_line_test.h"
-#include "eigenvalue_test_detail.h"
+#include "contact_scale_detail.h"
 #include "one_point_test.h"
-#include "ellipse_collision/core/polygonal_test.h"
+#include "ellipse_collision/core/polygonal_early_out.h"
 #include "ellipse_collision/core/prepared_ellipse.h"
 #include "overlap_detail.h"
-#include "polygonal_test_detail.h"
+#include "polygonal_early_out_detail.h"
 #include "relative_shape.h"
 
 namespace ellipse_collision::core {

@@ -1,7 +1,7 @@
 #pragma once
 
 // The scene checks with the culling kernel of their narrow phase chosen (PairCollector in
-// scene_check.cpp culls its pairs as overlapBatch() does): the public entry points take
+// pair_collector.h culls its pairs as overlapBatch() does): the public entry points take
 // BatchKernel::Automatic; the tests force each kernel to hold both to the same answer. Internal
 // to the core (src/core).
 

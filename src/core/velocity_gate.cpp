@@ -8,7 +8,7 @@
 #include <utility>
 
 #include "ellipse_collision/core/distance.h"
-#include "ellipse_collision/core/eigenvalue_test.h"
+#include "ellipse_collision/core/contact_scale.h"
 #include "ellipse_collision/core/number_format.h"
 #include "ellipse_collision/core/overlap.h"
 #include "ellipse_collision/core/unique_names.h"

@@ -5,7 +5,7 @@
 
 #include "bindings.h"
 #include "ellipse_collision/core/distance.h"
-#include "ellipse_collision/core/eigenvalue_test.h"
+#include "ellipse_collision/core/contact_scale.h"
 #include "ellipse_collision/core/first_contact.h"
 #include "ellipse_collision/core/overlap.h"
 #include "ellipse_rows.h"

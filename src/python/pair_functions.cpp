@@ -2,7 +2,7 @@
 // (value_types.cpp); a motion and horizon are checked here by invalidMotionReason().
 #include "bindings.h"
 #include "ellipse_collision/core/distance.h"
-#include "ellipse_collision/core/eigenvalue_test.h"
+#include "ellipse_collision/core/contact_scale.h"
 #include "ellipse_collision/core/first_contact.h"
 #include "ellipse_collision/core/overlap.h"
 #include "refusal.h"

@@ -14,8 +14,8 @@
 
 #include "contact_scale_oracle.h"
 #include "contact_scale_quartic.h"
-#include "eigenvalue_test_detail.h"
-#include "ellipse_collision/core/eigenvalue_test.h"
+#include "contact_scale_detail.h"
+#include "ellipse_collision/core/contact_scale.h"
 #include "ellipse_collision/core/prepared_ellipse.h"
 #include "random_source.h"
 #include "relative_shape.h"

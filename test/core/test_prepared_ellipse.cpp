@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "contact_scale_oracle.h"
-#include "ellipse_collision/core/eigenvalue_test.h"
+#include "ellipse_collision/core/contact_scale.h"
 #include "ellipse_collision/core/overlap.h"
 #include "ellipse_collision/core/prepared_ellipse.h"
 #include "random_source.h"

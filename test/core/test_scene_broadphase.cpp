@@ -14,7 +14,7 @@
 #include <tuple>
 
 #include "ellipse_collision/core/distance.h"
-#include "ellipse_collision/core/eigenvalue_test.h"
+#include "ellipse_collision/core/contact_scale.h"
 #include "ellipse_collision/core/indexed_obstacles.h"
 #include "ellipse_collision/core/overlap.h"
 #include "ellipse_collision/core/scene_check.h"

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "ellipse_collision/core/distance.h"
-#include "ellipse_collision/core/eigenvalue_test.h"
+#include "ellipse_collision/core/contact_scale.h"
 #include "ellipse_collision/core/overlap.h"
 #include "ellipse_collision/core/scene_check.h"
 

@@ -22,16 +22,8 @@ struct Clearance {
 
 /// Exact minimum distance between `a` and `b` and its witness points (point_b - point_a is normal
 /// to both rims). The overlap decision is overlap()'s, so the two functions always agree.
-///
-/// Method: the concave support-function dual (Boyd & Vandenberghe, 8.2.3)
-///   distance = max over unit u of  u . (c_b - c_a) - h_a(u) - h_b(u),
-/// with h the support function of the centred ellipse, maximised over the angle of u by a bracketed
-/// Halley/Newton iteration (no local minimum to stop in, see distance.cpp); the witness points are
-/// the support points of the maximising u. Only c_b - c_a enters, so centres may be far from the
-/// origin. Accuracy: the absolute error is about epsilon times the radii, from rounding cos and sin
-/// of the angles (the small gap between large support values is evaluated in double-double), so
-/// the relative error stays below 1e-9 down to distances of 1e-6 of the larger radius, for axis
-/// ratios up to 1e3 and sizes 1e-4..1e4 m. Both ellipses must be valid (see invalidReason()).
+/// Absolute error about epsilon times the radii (method and accuracy: doc/core_methods.md). Both
+/// ellipses must be valid (see invalidReason()).
 Clearance distance(const Ellipse& a, const Ellipse& b);
 
 }  // namespace ellipse_collision::core

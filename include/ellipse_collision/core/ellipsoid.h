@@ -30,19 +30,8 @@ Eigen::Matrix3d shapeMatrix(const Ellipsoid& ellipsoid);
 
 /// The orthogonal shadow on the fixed frame's xy-plane of `in_frame`, an ellipsoid in a frame
 /// whose pose in the fixed frame is `fixed_from_frame`.
-///
-/// The shadow of {c + M u : |u| <= 1} (M = P Q diag(r), P the transform's rotation, Q the
-/// orientation) is the ellipse {c'.xy + M_xy u}: M_xy the top two rows of M, so its shape matrix
-/// S = M_xy M_xy^T is the top-left 2x2 block of P A P^T. S is never singular: the shadow contains
-/// the shadow of the inscribed ball, a disk of the smallest radius. The radii come from S's
-/// symmetric eigen-decomposition, the minor one as sqrt(det S) / major with det S summed from the
-/// squared 2x2 minors of M_xy (Cauchy–Binet; no cancellation however thin the shadow); all in
-/// long double. Then certified: the double-valued ellipse is grown (radii times the square root of
-/// the largest generalised eigenvalue of S against its own shape matrix, plus the rounding of the
-/// centre, plus a few ulps) until it contains the exact shadow of the given data.
-///
-/// Cost: about 1.9 us per call, 7.7 times projectToPlane() (medians of 7 runs of 100,000 random
-/// poses each, side by side), mostly the long double arithmetic of the certification.
+/// Certified to contain the exact shadow of the given data (method and cost:
+/// doc/core_methods.md).
 ///
 /// Errors (`name` only names the ellipsoid in them): an invalid `in_frame` (see invalidReason()),
 /// a non-finite transform, a shadow that invalidReason(Ellipse) refuses (a centre moved beyond

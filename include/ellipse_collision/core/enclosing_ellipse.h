@@ -51,25 +51,8 @@ constexpr double kDegenerateRelativeWidth = 1e-9;
 constexpr double kEnclosingGapTolerance = 1e-10;
 
 /// The minimum-area ellipse containing every point [m].
-///
-/// Method: translate to the bounding box's centre and scale to unit size; convex hull by Andrew's
-/// monotone chain (A. M. Andrew, "Another efficient algorithm for convex hulls in two dimensions",
-/// IPL 9(5), 1979); an affine normalisation to the hull's principal axes; then Khachiyan's dual
-/// problem (max log det of the lifted moment matrix over weights on the points) on a growing core
-/// set of hull points (Kumar–Yildirim, JOTA 126, 2005), solved by Khachiyan's algorithm with
-/// Todd–Yildirim away steps (M. J. Todd, E. A. Yildirim, "On Khachiyan's algorithm for the
-/// computation of minimum-volume enclosing ellipsoids", Discrete Applied Mathematics 155, 2007)
-/// and, where its linear rate is poor (many points on the optimal ellipse), finished by a dual
-/// interior-point Newton method, until every hull point satisfies omega_i <= 3 (1 +
-/// kEnclosingGapTolerance); a second pass in the frame where the first estimate is a circle, for
-/// full double precision on thin sets; then the certification against every input point in
-/// long double, growing both radii by the minimal factor (plus a few ulps) that puts every point
-/// inside.
-///
-/// Cost: O(n log n) for the hull of n points, O(n) for the certification, and for the optimiser
-/// at most kMaxOptimiserIterations steps of O(k) (Khachiyan) or O(k^3) (Newton) for a core of k
-/// points, plus one O(h) pass over the h hull points per core round. Measured: 2-80 us for laser
-/// clusters of 5-80 points, about 7 ms for the 16,384-point outline of a cylinder.
+/// Khachiyan's dual problem on a core set of hull points, certified against every point in long
+/// double (method and cost: doc/core_methods.md).
 ///
 /// Status:
 /// - Error: no points; a coordinate not finite or outside [-kMaxCoordinate, kMaxCoordinate]; or

@@ -29,26 +29,8 @@ constexpr double kDegenerateRelativeThickness = 1e-9;
 constexpr double kEnclosingEllipsoidGapTolerance = 1e-9;
 
 /// The minimum-volume ellipsoid containing every point [m] (Löwner–John ellipsoid).
-///
-/// Method: the 2D fit's (minimumAreaEllipse(), enclosing_ellipse.h) in one more dimension.
-/// Translate to the bounding box's centre and scale to unit size; Khachiyan's dual problem
-/// (max log det of the lifted 4x4 moment matrix X(u) = sum u_i q_i q_i^T, q_i = (p_i, 1), over
-/// weights u on the simplex) on a growing core set (Kumar–Yildirim, JOTA 126, 2005), solved by
-/// Khachiyan's algorithm with Todd–Yildirim away steps (Todd, Yildirim, Discrete Applied
-/// Mathematics 155, 2007) and, where their linear rate stalls (many points on the optimum, as a
-/// sphere's mesh has), a dual interior-point finish (the 2D fit's solver, templated on the
-/// dimension), until every point satisfies q_i^T X^-1 q_i <= 4 (1 + gap); the
-/// ellipsoid is then {x : (x - c)^T S^-1 (x - c) <= reach}, c and S the weighted mean and
-/// covariance, reach the largest Mahalanobis radius over the points; finally certified against
-/// every input point in long double, all radii grown by the smallest factor (plus a few ulps)
-/// that puts every point inside.
-///
-/// Cost (test_ellipsoid, test_shape_hull, on a shared 2-core machine at load 4): medians of
-/// 9-19 us for sets of 4-50 points, 0.6-0.8 ms for 2,000 points, 21 ms for a cylinder's 16,384
-/// hull points, 170 ms for a sphere's 130,562. The interior-point finish, side by side with the
-/// Khachiyan-only solver in one run (medians of 5, -O3): a 16,384-point cylinder 7.8 -> 3.8 ms,
-/// a 129,960-point sphere 54 -> 31 ms, 600 mixed sets of 4-2,000 points 0.30 -> 0.055 s in all,
-/// volumes equal to 12 digits.
+/// The 2D fit's method in one more dimension, certified against every point in long double
+/// (method and cost: doc/core_methods.md).
 ///
 /// Errors: no points; a coordinate not finite or outside [-kMaxCoordinate, kMaxCoordinate]; a set
 /// spanning no volume (fewer than 4 affinely independent points, or thinner than

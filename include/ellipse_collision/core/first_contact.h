@@ -26,7 +26,7 @@ constexpr double kMaxSpeed = 1e9;
 /// Largest |angular_velocity| accepted [rad/s].
 constexpr double kMaxAngularVelocity = 1e9;
 /// Largest |angular_velocity| * horizon accepted [rad] (about 16 turns): it bounds the work of the
-/// conservative advancement used for rotating pairs (see rotating_contact.cpp).
+/// conservative advancement used for rotating pairs (doc/rotating_contact.md).
 constexpr double kMaxTurn = 100.0;
 
 /// How far across itself double precision may move a translating pair's path, relative to the
@@ -64,43 +64,12 @@ std::string invalidVelocityReason(const Motion& motion, double horizon,
 std::string invalidMotionReason(const Ellipse& ellipse, const Motion& motion, double horizon);
 
 /// The first time t in [0, horizon] [s] at which `a` and `b`, each moving rigidly by its motion,
-/// overlap (per overlap(): a shared boundary point or containment counts). Overlap at t = 0 gives
-/// {true, 0}.
-///  - Pure translation (both angular velocities 0): exact, where the relative path enters the
-///    Minkowski sum K of the two ellipses (one safeguarded root on the sum's normal angle,
-///    certified from both sides), up to rounding: the time is that of the path moved across itself
-///    by at most kTranslationExtentTolerance * E, E = |p0 . d| + h_K(n) [m]. So it is earlier than
-///    the true crossing by at most kTranslationExtentTolerance * E / (|w| cos theta) [s], later by
-///    at most 8 eps E / (|w| cos theta) (rounding, not a margin): w the relative velocity, d its
-///    direction, n = d turned +90 deg, p0 = b.center - a.center, h_K(n) = h_A(n) + h_B(n) the
-///    half-width of K across the path (h_E(n) = |(radius_x (n . e_x), radius_y (n . e_y))|),
-///    theta the angle between the path and K's outer normal at the entry (0 head-on). The
-///    1 / cos theta is the problem's conditioning, not the method's: moving the path across itself
-///    moves the entry along it tan theta times as far, and double precision places the path
-///    relative to K only to ~eps E (the relative centre, the path's direction and the ellipses'
-///    sin and cos are rounded; one ulp of a centre moves the exact entry of a path at
-///    cos theta = 4.5e-4 by 7.8 times the head-on bound, test_first_contact). Head-on, for pairs of
-///    comparable size and distance, this is ~1e-14 of the time to cross the pair (within ~1e-12 *
-///    horizon on the tests); cos theta is small for a path that nearly grazes K or moves nearly
-///    along a needle's flat side, and a short path across the flat side of a needle of axis ratio
-///    1e14 can be early by a large share of the horizon, but not by more than this bound (tested
-///    against the quad oracle: needles of axis ratios to 1e18 crossed, at most 0.08 of it early,
-///    0.03 late; specks against ellipses to 1e3 m and needles to 1e6 m at 1e-4..0.1 m/s, grazing
-///    and along flat sides down to cos theta = 1e-8, at most 0.04 of it).
-///  - Rotation: certified, never late (conservative advancement on the exact distance(), each step
-///    the larger of D / V and the root of a second-order Taylor bound of the separation along the
-///    witness direction); never `clear` for a pair that touches (outside a 1e-9 band around
-///    grazing). The steps stop once overlap() confirms a contact 2.5e-10 * horizon ahead, so
-///    the time is within that of the first contact (tested within 1e-9 of the horizon of the quad
-///    oracle, touching passes grazing 1e-8 to 1e-12 deep included: within ~1e-13 of the radii of
-///    a tangency the separation is evaluated in long double); inside the band a pair that only
-///    grazes may be reported in contact, its time unresolved. A grazing pass costs a few steps,
-///    not sqrt(size / gap) of them: at most 54 distance() calls per pair on the benchmark's mix
-///    for axis ratios to 100, 200 on the tests' passes grazing 1e-12 deep, growing about as the
-///    square root of the axis ratio (929 at 1e4). A safety cap of 20000 steps, never reached
-///    there, would report contact at the last certified-safe time. Spinning circles count as
-///    translating.
-/// Exactly symmetric: swapping (a, motion_a) with (b, motion_b) gives the same bits.
+/// overlap (per overlap(): a shared boundary point or containment counts); overlap at t = 0 gives
+/// {true, 0}. Translation: exact up to rounding, early by at most kTranslationExtentTolerance
+/// times the pair's extent over (|relative velocity| cos theta), theta the path's angle to the
+/// Minkowski sum's normal at the entry. Rotation: never late, at most 2.5e-10 * horizon early
+/// where the pair overlaps (a pair grazing within 1e-9 may be reported in contact). Exactly
+/// symmetric in (a, motion_a) and (b, motion_b). Accuracy and method: doc/core_methods.md.
 /// Precondition: invalidMotionReason(a, motion_a, b, motion_b, horizon) is empty; otherwise the
 /// result is unspecified (but the call returns).
 FirstContact firstContact(const Ellipse& a, const Motion& motion_a, const Ellipse& b,

@@ -58,15 +58,9 @@ BoundingBox sweptLinkBox(const Ellipse& link_in_moving, const SegmentMotion& mot
 /// `obstacle_motion` (per unit of tau). The time is in units of tau, within [0, duration].
 ///  - The link's centre on the frame's origin, or no turn: the link's motion is a core Motion and
 ///    firstContact() answers (exact for translation, certified for rotation).
-///  - An offset link that turns: its centre moves on an arc carried along the line, which no
-///    Motion describes; firstContact()'s rotating method (rotating_contact.cpp) on that motion,
-///    with the bound |D'| <= max over the turn of |v_o - v - R(w s) v_arc| + |w| (R_l - r_l) +
-///    |w_o| (R_o - r_o) (v_arc = w z x R(yaw0) c, the velocity of the centre's turn about the
-///    frame's origin) and, for the second-order steps, the centre's centripetal acceleration
-///    |w| |v_arc|: never late, within 2.5e-10 * duration of the first contact (tested against a
-///    quad oracle of the motion on passes grazing 1e-8 to 1e-12 deep); a tangency within a 5e-10
-///    relative band of grazing is reported in contact; a safety cap of 20000 steps is never
-///    reached on the tests and the benchmark.
+///  - An offset link that turns (its centre on an arc carried along the line): firstContact()'s
+///    rotating method on that motion, never late, within 2.5e-10 * duration of the first contact
+///    (doc/core_methods.md).
 /// Precondition: firstContact()'s (invalidMotionReason()) for the obstacle's motion over the
 /// duration; see invalidSegmentReason().
 FirstContact segmentContact(const Ellipse& link_in_moving, const SegmentMotion& motion,

@@ -1,10 +1,10 @@
-#include "ellipse_collision/core/polygonal_test.h"
+#include "ellipse_collision/core/polygonal_early_out.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 
-#include "polygonal_test_detail.h"
+#include "polygonal_early_out_detail.h"
 
 namespace ellipse_collision::core {
 namespace detail {

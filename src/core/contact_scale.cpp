@@ -1,11 +1,11 @@
-#include "ellipse_collision/core/eigenvalue_test.h"
+#include "ellipse_collision/core/contact_scale.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
 #include "contact_scale_quartic.h"
-#include "eigenvalue_test_detail.h"
+#include "contact_scale_detail.h"
 #include "ellipse_collision/core/prepared_ellipse.h"
 #include "relative_shape.h"
 

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "contact_scale_oracle.h"
-#include "ellipse_collision/core/eigenvalue_test.h"
+#include "ellipse_collision/core/contact_scale.h"
 #include "ellipse_collision/core/overlap.h"
 
 namespace ellipse_collision::core {

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "ellipse_collision/core/polygonal_test.h"
+#include "ellipse_collision/core/polygonal_early_out.h"
 #include "relative_shape.h"
 
 namespace ellipse_collision::core::detail {

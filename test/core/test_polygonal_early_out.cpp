@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "contact_scale_oracle.h"
-#include "ellipse_collision/core/polygonal_test.h"
+#include "ellipse_collision/core/polygonal_early_out.h"
 
 namespace ellipse_collision::core {
 namespace test {
