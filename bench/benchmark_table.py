@@ -42,8 +42,9 @@ def pair_table(runs):
     # scene-like: 50 links each against the same obstacles of a 10 m room; near: pairs within
     # 1.5x their bounding radii; tangent: within 1e-6 of touching; random-pairs: independent pairs
     # in a 20 m square; one-to-N: one ellipse against N in that square, one overlapOneToMany() call.
-    methods = ["ours_overlap", "ours_prepared", "batch_portable", "batch_avx2", "eigenvalue_alone",
-               "polygonal_alone", "fcl", "seed_readme"]
+    # batch_built: the batch with its EllipseBatch filled anew in every call.
+    methods = ["ours_overlap", "ours_prepared", "batch_portable", "batch_avx2", "batch_built",
+               "eigenvalue_alone", "polygonal_alone", "fcl", "seed_readme"]
     print("Pair tests (same stored pairs per mix; misclassified = disagreements with the quad "
           "oracle, pairs within 1e-12 of tangency left out)")
     header = (f"{'method':<18} {'mix':<13} {'ns/pair':>9} {'x faster than FCL':>18} "
