@@ -69,6 +69,18 @@ void forEachPair(const PairMix& mix, Visit&& visit) {
   }
 }
 
+/// The counters every pair benchmark carries: seconds per pair, `wrong` misclassifications, and the
+/// mix's pairs counted, within their bounding circles and overlapping.
+void addPairCounters(benchmark::State& state, const PairMix& mix, int wrong) {
+  using benchmark::Counter;
+  state.counters["sec_per_pair"] = Counter(static_cast<double>(mix.pairs.size()),
+                                           Counter::kIsIterationInvariantRate | Counter::kInvert);
+  state.counters["misclassified"] = wrong;
+  state.counters["counted"] = mix.counted();
+  state.counters["pass_bounding"] = mix.pass_bounding_circles;
+  state.counters["overlapping"] = mix.overlapping();
+}
+
 /// Registers "pair/<method>/<mix>". `verdict(i, j)` answers the pair of ellipses i and j of the
 /// mix; it is run once untimed to count misclassifications, then timed over all pairs per
 /// iteration.
@@ -86,13 +98,7 @@ void registerMethod(const std::string& method, const PairMix& mix, Verdict verdi
       forEachPair(mix, [&](std::size_t i, std::size_t j) { hits += verdict(i, j) ? 1u : 0u; });
       benchmark::DoNotOptimize(hits);
     }
-    using benchmark::Counter;
-    state.counters["sec_per_pair"] = Counter(static_cast<double>(mix.pairs.size()),
-                                             Counter::kIsIterationInvariantRate | Counter::kInvert);
-    state.counters["misclassified"] = wrong;
-    state.counters["counted"] = mix.counted();
-    state.counters["pass_bounding"] = mix.pass_bounding_circles;
-    state.counters["overlapping"] = mix.overlapping();
+    addPairCounters(state, mix, wrong);
     if (fallbacks >= 0) state.counters["unknown_fallbacks"] = fallbacks;
   });
 }
@@ -138,13 +144,7 @@ void registerBatch(const std::string& kernel_name, detail::BatchKernel kernel,
       benchmark::DoNotOptimize(verdicts.data());
       benchmark::ClobberMemory();
     }
-    using benchmark::Counter;
-    state.counters["sec_per_pair"] = Counter(static_cast<double>(mix.pairs.size()),
-                                             Counter::kIsIterationInvariantRate | Counter::kInvert);
-    state.counters["misclassified"] = wrong;
-    state.counters["counted"] = mix.counted();
-    state.counters["pass_bounding"] = mix.pass_bounding_circles;
-    state.counters["overlapping"] = mix.overlapping();
+    addPairCounters(state, mix, wrong);
   });
 }
 
@@ -185,13 +185,7 @@ void registerBatchBuilt(const MixData* data) {
       benchmark::DoNotOptimize(verdicts.data());
       benchmark::ClobberMemory();
     }
-    using benchmark::Counter;
-    state.counters["sec_per_pair"] = Counter(static_cast<double>(mix.pairs.size()),
-                                             Counter::kIsIterationInvariantRate | Counter::kInvert);
-    state.counters["misclassified"] = wrong;
-    state.counters["counted"] = mix.counted();
-    state.counters["pass_bounding"] = mix.pass_bounding_circles;
-    state.counters["overlapping"] = mix.overlapping();
+    addPairCounters(state, mix, wrong);
   });
 }
 
