@@ -1,11 +1,20 @@
 // Pair tests on the same stored pairs, one benchmark per (method, mix): ours (plain and prepared,
-// and the batch tests with each culling kernel: a scene-like mix's links each against all its
-// obstacles with overlapOneToMany(), the other mixes' pairs with overlapBatch()),
+// and the batch tests with each culling kernel: a scene-like or one-to-many mix's links each
+// against all its obstacles with overlapOneToMany(), the other mixes' pairs with overlapBatch()),
 // the eigenvalue and polygonal tests alone, FCL 0.7 and the seed README's method, and overlap()
 // with polygonal caps 0..8. Each method keeps what it needs per ellipse (prepared ellipses, FCL
 // objects) built before timing; the scene-like pairs share one scene's ellipses. Every benchmark
 // carries, as counters, the seconds per pair and its misclassifications against the
-// quad-precision oracle on those very pairs (computed once, before timing).
+// quad-precision oracle on those very pairs (computed once, before timing), and how many of the
+// pairs overlap.
+//
+// The mixes (bench_scenes.h): scene-like (50 links within 1 m of the origin, each against the same
+// pairs_per_mix / 50 obstacles of a 10 m room: 40 at the default), near (pairs within 1.5x their
+// bounding radii), tangent (within 1e-6 of touching), random-pairs (independent pairs in a
+// 20 m square, about 1 % overlapping) and one-to-N (one ellipse against N drawn as the random
+// pairs' are: the batch's best use, one overlapOneToMany() call). The last two are timed for our
+// plain, prepared and batch tests (also with the batches filled in every call: batch_built) and
+// FCL only.
 //
 // contact_scale/*: contactScale() on the colliding pairs of a robot scene (50 links, 100,000
 // obstacles in 50 m x 50 m, the links among themselves too), every one of which a scene check must
@@ -15,13 +24,17 @@
 // is a shared library: the same binary with LD_LIBRARY_PATH at another build of it compares two
 // versions on the same pairs.
 //
-// Extra flag: --pairs_per_mix=N (default 2000). The oracle takes about 1 ms per pair.
+// Extra flags: --pairs_per_mix=N (default 2000: scene-like, near, tangent), --random_pairs=N
+// (default 20000), --one_to_many=N,M,... (default 1000,10000). The oracle takes about 1 ms per pair
+// (pairs whose bounding circles are well apart are judged without it).
 
 #include <benchmark/benchmark.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <deque>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -56,6 +69,18 @@ void forEachPair(const PairMix& mix, Visit&& visit) {
   }
 }
 
+/// The counters every pair benchmark carries: seconds per pair, `wrong` misclassifications, and the
+/// mix's pairs counted, within their bounding circles and overlapping.
+void addPairCounters(benchmark::State& state, const PairMix& mix, int wrong) {
+  using benchmark::Counter;
+  state.counters["sec_per_pair"] = Counter(static_cast<double>(mix.pairs.size()),
+                                           Counter::kIsIterationInvariantRate | Counter::kInvert);
+  state.counters["misclassified"] = wrong;
+  state.counters["counted"] = mix.counted();
+  state.counters["pass_bounding"] = mix.pass_bounding_circles;
+  state.counters["overlapping"] = mix.overlapping();
+}
+
 /// Registers "pair/<method>/<mix>". `verdict(i, j)` answers the pair of ellipses i and j of the
 /// mix; it is run once untimed to count misclassifications, then timed over all pairs per
 /// iteration.
@@ -73,12 +98,7 @@ void registerMethod(const std::string& method, const PairMix& mix, Verdict verdi
       forEachPair(mix, [&](std::size_t i, std::size_t j) { hits += verdict(i, j) ? 1u : 0u; });
       benchmark::DoNotOptimize(hits);
     }
-    using benchmark::Counter;
-    state.counters["sec_per_pair"] = Counter(static_cast<double>(mix.pairs.size()),
-                                             Counter::kIsIterationInvariantRate | Counter::kInvert);
-    state.counters["misclassified"] = wrong;
-    state.counters["counted"] = mix.counted();
-    state.counters["pass_bounding"] = mix.pass_bounding_circles;
+    addPairCounters(state, mix, wrong);
     if (fallbacks >= 0) state.counters["unknown_fallbacks"] = fallbacks;
   });
 }
@@ -124,16 +144,55 @@ void registerBatch(const std::string& kernel_name, detail::BatchKernel kernel,
       benchmark::DoNotOptimize(verdicts.data());
       benchmark::ClobberMemory();
     }
-    using benchmark::Counter;
-    state.counters["sec_per_pair"] = Counter(static_cast<double>(mix.pairs.size()),
-                                             Counter::kIsIterationInvariantRate | Counter::kInvert);
-    state.counters["misclassified"] = wrong;
-    state.counters["counted"] = mix.counted();
-    state.counters["pass_bounding"] = mix.pass_bounding_circles;
+    addPairCounters(state, mix, wrong);
   });
 }
 
-void registerMix(MixData* data) {
+/// Registers "pair/batch_built/<mix>": the public overlapBatch() / overlapOneToMany() (the
+/// processor's best kernel) with their EllipseBatch filled anew in every iteration, as a caller
+/// whose ellipses change with every call pays it: every ellipse of the batches is prepared again
+/// (for a one-to-many mix the obstacles' batch; the one ellipse is prepared by the call).
+void registerBatchBuilt(const MixData* data) {
+  const PairMix& mix = data->mix;
+  const std::string name = "pair/batch_built/" + mix.name;
+  std::vector<std::uint8_t> out(mix.pairs.size());
+  const auto run = [data](EllipseBatch* first, EllipseBatch* second, std::uint8_t* verdicts) {
+    const PairMix& mix = data->mix;
+    first->clear();
+    second->clear();
+    if (mix.rows == 0) {
+      for (std::size_t i = 0; i + 1 < mix.ellipses.size(); i += 2) {
+        first->add(mix.ellipses[i]);
+        second->add(mix.ellipses[i + 1]);
+      }
+      overlapBatch(*first, *second, verdicts);
+      return;
+    }
+    for (std::size_t j = mix.rows; j < mix.ellipses.size(); ++j) second->add(mix.ellipses[j]);
+    for (std::size_t i = 0; i < mix.rows; ++i) {
+      overlapOneToMany(mix.ellipses[i], *second, verdicts + i * second->size());
+    }
+  };
+  EllipseBatch first, second;
+  run(&first, &second, out.data());
+  const int wrong = misclassified(mix, std::vector<bool>(out.begin(), out.end()));
+  benchmark::RegisterBenchmark(name.c_str(), [data, run, wrong](benchmark::State& state) {
+    const PairMix& mix = data->mix;
+    std::vector<std::uint8_t> verdicts(mix.pairs.size());
+    EllipseBatch first, second;  // their capacity kept from one iteration to the next
+    for (auto _ : state) {
+      run(&first, &second, verdicts.data());
+      benchmark::DoNotOptimize(verdicts.data());
+      benchmark::ClobberMemory();
+    }
+    addPairCounters(state, mix, wrong);
+  });
+}
+
+/// Registers every method on the mix; with `study` false only ours (plain, prepared, batch, and
+/// the batch with its EllipseBatch filled in every call) and FCL, the rest being studies of the
+/// stages that the first three mixes answer.
+void registerMix(MixData* data, bool study) {
   const PairMix& mix = data->mix;
   for (const Ellipse& e : mix.ellipses) {
     data->prepared.emplace_back(e);
@@ -161,6 +220,12 @@ void registerMix(MixData* data) {
   registerMethod("ours_prepared", mix, [prepared](std::size_t i, std::size_t j) {
     return overlap(prepared[i], prepared[j]);
   });
+  registerMethod("fcl", mix,
+                 [fcl](std::size_t i, std::size_t j) { return fclCollide(fcl[i], fcl[j]); });
+  if (!study) {
+    registerBatchBuilt(data);
+    return;
+  }
   registerMethod("eigenvalue_alone", mix,
                  [e](std::size_t i, std::size_t j) { return eigenvalueOverlap(e[i], e[j]); });
   int fallbacks = 0;
@@ -181,8 +246,6 @@ void registerMix(MixData* data) {
         return eigenvalueOverlap(e[i], e[j]);  // its fallback, timed with it
       },
       fallbacks);
-  registerMethod("fcl", mix,
-                 [fcl](std::size_t i, std::size_t j) { return fclCollide(fcl[i], fcl[j]); });
   registerMethod("seed_readme", mix,
                  [e](std::size_t i, std::size_t j) { return seedReadmeOverlap(e[i], e[j]); });
   for (int cap = 0; cap <= kMaxStudiedCap; ++cap) {
@@ -288,20 +351,40 @@ void registerContactScales() {
   });
 }
 
-/// Removes --pairs_per_mix=N from argv (Google Benchmark rejects unknown flags) and returns N.
-int takePairsFlag(int* argc, char** argv) {
-  constexpr const char* kFlag = "--pairs_per_mix=";
-  int pairs = 2000;
+/// Removes `flag`VALUE from argv (Google Benchmark rejects unknown flags) and returns VALUE, or
+/// `fallback` if the flag is absent.
+std::string takeFlag(int* argc, char** argv, const char* flag, const std::string& fallback) {
+  std::string value = fallback;
   int kept = 0;
   for (int i = 0; i < *argc; ++i) {
-    if (std::strncmp(argv[i], kFlag, std::strlen(kFlag)) == 0) {
-      pairs = std::atoi(argv[i] + std::strlen(kFlag));
+    if (std::strncmp(argv[i], flag, std::strlen(flag)) == 0) {
+      value = argv[i] + std::strlen(flag);
     } else {
       argv[kept++] = argv[i];
     }
   }
   *argc = kept;
-  return pairs > 0 ? pairs : 1;
+  return value;
+}
+
+/// The positive counts of a comma-separated list ("1000,10000"), or an empty vector after a
+/// message naming the flag and the value if any is not one.
+std::vector<int> parseCounts(const char* flag, const std::string& text) {
+  std::vector<int> counts;
+  std::stringstream list(text);
+  std::string item;
+  while (std::getline(list, item, ',')) {
+    char* end = nullptr;
+    const long count = std::strtol(item.c_str(), &end, 10);
+    if (item.empty() || *end != '\0' || count <= 0 || count > 100000000) {
+      std::fprintf(stderr, "%s%s: '%s' is not a positive count\n", flag, text.c_str(),
+                   item.c_str());
+      return {};
+    }
+    counts.push_back(static_cast<int>(count));
+  }
+  if (counts.empty()) std::fprintf(stderr, "%s%s: no count given\n", flag, text.c_str());
+  return counts;
 }
 
 }  // namespace
@@ -309,15 +392,29 @@ int takePairsFlag(int* argc, char** argv) {
 
 int main(int argc, char** argv) {
   using namespace ellipse_collision::core::bench;
-  const int pairs = takePairsFlag(&argc, argv);
+  const char* const kPairsFlag = "--pairs_per_mix=";
+  const char* const kRandomFlag = "--random_pairs=";
+  const char* const kOneToManyFlag = "--one_to_many=";
+  const std::vector<int> pairs = parseCounts(kPairsFlag, takeFlag(&argc, argv, kPairsFlag, "2000"));
+  const std::vector<int> random_pairs =
+      parseCounts(kRandomFlag, takeFlag(&argc, argv, kRandomFlag, "20000"));
+  const std::vector<int> one_to_many =
+      parseCounts(kOneToManyFlag, takeFlag(&argc, argv, kOneToManyFlag, "1000,10000"));
+  if (pairs.size() != 1 || random_pairs.size() != 1 || one_to_many.empty()) return 2;
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
 
   std::deque<MixData> mixes;  // stable addresses: the benchmarks hold references
-  mixes.push_back({sceneLikeMix(pairs, 1), {}, {}, {}, {}});
-  mixes.push_back({nearMix(pairs, 2), {}, {}, {}, {}});
-  mixes.push_back({tangencyMix(pairs, 3), {}, {}, {}, {}});
-  for (MixData& data : mixes) registerMix(&data);
+  mixes.push_back({sceneLikeMix(pairs[0], 1), {}, {}, {}, {}});
+  mixes.push_back({nearMix(pairs[0], 2), {}, {}, {}, {}});
+  mixes.push_back({tangencyMix(pairs[0], 3), {}, {}, {}, {}});
+  for (MixData& data : mixes) registerMix(&data, true);
+  mixes.push_back({randomPairsMix(random_pairs[0], 4), {}, {}, {}, {}});
+  registerMix(&mixes.back(), false);
+  for (const int count : one_to_many) {
+    mixes.push_back({oneToManyMix(count, 5), {}, {}, {}, {}});
+    registerMix(&mixes.back(), false);
+  }
   registerContactScales();
 
   benchmark::RunSpecifiedBenchmarks();

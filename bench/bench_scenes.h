@@ -1,7 +1,7 @@
 #pragma once
 
-// Reproducible inputs shared by the collision benchmarks: random robot scenes and the three pair
-// mixes, with the quad-precision oracle's verdict on every stored pair.
+// Reproducible inputs shared by the collision benchmarks: random robot scenes and the pair mixes,
+// with the quad-precision oracle's verdict on every stored pair.
 
 #include <cstdint>
 #include <random>
@@ -59,7 +59,8 @@ struct PairMix {
 
   const Ellipse& a(std::size_t pair) const { return ellipses[pairs[pair].first]; }
   const Ellipse& b(std::size_t pair) const { return ellipses[pairs[pair].second]; }
-  int counted() const;  ///< pairs that are not ambiguous
+  int counted() const;      ///< pairs that are not ambiguous
+  int overlapping() const;  ///< pairs the oracle finds overlapping (t* <= 1)
 };
 
 /// All pairs of 50 links and count / 50 obstacles in a 10 m x 10 m room, in the order a scene
@@ -73,6 +74,15 @@ PairMix nearMix(int count, std::uint64_t seed);
 /// Placed with the oracle's helper at t* = 1 +- delta, delta log-uniform in [1e-9, 1e-6]; two
 /// ellipses per pair.
 PairMix tangencyMix(int count, std::uint64_t seed);
+
+/// Independent random pairs: both ellipses of each pair drawn alike, centres uniform in a
+/// 20 m x 20 m square, major semi-axis log-uniform in [0.2, 1.8] m, axis ratio log-uniform in
+/// [1, 5], any angle; about 1 % of such pairs overlap. Two ellipses per pair.
+PairMix randomPairsMix(int count, std::uint64_t seed);
+
+/// One against many: one ellipse drawn as randomPairsMix() draws them but centred in the square,
+/// against `count` ellipses drawn alike (rows = 1, named "one-to-<count>").
+PairMix oneToManyMix(int count, std::uint64_t seed);
 
 /// Number of pairs where `verdicts` disagrees with the oracle, ambiguous pairs left out.
 int misclassified(const PairMix& mix, const std::vector<bool>& verdicts);

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Prints the collision benchmarks' JSON output (Google Benchmark --benchmark_out) as tables.
 
-Usage: benchmark_table.py PAIRS_JSON SCENES_JSON
+Usage: benchmark_table.py PAIRS_JSON [SCENES_JSON]
 
 Times are CPU times; with repetitions, the median of them. Ratios are taken within the one run.
 """
@@ -33,13 +33,21 @@ def pair_table(runs):
             continue  # contact_scale/* has a table of its own
         _, method, mix = parts
         rows[(method, mix)] = entry
-    mixes = ordered({mix for _, mix in rows}, ["scene-like", "near", "tangent"])
+    # one-to-N in the order of N.
+    one_to_many = sorted({mix for _, mix in rows if mix.startswith("one-to-")},
+                         key=lambda mix: int(mix.rsplit("-", 1)[1]))
+    mixes = ordered({mix for _, mix in rows},
+                    ["scene-like", "near", "tangent", "random-pairs"] + one_to_many)
     # batch_*: overlapBatch() / overlapOneToMany() with the portable and the AVX2 culling.
-    methods = ["ours_overlap", "ours_prepared", "batch_portable", "batch_avx2", "eigenvalue_alone",
-               "polygonal_alone", "fcl", "seed_readme"]
+    # scene-like: 50 links each against the same obstacles of a 10 m room; near: pairs within
+    # 1.5x their bounding radii; tangent: within 1e-6 of touching; random-pairs: independent pairs
+    # in a 20 m square; one-to-N: one ellipse against N in that square, one overlapOneToMany() call.
+    # batch_built: the batch with its EllipseBatch filled anew in every call.
+    methods = ["ours_overlap", "ours_prepared", "batch_portable", "batch_avx2", "batch_built",
+               "eigenvalue_alone", "polygonal_alone", "fcl", "seed_readme"]
     print("Pair tests (same stored pairs per mix; misclassified = disagreements with the quad "
           "oracle, pairs within 1e-12 of tangency left out)")
-    header = (f"{'method':<18} {'mix':<11} {'ns/pair':>9} {'x faster than FCL':>18} "
+    header = (f"{'method':<18} {'mix':<13} {'ns/pair':>9} {'x faster than FCL':>18} "
               f"{'misclassified':>14} {'Unknown->eigen':>15}")
     print(header)
     print("-" * len(header))
@@ -55,19 +63,23 @@ def pair_table(runs):
             wrong = f"{int(entry['misclassified'])}/{int(entry['counted'])}"
             fallbacks = entry.get("unknown_fallbacks")
             fallbacks = f"{int(fallbacks)}" if fallbacks is not None else ""
-            print(f"{method:<18} {mix:<11} {ns:>9.2f} {ratio:>18} {wrong:>14} {fallbacks:>15}")
-        passing = rows[("fcl", mix)]["pass_bounding"] if fcl else 0
-        print(f"{'':<18} {mix:<11} ({int(passing)} of {int(fcl['counted']) if fcl else 0} pairs "
-              f"within their bounding circles)")
+            print(f"{method:<18} {mix:<13} {ns:>9.2f} {ratio:>18} {wrong:>14} {fallbacks:>15}")
+        passing = int(fcl["pass_bounding"]) if fcl else 0
+        counted = int(fcl["counted"]) if fcl else 0
+        overlapping = f", {int(fcl['overlapping'])} overlapping" if fcl and "overlapping" in fcl else ""
+        print(f"{'':<18} {mix:<13} ({passing} of {counted} pairs within their bounding "
+              f"circles{overlapping})")
     caps = sorted({int(m.rsplit("_", 1)[1]) for m, _ in rows if m.startswith("cap_study_")})
     if caps:
         print()
         print("overlap() with polygonal iteration caps (ns/pair; the core uses "
               "kOverlapPolygonalIterations)")
-        print(f"{'cap':>4} " + " ".join(f"{mix:>11}" for mix in mixes))
+        studied = [mix for mix in mixes if any(m.startswith("cap_study_") and x == mix
+                                               for m, x in rows)]
+        print(f"{'cap':>4} " + " ".join(f"{mix:>11}" for mix in studied))
         for cap in caps:
             cells = []
-            for mix in mixes:
+            for mix in studied:
                 entry = rows.get((f"cap_study_{cap}", mix))
                 cells.append(f"{entry['sec_per_pair'] * 1e9:>11.1f}" if entry else f"{'-':>11}")
             print(f"{cap:>4} " + " ".join(cells))
@@ -141,12 +153,14 @@ def contact_scale_table(runs):
 
 
 def main():
-    if len(sys.argv) != 3:
+    if len(sys.argv) not in (2, 3):
         sys.exit(__doc__)
     pair_runs = load_runs(sys.argv[1])
     pair_table(pair_runs)
     print()
     contact_scale_table(pair_runs)
+    if len(sys.argv) == 2:
+        return
     print()
     scene_runs = load_runs(sys.argv[2])
     scene_table(scene_runs)

@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Builds the collision benchmarks in build/ws (-DELLIPSE_COLLISION_BENCHMARKS=ON), runs them and
-# prints one table: per pair mix (scene-like, near, near-tangent) each method's ns per pair, its
+# prints one table: per pair mix (scene-like: 50 links each against the same 40 obstacles; near;
+# near-tangent; 20,000 independent random pairs in a 20 m square, about 1 % overlapping; one
+# ellipse against 1,000 and 10,000 in one batch call) each method's ns per pair, its
 # speed relative to FCL 0.7 and its misclassifications against the quad-precision oracle; the
 # polygonal iteration-cap study; then scene checks of 50 links against 100 to 100,000 obstacles
 # and against 2,000 crowded into 4 m x 4 m
@@ -22,6 +24,8 @@
 #   scripts/benchmark.sh                 full run (a few minutes)
 #   scripts/benchmark.sh --smoke         every benchmark once, briefly, on few pairs, 200 service
 #                                        calls (for CI)
+#   scripts/benchmark.sh --pairs         the pair tests alone (bench_pair_tests and its table, about
+#                                        3 minutes; with --smoke, briefly)
 #
 # The raw output (Google Benchmark console and JSON, round trip, roscore and node logs) is kept
 # in build/benchmark/.
@@ -31,10 +35,12 @@ repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 # shellcheck source=script_helpers.sh
 source "${repo}/scripts/script_helpers.sh"
 smoke=false
+pairs_only=false
 for arg in "$@"; do
   case "${arg}" in
     --smoke) smoke=true ;;
-    *) echo "usage: $0 [--smoke]" >&2; exit 2 ;;
+    --pairs) pairs_only=true ;;
+    *) echo "usage: $0 [--smoke] [--pairs]" >&2; exit 2 ;;
   esac
 done
 
@@ -43,11 +49,15 @@ mkdir -p "${out}"
 echo "Building the benchmarks (log: build/benchmark/build.txt)"
 # --force-cmake: catkin_make runs CMake only when its arguments change, and the option is switched
 # off again below, behind its back.
-if ! bash "${repo}/scripts/build.sh" --force-cmake -DELLIPSE_COLLISION_BENCHMARKS=ON bench_pair_tests \
-    bench_scene_check bench_distance bench_first_contact bench_scan_obstacles \
-    bench_service_roundtrip bench_check_path bench_run_check bench_velocity_gate \
-    bench_gate_command bench_gate_roundtrip ellipse_collision_node ellipse_collision_python_core \
-    > "${out}/build.txt" 2>&1; then
+targets=(bench_pair_tests)
+if ! "${pairs_only}"; then
+  targets+=(bench_scene_check bench_distance bench_first_contact bench_scan_obstacles
+            bench_service_roundtrip bench_check_path bench_run_check bench_velocity_gate
+            bench_gate_command bench_gate_roundtrip ellipse_collision_node
+            ellipse_collision_python_core)
+fi
+if ! bash "${repo}/scripts/build.sh" --force-cmake -DELLIPSE_COLLISION_BENCHMARKS=ON \
+    "${targets[@]}" > "${out}/build.txt" 2>&1; then
   cat "${out}/build.txt" >&2
   exit 1
 fi
@@ -56,7 +66,8 @@ fi
 cmake -DELLIPSE_COLLISION_BENCHMARKS=OFF "${repo}/build/ws/build" >> "${out}/build.txt" 2>&1
 bin="${repo}/build/ws/devel/lib/ellipse_collision"
 if "${smoke}"; then
-  pair_args=(--pairs_per_mix=64 --benchmark_min_time=0.01)
+  pair_args=(--pairs_per_mix=64 --random_pairs=640 --one_to_many=32,320
+             --benchmark_min_time=0.01)
   scene_args=(--benchmark_min_time=0.01)
   distance_args=(--benchmark_min_time=0.01)
   contact_args=(--pairs=64 --benchmark_min_time=0.01)
@@ -70,7 +81,8 @@ if "${smoke}"; then
 else
   repeat=(--benchmark_repetitions=5 --benchmark_enable_random_interleaving=true
           --benchmark_report_aggregates_only=true)
-  pair_args=(--pairs_per_mix=2000 --benchmark_min_time=0.3 "${repeat[@]}")
+  pair_args=(--pairs_per_mix=2000 --random_pairs=20000 --one_to_many=1000,10000
+             --benchmark_min_time=0.3 "${repeat[@]}")
   scene_args=(--benchmark_min_time=0.3 "${repeat[@]}")
   distance_args=(--benchmark_min_time=0.3 "${repeat[@]}")
   contact_args=(--pairs=5000 --benchmark_min_time=0.3 "${repeat[@]}")
@@ -95,6 +107,13 @@ run() {
     exit 1
   fi
 }
+if "${pairs_only}"; then
+  echo "Running bench_pair_tests (output: build/benchmark/)"
+  run bench_pair_tests "${pair_args[@]}"
+  echo
+  /usr/bin/python3 "${repo}/bench/benchmark_table.py" "${out}/bench_pair_tests.json"
+  exit 0
+fi
 echo "Running bench_pair_tests and bench_scene_check (output: build/benchmark/)"
 run bench_pair_tests "${pair_args[@]}"
 run bench_scene_check "${scene_args[@]}"
