@@ -90,13 +90,17 @@ bool FreeSpace::entered(const Ellipse& e, Eigen::Vector2d* where) const {
   });
 }
 
-bool FreeSpace::crossed(const Eigen::Vector2d& a, const Eigen::Vector2d& b) const {
+bool FreeSpace::crossed(const Eigen::Vector2d& a, const Eigen::Vector2d& b,
+                        Eigen::Vector2d* where) const {
   const Eigen::Vector2d edge = b - a;
   const double length = edge.norm();
   // Distance from the origin to the segment.
   const double along = length > 0.0 ? std::clamp(-a.dot(edge) / (length * length), 0.0, 1.0) : 0.0;
   const Eigen::Vector2d nearest = a + along * edge;
-  if (!(nearest.norm() > 1e-12)) return true;
+  if (!(nearest.norm() > 1e-12)) {
+    if (where) *where = Eigen::Vector2d::Zero();
+    return true;
+  }
   const Eigen::Vector2d mid = 0.5 * (a + b);
   return anyWithin(std::atan2(mid.y(), mid.x()), halfWidthSeen(mid, 0.5 * length),
                    [&](const FreeSegment& f) {
@@ -104,7 +108,9 @@ bool FreeSpace::crossed(const Eigen::Vector2d& a, const Eigen::Vector2d& b) cons
                      if (denominator == 0.0) return false;  // parallel: the ray misses the line
                      const double t = cross(a, edge) / denominator;
                      const double u = cross(a, f.direction) / denominator;
-                     return u >= 0.0 && u <= 1.0 && t > f.from && t < f.to;
+                     if (!(u >= 0.0 && u <= 1.0 && t > f.from && t < f.to)) return false;
+                     if (where) *where = f.direction;
+                     return true;
                    });
 }
 

@@ -63,6 +63,25 @@ int sideOf(const std::vector<SensorReturn>& run, std::size_t begin, std::size_t 
   return 0;
 }
 
+/// The index strictly inside the run [begin, end) (returns in angular order) before which the
+/// beam along `ray` passes between two consecutive returns, clear of both returns' own beams; 0
+/// when it passes between none (beyond an end, along a return's beam, or the origin).
+std::size_t cutAtBeam(const std::vector<SensorReturn>& run, std::size_t begin, std::size_t end,
+                      const Eigen::Vector2d& ray) {
+  constexpr double kApart = 1e-9;  // [rad]: closer, the beam is taken for the return's own
+  if (ray.isZero() || end - begin < 2) return 0;
+  const Eigen::Vector2d a = run[begin].point;
+  const double s = signedAngle(a, run[end - 1].point) < 0.0 ? -1.0 : 1.0;
+  const double toward = s * signedAngle(a, ray);
+  double previous = 0.0;
+  for (std::size_t i = begin + 1; i < end; ++i) {
+    const double here = s * signedAngle(a, run[i].point);
+    if (toward < here) return toward > previous + kApart && toward < here - kApart ? i : 0;
+    previous = here;
+  }
+  return 0;
+}
+
 /// The principal direction of `points` (of their covariance's larger eigenvalue) and their
 /// half-width across it [m].
 std::pair<Eigen::Vector2d, double> principalBand(const std::vector<Eigen::Vector2d>& points) {
@@ -263,8 +282,8 @@ struct RunFit {
     Accepted,     ///< `ellipse` stays out of the free space
     KeptAnyway,   ///< a single return whose every circle enters it: `ellipse` kept, `note` says so
     Failed,       ///< no ellipse could be made (`note`): the run is dropped, and said
-    SplitAtOnce,  ///< split at splitIndex() (its chord crosses free space; a round arc's circle
-                  ///< enters it), with no other candidate tried
+    SplitAtOnce,  ///< split, with no other candidate tried: its chord crosses free space, or a
+                  ///< round arc's circle enters a beam passing between its returns (`rays`)
     Split,        ///< every candidate entered the free space (`rays`: the beams entered)
   };
   Outcome outcome{Outcome::Split};
@@ -282,7 +301,9 @@ RunFit fitRun(const std::vector<SensorReturn>& contour, std::size_t begin, std::
   const std::size_t n = end - begin;
   RunFit fit;
   fit.ellipse = ContourEllipse{Ellipse{}, contour[begin].key, n, contour[end - 1].key, false};
-  if (n >= 3 && free_space.crossed(contour[begin].point, contour[end - 1].point)) {
+  Eigen::Vector2d crossing;
+  if (n >= 3 && free_space.crossed(contour[begin].point, contour[end - 1].point, &crossing)) {
+    fit.rays.push_back(crossing);
     fit.outcome = RunFit::Outcome::SplitAtOnce;
     return fit;
   }
@@ -314,11 +335,18 @@ RunFit fitRun(const std::vector<SensorReturn>& contour, std::size_t begin, std::
     if (circle && circle->radius_x >= min_radius && circle->radius_x <= chord && !thin) {
       if (accepted(*circle, false)) return fit;
       // A round arc whose circle meets a beam (where the beams graze the object, its circle
-      // grown by the range noise reaches their free parts): every circle and every ellipse
-      // as round would, so the arc is split (Douglas-Peucker) with no costlier candidate
-      // tried, until its parts are thin enough for band ellipses.
-      fit.outcome = RunFit::Outcome::SplitAtOnce;
-      return fit;
+      // grown by the range noise reaches their free parts; a beam without return between its
+      // returns): every ellipse as round would, so the arc is split with no costlier
+      // candidate tried, until its parts are thin enough for band ellipses. But a beam beyond
+      // an end of the arc that cuts deep through its circle (the middle beam of a pole that
+      // returned nothing, next to half the pole's arc) leaves room for a flatter ellipse
+      // beside it: the candidates below are tried.
+      const Eigen::Vector2d& ray = fit.rays.back();
+      const double depth = std::abs(ray.x() * circle->center.y() - ray.y() * circle->center.x());
+      if (sideOf(contour, begin, end, ray) == 0 || !(depth < 0.5 * circle->radius_x)) {
+        fit.outcome = RunFit::Outcome::SplitAtOnce;
+        return fit;
+      }
     }
   }
   // 2. The enclosing ellipse; for a thin run the band's ellipse, O(n), about what the
@@ -392,6 +420,20 @@ std::vector<std::size_t> hintedCuts(const std::vector<SensorReturn>& contour,
   return cuts;
 }
 
+/// Where a run is split when an ellipse around it met the beams `rays`: where one of them
+/// passes between two consecutive returns and its free part crosses the segment between them
+/// (every ellipse around both would enter it: a cut the free space requires, such as a beam
+/// without return through an object); else at splitIndex().
+std::size_t cutOrSplitIndex(const std::vector<SensorReturn>& contour, std::size_t begin,
+                            std::size_t end, const std::vector<Eigen::Vector2d>& rays,
+                            const FreeSpace& free_space) {
+  for (const Eigen::Vector2d& ray : rays) {
+    const std::size_t at = cutAtBeam(contour, begin, end, ray);
+    if (at != 0 && free_space.crossed(contour[at - 1].point, contour[at].point)) return at;
+  }
+  return splitIndex(contour, begin, end);
+}
+
 }  // namespace
 
 ContourEllipses contourEllipses(const std::vector<std::vector<SensorReturn>>& contours,
@@ -442,7 +484,7 @@ ContourEllipses contourEllipses(const std::vector<std::vector<SensorReturn>>& co
           result.skipped.push_back(std::move(fit.note));
           continue;
         case RunFit::Outcome::SplitAtOnce:
-          split(splitIndex(contour, begin, end));
+          split(cutOrSplitIndex(contour, begin, end, fit.rays, free_space));
           continue;
         case RunFit::Outcome::Split:
           break;

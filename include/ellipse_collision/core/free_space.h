@@ -34,8 +34,10 @@ class FreeSpace {
 
   /// True when the segment [a, b] [m] meets the open free part of some beam or passes within
   /// 1e-12 m of the origin. Every ellipse containing a and b contains the segment, so this is a
-  /// cheap necessary test before fitting an ellipse to points from a to b.
-  bool crossed(const Eigen::Vector2d& a, const Eigen::Vector2d& b) const;
+  /// cheap necessary test before fitting an ellipse to points from a to b. When it is crossed
+  /// and `where` is given, *where is the direction of a beam crossing it (zero for the origin).
+  bool crossed(const Eigen::Vector2d& a, const Eigen::Vector2d& b,
+               Eigen::Vector2d* where = nullptr) const;
 
   /// The distance [m] from `p` to the nearest free segment within `radius` [m] of it, or to the
   /// origin if nearer; `radius` when nothing is nearer.

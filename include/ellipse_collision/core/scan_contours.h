@@ -100,14 +100,18 @@ struct ContourEllipses {
 
 /// Each contour split into as few runs of consecutive returns as the rules allow, one ellipse per
 /// run, every return in exactly one run. A run whose chord already crosses free space
-/// (FreeSpace::crossed(): every ellipse around the run contains the chord) is split at once;
-/// otherwise it keeps the first of these ellipses that neither enters the free space nor contains
-/// the origin (FreeSpace::entered(), exact):
+/// (FreeSpace::crossed(): every ellipse around the run contains the chord) is split at once:
+/// between two consecutive returns when the crossing beam also crosses the segment between them
+/// (a beam without return through an object: a cut the free space requires), else as below;
+/// otherwise the run keeps the first of these ellipses that neither enters the free space nor
+/// contains the origin (FreeSpace::entered(), exact):
 /// 1. (3 or more returns, not thin) the circle fitted to the run by least squares (Kasa), grown
 ///    to contain it, when the run is round (every return within a fifth of the radius of it) and
 ///    the radius is within [min_radius, chord]: a round pillar is its own circle. When a round
 ///    run's circle enters the free space (beams grazing the object), no other candidate is tried:
-///    the run is split;
+///    the run is split (at the beam entered when the free space requires that cut), unless that
+///    beam lies beyond an end of the run and passes within half the radius of the circle's
+///    centre (half a pole beside a middle beam without return): then 2-4 are tried;
 /// 2. enclosingEllipseWithMinRadius(run, min_radius), or for a thin run (its band across its
 ///    principal axis within min_radius / sqrt(2)) bandEllipse(), O(n);
 /// 3. (3 or more returns, not thin) enclosingEllipseWithMinRadius() around the run and its
