@@ -7,6 +7,8 @@ find_package(std_srvs REQUIRED)
 add_executable(demo_driver
   demo/src/demo_driver_node.cpp
   demo/src/demo_driver.cpp
+  demo/src/demo_arm_guard.cpp
+  demo/src/demo_log_on_change.cpp
   demo/src/demo_base_control.cpp
   demo/src/demo_scanner.cpp
   demo/src/demo_world.cpp

@@ -278,6 +278,8 @@ ellipse_collision_add_gtest(test_demo_units LIBRARIES ellipse_collision_core ${X
   demo/src/demo_scanner.cpp
   demo/src/demo_world.cpp
   demo/src/demo_base_control.cpp
+  demo/src/demo_arm_guard.cpp
+  demo/src/demo_log_on_change.cpp
   demo/src/demo_trajectory.cpp)
 target_include_directories(test_demo_units PRIVATE demo/src ${X11_INCLUDE_DIR})
 target_compile_definitions(test_demo_units PRIVATE

@@ -4,11 +4,14 @@
 #include <sensor_msgs/LaserScan.h>
 #include <tf2/utils.h>
 #include <tf2_geometry_msgs/tf2_geometry_msgs.h>
+#include <urdf/model.h>
 #include <visualization_msgs/MarkerArray.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <set>
+#include <sstream>
 #include <utility>
 #include <vector>
 
@@ -17,6 +20,7 @@
 #include "ellipse_collision/ros/conversions.h"
 #include "ellipse_collision/ros/messages.h"
 #include "ellipse_collision/ros/node_config.h"
+#include "ellipse_collision/ros/urdf_links.h"
 
 namespace ellipse_collision {
 namespace {
@@ -117,6 +121,84 @@ std::string frameOr(const ros::NodeHandle& nh, const std::string& key,
   return frame;
 }
 
+/// The links of `specs` that the driven joints move, with their chains from `base_frame` read
+/// from the URDF `urdf_xml`; links no driven joint moves (the base itself) are left out. Each
+/// ellipse is placed in its frame's plane as the node places it (padding included). Throws
+/// DemoConfigError for a chain the guard cannot follow: not below base_frame, a joint that
+/// moves but is not driven, or one that turns about anything but z.
+std::vector<ArmLink> armLinks(const std::string& urdf_xml,
+                              const std::vector<app::EllipseSpec>& specs, double global_padding,
+                              const std::string& base_frame,
+                              const std::vector<NamedJointMotion>& driven) {
+  urdf::Model model;
+  if (!model.initString(urdf_xml)) {
+    throw DemoConfigError("arm_guard: the URDF in robot_description does not parse");
+  }
+  std::vector<ArmLink> links;
+  for (const app::EllipseSpec& spec : specs) {
+    const std::string where = "arm_guard: link '" + spec.name + "' (frame '" + spec.frame_id + "')";
+    std::vector<ArmChainStep> chain;
+    bool moved = false;
+    urdf::LinkConstSharedPtr link = model.getLink(spec.frame_id);
+    if (!link) throw DemoConfigError(where + ": its frame is not a link of the URDF");
+    while (link->name != base_frame) {
+      const urdf::JointConstSharedPtr joint = link->parent_joint;
+      if (!joint) throw DemoConfigError(where + ": not below '" + base_frame + "' in the URDF");
+      ArmChainStep step;
+      const urdf::Pose& origin = joint->parent_to_joint_origin_transform;
+      double roll = 0.0, pitch = 0.0, yaw = 0.0;
+      origin.rotation.getRPY(roll, pitch, yaw);
+      if (std::abs(roll) > 1e-9 || std::abs(pitch) > 1e-9) {
+        throw DemoConfigError(where + ": joint '" + joint->name +
+                              "' tilts its child (roll or pitch not 0): the arm guard needs a "
+                              "planar arm");
+      }
+      step.origin.position = {origin.position.x, origin.position.y};
+      step.origin.yaw = yaw;
+      if (joint->type != urdf::Joint::FIXED) {
+        const auto it = std::find_if(driven.begin(), driven.end(), [&](const NamedJointMotion& m) {
+          return m.joint == joint->name;
+        });
+        const bool about_z =
+            (joint->type == urdf::Joint::REVOLUTE || joint->type == urdf::Joint::CONTINUOUS) &&
+            std::abs(joint->axis.x) < 1e-9 && std::abs(joint->axis.y) < 1e-9 &&
+            std::abs(std::abs(joint->axis.z) - 1.0) < 1e-9;
+        if (it == driven.end() || !about_z) {
+          throw DemoConfigError(
+              where + ": joint '" + joint->name + "' moves but is not " +
+              (it == driven.end() ? "one of the driver's joints" : "revolute about z"));
+        }
+        step.joint = static_cast<int>(it - driven.begin());
+        step.axis = joint->axis.z > 0.0 ? 1.0 : -1.0;
+        moved = true;
+      }
+      chain.insert(chain.begin(), step);
+      link = model.getLink(joint->parent_link_name);
+      if (!link) throw DemoConfigError(where + ": not below '" + base_frame + "' in the URDF");
+    }
+    if (!moved) continue;
+    const core::ProjectionResult shape =
+        app::placeInPlane(spec, global_padding, Eigen::Isometry3d::Identity());
+    if (!shape.ok()) throw DemoConfigError(where + ": " + shape.error);
+    links.push_back({spec.name, shape.ellipse, chain});
+  }
+  return links;
+}
+
+/// A ring of `ellipse`'s rim as LINE_STRIP points at height z [m].
+void addRim(const core::Ellipse& ellipse, double z, visualization_msgs::Marker* marker) {
+  const double c = std::cos(ellipse.angle), s = std::sin(ellipse.angle);
+  for (int k = 0; k <= 36; ++k) {
+    const double u = ellipse.radius_x * std::cos(2.0 * M_PI * k / 36);
+    const double v = ellipse.radius_y * std::sin(2.0 * M_PI * k / 36);
+    geometry_msgs::Point p;
+    p.x = ellipse.center.x() + c * u - s * v;
+    p.y = ellipse.center.y() + s * u + c * v;
+    p.z = z;
+    marker->points.push_back(p);
+  }
+}
+
 }  // namespace
 
 DemoDriver::DemoDriver(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
@@ -124,7 +206,7 @@ DemoDriver::DemoDriver(const ros::NodeHandle& nh, const ros::NodeHandle& private
   const ros::NodeHandle& p = private_nh_;
   dictKeys(p, "",
            {"rate", "odom_frame", "base_frame", "start", "route", "drive", "back_off", "joints",
-            "static_obstacles", "moving_obstacle", "scanner", "planned_path"});
+            "static_obstacles", "moving_obstacle", "scanner", "planned_path", "arm_guard"});
   const double rate_hz = p.hasParam("rate") ? positive(p, "rate") : 30.0;
   odom_frame_ = frameOr(p, "odom_frame", "odom");
   base_frame_ = frameOr(p, "base_frame", "base_link");
@@ -159,7 +241,9 @@ DemoDriver::DemoDriver(const ros::NodeHandle& nh, const ros::NodeHandle& private
     motion.motion.period_s = positive(p, key + "/period");
     motion.motion.phase = number(p, key + "/phase");
     trajectory_.joints.push_back(motion);
+    joint_motions_.push_back(motion.motion);
   }
+  setUpArmGuard();
 
   const std::string o = "moving_obstacle";
   dictKeys(
@@ -316,11 +400,19 @@ void DemoDriver::onTimer(const ros::TimerEvent&) {
   odom_to_base.transform.rotation.w = std::cos(base.yaw / 2);
   tf_broadcaster_.sendTransform(odom_to_base);
 
+  // The arm: by the demo clock, or (arm_guard) by its own clock, which stands while the joints
+  // hold.
+  if (!arm_guard_enabled_) {
+    arm_clock_s_ = t;
+  } else if (!paused_) {
+    guardArm(now, std::max(0.0, t - last_demo_t_s_));
+  }
+  last_demo_t_s_ = t;
   sensor_msgs::JointState joints;
   joints.header.stamp = now;
   for (const NamedJointMotion& joint : trajectory_.joints) {
     joints.name.push_back(joint.joint);
-    joints.position.push_back(joint.motion.at(t));
+    joints.position.push_back(joint.motion.at(arm_clock_s_));
   }
   joint_states_pub_.publish(joints);
 
@@ -386,6 +478,7 @@ void DemoDriver::onPathCheckTimer(const ros::TimerEvent&) {
   }
   path_check_succeeded_ = true;
   if (srv.response.collision_free) {
+    plan_log_.shouldLog("", ros::Time::now().toSec());
     contact.action = visualization_msgs::Marker::DELETE;
   } else {
     // The base's pose at the first contact, on the segment's straight line.
@@ -412,11 +505,190 @@ void DemoDriver::onPathCheckTimer(const ros::TimerEvent&) {
     contact.color.g = 0.0f;
     contact.color.b = 1.0f;
     contact.color.a = 1.0f;
-    ROS_INFO_STREAM_THROTTLE(2.0, "demo_driver: planned path meets "
-                                      << srv.response.name_b << " with " << srv.response.name_a
-                                      << " in " << core::formatNumber(srv.response.time) << " s");
+    // Once when a contact appears or its pair changes, not 5 times a second while it lasts.
+    std::ostringstream line;
+    line << "demo_driver: planned path meets " << srv.response.name_b << " with "
+         << srv.response.name_a << " in " << core::formatNumber(srv.response.time) << " s";
+    if (plan_log_.shouldLog(srv.response.name_a + " / " + srv.response.name_b,
+                            ros::Time::now().toSec())) {
+      ROS_INFO_STREAM(line.str());
+    } else {
+      ROS_DEBUG_STREAM(line.str());
+    }
   }
   markers.markers.push_back(contact);
+  path_check_markers_pub_.publish(markers);
+}
+
+void DemoDriver::setUpArmGuard() {
+  const ros::NodeHandle& p = private_nh_;
+  if (p.hasParam("arm_guard")) {
+    dictKeys(p, "arm_guard", {"enabled", "horizon", "step", "clearance"});
+    if (p.hasParam("arm_guard/enabled") && !p.getParam("arm_guard/enabled", arm_guard_enabled_)) {
+      throw DemoConfigError("parameter " + fullName(p, "arm_guard/enabled") +
+                            ": expected true or false");
+    }
+    if (p.hasParam("arm_guard/horizon")) arm_guard_.horizon_s = positive(p, "arm_guard/horizon");
+    if (p.hasParam("arm_guard/step")) arm_guard_.step_s = positive(p, "arm_guard/step");
+    if (p.hasParam("arm_guard/clearance")) {
+      arm_guard_.clearance_m = number(p, "arm_guard/clearance");
+      if (arm_guard_.clearance_m < 0.0) {
+        throw DemoConfigError("parameter " + fullName(p, "arm_guard/clearance") +
+                              ": expected a number >= 0, got " +
+                              core::formatNumber(arm_guard_.clearance_m));
+      }
+    }
+    if (arm_guard_.step_s > arm_guard_.horizon_s ||
+        arm_guard_.horizon_s / arm_guard_.step_s > 1000.0) {
+      throw DemoConfigError("parameter " + fullName(p, "arm_guard/step") +
+                            ": expected a number within [horizon / 1000, horizon], got " +
+                            core::formatNumber(arm_guard_.step_s));
+    }
+  }
+  if (!arm_guard_enabled_) return;
+  // The collision node's configuration, as it reads it: its links (never obstacles), their
+  // ellipses and its warning distance.
+  const ros::NodeHandle node(nh_.resolveName("ellipse_collision"));
+  NodeConfig config;
+  try {
+    config = loadNodeConfig(node, fitUrdfLinksFromParam);
+  } catch (const std::exception& error) {
+    throw DemoConfigError("arm_guard: the collision node's parameters (" + node.getNamespace() +
+                          "): " + error.what());
+  }
+  warning_distance_m_ = config.warning_distance_m;
+  if (!(warning_distance_m_ > 0.0)) {
+    throw DemoConfigError(
+        "arm_guard: expected the collision node's warning_distance > 0 (its "
+        "answer gives distances only that close), got " +
+        core::formatNumber(warning_distance_m_));
+  }
+  for (const app::EllipseSpec& link : config.links) node_links_.insert(link.name);
+  std::string urdf;
+  try {
+    urdf = readUrdfParam("robot_description");
+  } catch (const std::exception& error) {
+    throw DemoConfigError(std::string("arm_guard: ") + error.what());
+  }
+  arm_links_ = armLinks(urdf, config.links, config.padding_m, base_frame_, trajectory_.joints);
+  // Persistent: one connection for the 30 calls a second (re-made when the node restarts).
+  check_collisions_ =
+      nh_.serviceClient<CheckCollisions>("ellipse_collision/check_collisions", true);
+  std::string names;
+  for (const ArmLink& link : arm_links_) names += (names.empty() ? "" : ", ") + link.name;
+  ROS_INFO_STREAM("demo_driver: the arm (" << names << ") holds while a link would come within "
+                                           << core::formatNumber(arm_guard_.clearance_m)
+                                           << " m of an obstacle in the next "
+                                           << core::formatNumber(arm_guard_.horizon_s) << " s");
+}
+
+std::string DemoDriver::armHoldReason(std::optional<ArmHold>* hold) {
+  const std::vector<ArmSample> sweep =
+      armSweep(arm_links_, joint_motions_, arm_clock_s_, base_, gated_, arm_guard_);
+  if (const auto undecided = undecidedSample(sweep, arm_guard_.clearance_m, warning_distance_m_)) {
+    char text[160];
+    std::snprintf(text, sizeof(text),
+                  "arm held: %s moves up to %.2f m around its pose in %.2f s, beyond what the "
+                  "check's warning distance (%.2f m) decides",
+                  undecided->link.c_str(), undecided->sweep_m, undecided->time_s,
+                  warning_distance_m_);
+    return text;
+  }
+  CheckCollisions srv;
+  for (const ArmSample& sample : sweep) {
+    Ellipse query;
+    query.name = sample.name;
+    query.frame_id = odom_frame_;
+    query.x = sample.ellipse.center.x();
+    query.y = sample.ellipse.center.y();
+    query.angle = sample.ellipse.angle;
+    query.radius_x = sample.ellipse.radius_x;
+    query.radius_y = sample.ellipse.radius_y;
+    srv.request.query.push_back(query);
+    srv.request.names.push_back(sample.name);
+  }
+  if (!check_collisions_.isValid()) {
+    check_collisions_ =
+        nh_.serviceClient<CheckCollisions>("ellipse_collision/check_collisions", true);
+  }
+  if (!check_collisions_.call(srv)) return "arm held: no answer from ~check_collisions";
+  if (!srv.response.success) return "arm held: ~check_collisions: " + srv.response.message;
+  // Obstacles the node could not place would be missed: hold, as the gate does.
+  if (!srv.response.complete)
+    return "arm held: the check is incomplete (" + srv.response.message + ")";
+  std::vector<ArmContact> contacts;
+  const auto add = [&](const std::string& a, const std::string& b, double distance) {
+    // name_a is the query (Query < Link < Obstacle); the node's links are not obstacles.
+    if (!node_links_.count(b)) contacts.push_back({a, b, distance});
+  };
+  for (const CollisionPair& pair : srv.response.collisions) add(pair.name_a, pair.name_b, 0.0);
+  for (const ClearancePair& pair : srv.response.warnings) {
+    add(pair.name_a, pair.name_b, pair.distance);
+  }
+  *hold = firstHold(sweep, contacts, arm_guard_.clearance_m);
+  return *hold ? holdText(**hold, arm_guard_.clearance_m) : "";
+}
+
+void DemoDriver::guardArm(const ros::Time& now, double dt_s) {
+  std::optional<ArmHold> hold;
+  const std::string text = armHoldReason(&hold);
+  // The check covered the next horizon_s; a longer stall moves on at most that far.
+  if (text.empty()) arm_clock_s_ += std::min(dt_s, arm_guard_.horizon_s);
+  const bool starting_up = (now - launched_).toSec() < kStartUpS;
+  if (arm_log_.shouldLog(hold ? hold->link + " / " + hold->obstacle : text, now.toSec())) {
+    if (starting_up && !hold) {
+      ROS_DEBUG_STREAM("demo_driver: " << text);
+    } else {
+      ROS_INFO_STREAM("demo_driver: " << text);
+    }
+  } else if (!text.empty()) {
+    ROS_DEBUG_STREAM("demo_driver: " << text);
+  }
+  publishArmHold(now, text, hold);
+}
+
+void DemoDriver::publishArmHold(const ros::Time& now, const std::string& text,
+                                const std::optional<ArmHold>& hold) {
+  // On a change, else (the base may move while the arm holds) every 0.2 s while held.
+  const bool changed = text != arm_hold_text_;
+  if (!changed && (text.empty() || (now - arm_marker_sent_).toSec() < 0.2)) return;
+  arm_hold_text_ = text;
+  arm_marker_sent_ = now;
+  visualization_msgs::MarkerArray markers;
+  visualization_msgs::Marker outline, label;
+  for (visualization_msgs::Marker* m : {&outline, &label}) {
+    m->header.frame_id = odom_frame_;
+    m->header.stamp = now;
+    m->ns = "arm_hold";
+    m->pose.orientation.w = 1.0;
+    m->action = visualization_msgs::Marker::DELETE;
+    // Magenta, as the planned path's contact ring.
+    m->color.r = 1.0f;
+    m->color.b = 1.0f;
+    m->color.a = 1.0f;
+  }
+  outline.id = 0;
+  label.id = 1;
+  if (!text.empty()) {
+    // The text above the link where it would touch (or above the base).
+    Eigen::Vector2d at = base_.position + Eigen::Vector2d(0.0, 0.6);
+    if (hold) {
+      outline.action = visualization_msgs::Marker::ADD;
+      outline.type = visualization_msgs::Marker::LINE_STRIP;
+      outline.scale.x = 0.03;
+      addRim(hold->ellipse, 0.06, &outline);
+      at = hold->ellipse.center + Eigen::Vector2d(0.0, core::boundingRadius(hold->ellipse) + 0.15);
+    }
+    label.action = visualization_msgs::Marker::ADD;
+    label.type = visualization_msgs::Marker::TEXT_VIEW_FACING;
+    label.text = text;
+    label.scale.z = 0.12;
+    label.pose.position.x = at.x();
+    label.pose.position.y = at.y();
+    label.pose.position.z = 0.5;
+  }
+  if (hold || text.empty()) markers.markers.push_back(outline);
+  markers.markers.push_back(label);
   path_check_markers_pub_.publish(markers);
 }
 

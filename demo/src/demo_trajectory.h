@@ -13,6 +13,9 @@ struct SineMotion {
   double period_s{1.0};   ///< [s], > 0
   double phase{0.0};      ///< [rad]
   double at(double t_s) const;
+  /// How far the joint turns between t0_s and t1_s, back and forth counted alike [rad]: the
+  /// integral of |d at / dt| (t0_s > t1_s is the same stretch).
+  double travel(double t0_s, double t1_s) const;
 };
 
 /// A planar pose: position [m] and heading [rad] in the odometry frame.
