@@ -2,6 +2,7 @@
 # (cmake/core.cmake, cmake/app.cmake) and the standalone fuzz build (fuzz/CMakeLists.txt via
 # cmake/fuzz.cmake) both compile exactly these.
 set(ELLIPSE_COLLISION_CORE_SOURCES
+  src/core/base_braking.cpp
   src/core/batch_overlap.cpp
   src/core/broadphase.cpp
   src/core/contact_prediction.cpp

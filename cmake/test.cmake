@@ -83,7 +83,14 @@ ellipse_collision_add_gtest(test_twist_motion LIBRARIES ellipse_collision_core q
 # src/core for rotating_contact.h: the grazing test counts the rotating path's work.
 target_include_directories(test_twist_motion PRIVATE ${PROJECT_SOURCE_DIR}/src/core)
 
-# The velocity gate: its decisions against dense overlap() scans of the exact arcs.
+# The braking model: the scale profile against its integral, brakingContact() never late against
+# a dense scan of the exact motion.
+ellipse_collision_add_gtest(test_base_braking LIBRARIES ellipse_collision_core quadmath SOURCES
+  test/core/test_base_braking.cpp
+  test/support/twist_oracle.cpp)
+
+# The velocity gate: its decisions against dense overlap() scans of the exact arcs, and driving a
+# simulated base that answers late and brakes at bounded rates (test/support/braking_base.h).
 ellipse_collision_add_gtest(test_velocity_gate LIBRARIES ellipse_collision_core quadmath SOURCES
   test/core/test_velocity_gate.cpp
   test/support/twist_oracle.cpp
@@ -176,6 +183,11 @@ ellipse_collision_add_rostest(test_node_topics test/ros/node_topics.test
 # The velocity gate on simulated time: a robot the client integrates from ~cmd_vel_out.
 ellipse_collision_add_rostest(test_gate test/ros/gate.test test/ros/test_gate.cpp)
 target_include_directories(test_gate PRIVATE ${std_srvs_INCLUDE_DIRS})
+# The braking rule on simulated time: a base that answers late and brakes at bounded rates.
+ellipse_collision_add_rostest(test_gate_braking test/ros/gate_braking.test
+  test/ros/test_gate_braking.cpp)
+target_include_directories(test_gate_braking PRIVATE ${std_srvs_INCLUDE_DIRS}
+  ${PROJECT_SOURCE_DIR}/test/support)
 ellipse_collision_add_rostest(test_state_publishing test/ros/state_publishing.test
   test/ros/test_state_publishing.cpp)
 ellipse_collision_add_rostest(test_stale_data test/ros/stale_data.test

@@ -269,6 +269,7 @@ GateView CollisionMonitor::gateView(const CheckOutcome& outcome, double now_s,
   view.fixed_frame = settings_.check.fixed_frame;
   view.freshness = Freshness{settings_.check.max_transform_age_s, now_s};
   view.allowed = &settings_.check.rules.allowed;
+  view.world_revision = registry_.revision();
   if (!outcome.error.empty()) return view;
   const std::string& robot_frame = gate_.config().robot_frame;
   const auto known = outcome.frames.find(robot_frame);

@@ -43,7 +43,27 @@ std::optional<FieldError> findInvalidGateSetting(const GateConfig& config) {
                                 kMaxGateTurnRate, true)) {
     return e;
   }
+  if (auto e = findOutsideRange("gate/reaction_time", config.base.reaction_time, 0.0,
+                                kMaxReactionTimeS)) {
+    return e;
+  }
+  if (auto e = findOutsideRange("gate/max_linear_deceleration", config.base.linear_deceleration,
+                                0.0, kMaxDeceleration)) {
+    return e;
+  }
+  if (auto e = findOutsideRange("gate/max_angular_deceleration", config.base.angular_deceleration,
+                                0.0, kMaxDeceleration)) {
+    return e;
+  }
   return std::nullopt;
+}
+
+std::string idealBaseWarning(const GateConfig& config) {
+  if (!config.enabled || !config.base.ideal()) return {};
+  return "the gate assumes an instantaneous base: gate/max_linear_deceleration, "
+         "gate/max_angular_deceleration and gate/reaction_time are 0, so it takes the base to "
+         "stop the moment it is told (a real base answers late and brakes at a bounded rate: set "
+         "them to the base's)";
 }
 
 }  // namespace ellipse_collision::app

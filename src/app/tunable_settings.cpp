@@ -91,7 +91,10 @@ std::vector<std::array<std::string, 3>> fields(const TunableSettings& s) {
           {"gate/cmd_vel_timeout", number(g.cmd_vel_timeout_s), "s"},
           {"gate/on_incomplete", toString(g.on_incomplete), ""},
           {"gate/max_linear_speed", number(g.max_linear_speed), "m/s"},
-          {"gate/max_angular_speed", number(g.max_angular_speed), "rad/s"}};
+          {"gate/max_angular_speed", number(g.max_angular_speed), "rad/s"},
+          {"gate/reaction_time", number(g.base.reaction_time), "s"},
+          {"gate/max_linear_deceleration", number(g.base.linear_deceleration), "m/s^2"},
+          {"gate/max_angular_deceleration", number(g.base.angular_deceleration), "rad/s^2"}};
 }
 
 std::string withUnit(const std::string& text, const std::string& unit) {

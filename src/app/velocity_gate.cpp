@@ -49,7 +49,8 @@ GateDecision stoppedDecision(GateAction action, const VelocityCommand& input, st
 
 GateDecision gateOnScene(const VelocityCommand& command, const core::Scene& placed,
                          const std::vector<core::Motion>& obstacle_motions, const PlanarPose& robot,
-                         const core::AllowedPairs& allowed, const GateConfig& config) {
+                         const core::AllowedPairs& allowed, const GateConfig& config,
+                         const core::BaseState& base) {
   const PlaneTransform frame(robot);
   const core::Twist twist{command.linear.x(), command.linear.y(), command.angular.z()};
   const double horizon = config.timing.horizon;
@@ -77,7 +78,7 @@ GateDecision gateOnScene(const VelocityCommand& command, const core::Scene& plac
     scene.obstacles.push_back({placed.name(i), core::EllipseRole::Obstacle, frame.toRobot(e)});
     scene.obstacle_motions.push_back(frame.toRobot(motion));
   }
-  const core::GateResult result = core::gateTwist(scene, twist, config.timing);
+  const core::GateResult result = core::gateTwist(scene, twist, config.timing, base);
   if (!result.ok()) {
     return stoppedDecision(GateAction::Stop, command,
                            "stopped: the command could not be judged: " + result.error);
@@ -88,6 +89,10 @@ GateDecision gateOnScene(const VelocityCommand& command, const core::Scene& plac
   decision.input = command;
   decision.output = scaledCommand(command, result.scale);
   decision.reason = result.reason;
+  decision.braking_distance_m = result.braking_distance;
+  decision.free_distance_m = result.free_distance;
+  decision.unavoidable = result.unavoidable;
+  decision.impact_speed = result.impact_speed;
   const core::GateContact& shown = result.contact.found ? result.contact : result.limiting;
   if (shown.found) {
     decision.contact_predicted = true;
@@ -113,6 +118,7 @@ GateDecision gateOnScene(const VelocityCommand& command, const core::Scene& plac
 VelocityGate::VelocityGate(GateConfig config) : config_(std::move(config)) {}
 
 GateDecision VelocityGate::record(GateDecision decision) {
+  last_output_ = decision.output;
   last_action_ = toString(decision.action);
   last_reason_ = decision.reason;
   if (stops(decision.action)) ++stops_;
@@ -121,6 +127,11 @@ GateDecision VelocityGate::record(GateDecision decision) {
 }
 
 std::optional<GateDecision> VelocityGate::screen(const VelocityCommand& command, double now_s) {
+  if (last_command_at_ && now_s >= *last_command_at_) {
+    intervals_.push_back(now_s - *last_command_at_);
+    if (intervals_.size() > 20) intervals_.pop_front();
+  }
+  last_command_at_ = now_s;
   heard_ = true;
   last_command_s_ = now_s;
   timeout_sent_ = false;
@@ -180,13 +191,73 @@ GateDecision VelocityGate::decide(const VelocityCommand& command, const GateView
   PlanarPose planar;
   planar.position = pose.translation().head<2>();
   planar.yaw = std::atan2(pose.linear()(1, 0), pose.linear()(0, 0));
-  GateDecision decision =
-      gateOnScene(command, outcome.placed, view.obstacle_motions, planar, *view.allowed, config_);
+  GateDecision decision = gateOnScene(command, outcome.placed, view.obstacle_motions, planar,
+                                      *view.allowed, config_, baseAt(view.freshness.reference_s));
+  holdScale(decision, view);
   if (!missing.empty()) {
     decision.reason +=
         " (incomplete data, passed by on_incomplete: pass: " + joinText(missing, "; ") + ")";
   }
   return record(std::move(decision));
+}
+
+void VelocityGate::holdScale(GateDecision& decision, const GateView& view) {
+  const bool judged = decision.action == GateAction::Pass || decision.action == GateAction::Slow ||
+                      decision.action == GateAction::Stop || decision.action == GateAction::Escape;
+  if (!judged) {
+    last_judged_.reset();
+    return;
+  }
+  bool world_moves = false;
+  for (const core::Motion& m : view.obstacle_motions) {
+    world_moves |= m.velocity.x() != 0.0 || m.velocity.y() != 0.0 || m.angular_velocity != 0.0;
+  }
+  const VelocityCommand& input = decision.input;
+  if (last_judged_ && !world_moves && last_judged_->world_revision == view.world_revision &&
+      last_judged_->input.linear == input.linear && last_judged_->input.angular == input.angular &&
+      decision.scale > last_judged_->scale) {
+    // The base slowing down makes a larger scale safe again; taking it would start the base
+    // again toward what stopped it: stop-and-go. The scale rises when the input or the world
+    // changes (a new command, new obstacles).
+    const double held = last_judged_->scale;
+    decision.reason += "; held at " + core::formatNumber(held) + " (from " +
+                       core::formatNumber(decision.scale) +
+                       "): the input and the world are as when the scale fell, so it does not "
+                       "rise again";
+    decision.scale = held;
+    decision.output = scaledCommand(input, held);
+    if (held == 0.0) {
+      decision.action = GateAction::Stop;
+    } else if (decision.action == GateAction::Pass) {
+      decision.action = GateAction::Slow;
+    }
+  }
+  last_judged_ = Judged{input, decision.scale, view.world_revision};
+}
+
+void VelocityGate::measuredVelocity(const VelocityCommand& twist, double stamp_s) {
+  measured_ = std::make_pair(twist, stamp_s);
+}
+
+core::BaseState VelocityGate::baseAt(double now_s) const {
+  core::BaseState base;
+  base.dynamics = config_.base;
+  const double timeout = config_.cmd_vel_timeout_s;
+  VelocityCommand velocity = last_output_;
+  if (measured_ && now_s - measured_->second <= std::max(0.5, timeout)) {
+    velocity = measured_->first;
+  }
+  base.velocity = {velocity.linear.x(), velocity.linear.y(), velocity.angular.z()};
+  // The output acts until the next command, or until the watchdog's zero (its timer runs at a
+  // quarter of the timeout).
+  const double longest = timeout > 0.0 ? 1.25 * timeout : std::numeric_limits<double>::infinity();
+  if (intervals_.empty()) {
+    base.command_period = timeout > 0.0 ? longest : 0.1;
+  } else {
+    base.command_period =
+        std::min(longest, *std::max_element(intervals_.begin(), intervals_.end()));
+  }
+  return base;
 }
 
 std::optional<GateDecision> VelocityGate::watchdog(double now_s) {
@@ -205,10 +276,16 @@ std::optional<GateDecision> VelocityGate::watchdog(double now_s) {
 }
 
 std::vector<std::pair<std::string, std::string>> VelocityGate::healthValues() const {
+  const std::string ideal = idealBaseWarning(config_);
   return {{"gate", !config_.enabled ? "disabled" : last_action_},
           {"gate reason", last_reason_},
           {"gate stops", std::to_string(stops_)},
-          {"gate slow-downs", std::to_string(slowdowns_)}};
+          {"gate slow-downs", std::to_string(slowdowns_)},
+          {"gate base model",
+           ideal.empty() ? "reaction " + core::formatNumber(config_.base.reaction_time) + " s, " +
+                               core::formatNumber(config_.base.linear_deceleration) + " m/s^2, " +
+                               core::formatNumber(config_.base.angular_deceleration) + " rad/s^2"
+                         : ideal}};
 }
 
 }  // namespace ellipse_collision::app

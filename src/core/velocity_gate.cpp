@@ -5,8 +5,10 @@
 #include <cstdio>
 #include <cstdlib>
 #include <limits>
+#include <optional>
 #include <utility>
 
+#include "ellipse_collision/core/base_braking.h"
 #include "ellipse_collision/core/distance.h"
 #include "ellipse_collision/core/contact_scale.h"
 #include "ellipse_collision/core/number_format.h"
@@ -183,12 +185,16 @@ struct PairTime {
 
 class Gate {
  public:
-  Gate(const PathScene& scene, const Twist& twist, const GateSettings& settings, GateResult& result)
+  Gate(const PathScene& scene, const Twist& twist, const GateSettings& settings,
+       const BaseState& base, GateResult& result)
       : scene_(scene),
         twist_(twist),
         settings_(settings),
+        base_(base),
         result_(result),
-        early_(detail::kRotationResolution * settings.horizon) {}
+        early_(detail::kRotationResolution * settings.horizon),
+        sigma_horizon_(settings.horizon),
+        time_horizon_(settings.horizon) {}
 
   void run();
 
@@ -200,6 +206,20 @@ class Gate {
   /// the command moves apart make it Escape).
   void scaleRule(bool escaping);
   void keepEarliest(PairTime& best, bool standing, double k, double until);
+  /// The braking model of the command (off for an ideal base or a standing command): the base's
+  /// scale along the command now, the rate it sheds it, the windows it needs. False on an error.
+  bool prepareBraking();
+  ScaleProfile profileOf(double k) const {
+    return ScaleProfile(from_scale_, k, base_.dynamics.reaction_time, base_.command_period,
+                        shed_rate_);
+  }
+  /// The braking rule on grid scale `n` down from the contact rule's: the largest scale whose
+  /// braking ends `margin` clear of every contact; -1 when not even 0 does (then `hit` is the
+  /// contact braking now meets). `standing_first` is the standing pairs' first contact along the
+  /// arc at scale 1 (its time is twist-time).
+  long brakingScale(long n, long top, const PairTime& standing_first, PairTime& hit);
+  /// Where braking under profile `p` first meets an obstacle, `margin` short (none: found false).
+  PairTime brakingHit(const ScaleProfile& p, const PairTime& standing_first);
 
   /// twistContact() over `horizon`, reported only when at or before `until` (<= horizon).
   FirstContact contactOf(const Candidate& c, const Twist& twist, double horizon, double until) {
@@ -229,6 +249,8 @@ class Gate {
     keepEarlier(best, {contact.contact, contact.time, c.link, c.obstacle});
   }
   GateContact describe(const PairTime& p, double k) const;
+  /// describe() for a contact met braking under profile `p` (the link where p puts it then).
+  GateContact describeBraking(const PairTime& p, const ScaleProfile& profile, double k) const;
   std::string pairText(const GateContact& c) const {
     return "link '" + c.link + "' with '" + c.obstacle + "'";
   }
@@ -236,9 +258,17 @@ class Gate {
   const PathScene& scene_;
   const Twist& twist_;
   const GateSettings& settings_;
+  const BaseState& base_;
   GateResult& result_;
   /// How much earlier than its first contact a pair's reported contact may come [s].
-  const double early_;
+  double early_;
+  /// The braking model (prepareBraking()).
+  bool braking_{false};
+  double from_scale_{0.0};    ///< the base's velocity now as a scale of the command
+  double shed_rate_{0.0};     ///< [1/s]
+  double margin_sigma_{0.0};  ///< `margin` as twist-time of the command's fastest link point [s]
+  double sigma_horizon_;      ///< twist-time the links may cover (the horizon, or braking's reach)
+  double time_horizon_;       ///< time obstacles may move for [s]
   std::vector<Candidate> candidates_;
   // keepEarliest()'s work space: bounds per candidate, candidates grouped by bound.
   std::vector<double> bounds_;
@@ -260,10 +290,20 @@ GateContact Gate::describe(const PairTime& p, double k) const {
   return c;
 }
 
+GateContact Gate::describeBraking(const PairTime& p, const ScaleProfile& profile, double k) const {
+  GateContact c = describe(p, k);
+  if (!p.found) return c;
+  c.point = contactPoint(
+      linkAfter(scene_.links[p.link].ellipse, twist_, profile.sigmaAt(p.time)),
+      movedBy(scene_.obstacles[p.obstacle].ellipse, scene_.obstacle_motions[p.obstacle], p.time));
+  return c;
+}
+
 bool Gate::findCandidates() {
-  const double horizon = settings_.horizon;
   // Link l stays within |v_c| H + R_l of its centre at t = 0 under k twist for every k in [0, 1]:
-  // its centre moves at the constant speed k |v_c| (the frame turns with it).
+  // its centre moves at the constant speed k |v_c| (the frame turns with it). Braking, H is the
+  // twist-time the base covers before it rests; obstacles move for as long.
+  const double horizon = sigma_horizon_;
   double robot_reach = 0.0;
   std::vector<double> reach(scene_.links.size()), speed(scene_.links.size());
   for (std::size_t l = 0; l < scene_.links.size(); ++l) {
@@ -276,13 +316,13 @@ bool Gate::findCandidates() {
   for (std::size_t o = 0; o < scene_.obstacles.size(); ++o) {
     const Ellipse& e = scene_.obstacles[o].ellipse;
     const Motion& m = scene_.obstacle_motions[o];
-    const Eigen::Vector2d sweep = m.velocity * horizon;
+    const Eigen::Vector2d sweep = m.velocity * time_horizon_;
     const double grown = boundingRadius(e) + settings_.margin;
     const double coordinate = e.center.cwiseAbs().maxCoeff() + sweep.cwiseAbs().maxCoeff();
     const double bound = widened(robot_reach + grown, coordinate);
     // Not `<=`: a NaN obstacle is never skipped, and is refused below.
     if (segmentDistanceSquared(Eigen::Vector2d::Zero(), e.center, sweep) > bound * bound) continue;
-    if (std::string r = obstacleReason(scene_.obstacles[o], m, horizon); !r.empty()) {
+    if (std::string r = obstacleReason(scene_.obstacles[o], m, time_horizon_); !r.empty()) {
       result_.error = r;
       return false;
     }
@@ -441,8 +481,65 @@ void Gate::scaleRule(bool escaping) {
       if (n == 0) k = 0.0;
     }
   }
+  std::string braking_text;
+  bool braked = false;  // the braking rule lowered the scale: it, not the above, says why
+  std::optional<ScaleProfile> limiting_profile;  // the limiting contact is a braking one
+  if (braking_) {
+    // The braking rule below the contact rule's scale (its grid index n; n = 0 when it stopped).
+    if (k == 0.0) n = 0;
+    if (k == 1.0) n = top + 1;
+    PairTime along = standing_first;  // twist-time at scale 1 is time at k = 1
+    if (sigma_horizon_ > horizon && (!along.found || along.time > horizon)) {
+      along = PairTime();
+      keepEarliest(along, true, 1.0, sigma_horizon_);
+    }
+    const double linear = std::hypot(twist_.vx, twist_.vy);
+    result_.free_distance =
+        along.found ? linear * along.time : std::numeric_limits<double>::infinity();
+    PairTime hit;
+    const long kept = brakingScale(n, top, along, hit);
+    const std::string model = " (reaction " + formatNumber(base_.dynamics.reaction_time) +
+                              " s, then one command period " + readable(base_.command_period) +
+                              " s, then braking at the limits)";
+    if (kept < 0) {
+      // Not even braking now ends clear: stop, and say how hard it meets what.
+      const ScaleProfile now = profileOf(0.0);
+      result_.unavoidable = true;
+      result_.impact_speed = linear * now.scaleAt(hit.time);
+      limiting = hit;
+      limiting_scale = 0.0;
+      limiting_profile = now;
+      k = 0.0;
+      braked = true;
+      braking_text = "; braking now cannot avoid it: " + pairText(describeBraking(hit, now, 0.0)) +
+                     " within margin " + formatNumber(settings_.margin) + " m in " +
+                     readable(hit.time) + " s at " + readable(result_.impact_speed) + " m/s" +
+                     model;
+    } else if (kept < n) {
+      const double lowered = kept > top ? 1.0 : kept * res;
+      const double above = kept + 1 > top ? 1.0 : (kept + 1) * res;
+      const ScaleProfile tried = profileOf(above);
+      limiting = brakingHit(tried, along);
+      limiting_scale = above;
+      limiting_profile = tried;
+      braked = true;
+      braking_text = "; braking rule: at " + readable(above) + " the base would need " +
+                     readable(linear * tried.stopSigma()) + " m to rest" +
+                     (limiting.found ? " and come within margin of " +
+                                           pairText(describeBraking(limiting, tried, above))
+                                     : std::string()) +
+                     model;
+      k = lowered;
+    }
+    result_.braking_distance = linear * profileOf(k).stopSigma();
+    if (!braked) {
+      braking_text = "; braking from " + readable(k) + " ends in " +
+                     readable(result_.braking_distance) + " m" + model;
+    }
+  }
   result_.scale = k;
-  result_.limiting = describe(limiting, limiting_scale);
+  result_.limiting = limiting_profile ? describeBraking(limiting, *limiting_profile, limiting_scale)
+                                      : describe(limiting, limiting_scale);
   // The first contact under the output command over the horizon.
   PairTime output;
   if (k == 1.0) {
@@ -474,26 +571,29 @@ void Gate::scaleRule(bool escaping) {
                          : std::string());
   } else if (k > 0.0) {
     result_.action = escaping ? GateAction::Escape : GateAction::Slow;
-    text += under_full + "; slowed to " + readable(k) + " so that ";
-    text += limiting_scale < 1.0
-                ? "no moving obstacle comes sooner than time_before_collision " +
-                      formatNumber(before) + " s (at " + readable(lim.scale) + ", " +
-                      pairText(lim) + " in " + readable(lim.time) + " s)"
-                : "it comes no sooner than time_before_collision " + formatNumber(before) + " s";
+    text +=
+        under_full + "; slowed to " + readable(k) + (braked ? " by the braking rule" : " so that ");
+    if (!braked)
+      text += limiting_scale < 1.0
+                  ? "no moving obstacle comes sooner than time_before_collision " +
+                        formatNumber(before) + " s (at " + readable(lim.scale) + ", " +
+                        pairText(lim) + " in " + readable(lim.time) + " s)"
+                  : "it comes no sooner than time_before_collision " + formatNumber(before) + " s";
   } else {
     result_.action = GateAction::Stop;
     text += under_full;
-    text += !why.empty() ? why
-                         : "; no scale above 0 on the " + formatNumber(res) +
-                               " grid keeps every contact beyond time_before_collision " +
-                               formatNumber(before) + " s";
+    if (!braked)
+      text += !why.empty() ? why
+                           : "; no scale above 0 on the " + formatNumber(res) +
+                                 " grid keeps every contact beyond time_before_collision " +
+                                 formatNumber(before) + " s";
   }
   if (k == 0.0 && result_.contact.found) {
     text += "; standing still, '" + result_.contact.obstacle + "' reaches link '" +
             result_.contact.link + "' in " + readable(result_.contact.time) +
             " s (stopping cannot avoid it)";
   }
-  result_.reason = std::move(text);
+  result_.reason = std::move(text) + braking_text;
 }
 
 /// Keeps in `best` the earliest of it and the first contacts over the horizon under k twist of the
@@ -504,7 +604,7 @@ void Gate::scaleRule(bool escaping) {
 /// 1/kBoundBuckets of the window), so that the earliest contacts come first and cut the rest.
 void Gate::keepEarliest(PairTime& best, bool standing, double k, double until) {
   constexpr std::size_t kBoundBuckets = 64;
-  const double horizon = settings_.horizon;
+  const double horizon = std::max(settings_.horizon, until);
   const Twist command = scaled(twist_, k);
   const double window = best.found ? std::min(best.time, until) : until;
   bounds_.resize(candidates_.size());
@@ -533,7 +633,124 @@ void Gate::keepEarliest(PairTime& best, bool standing, double k, double until) {
   }
 }
 
+bool Gate::prepareBraking() {
+  const Twist& v = twist_;
+  const bool still_command = v.vx == 0.0 && v.vy == 0.0 && v.wz == 0.0;
+  braking_ = !base_.dynamics.ideal() && !still_command;
+  if (!braking_) return true;
+  const BaseDynamics& d = base_.dynamics;
+  const std::pair<const char*, double> fields[] = {
+      {"base.reaction_time", d.reaction_time},
+      {"base.linear_deceleration", d.linear_deceleration},
+      {"base.angular_deceleration", d.angular_deceleration},
+      {"base.command_period", base_.command_period}};
+  for (const auto& [name, value] : fields) {
+    if (!(value >= 0.0 && value <= kMaxGateHorizonS)) {
+      result_.error = std::string(name) + " = " + formatNumber(value) + " must be within [0, " +
+                      formatNumber(kMaxGateHorizonS) + "]";
+      return false;
+    }
+  }
+  if (std::string r =
+          invalidVelocityReason(Motion{{base_.velocity.vx, base_.velocity.vy}, base_.velocity.wz},
+                                0.0, {"base.velocity.vx", "base.velocity.vy", "base.velocity.wz"});
+      !r.empty()) {
+    result_.error = r;
+    return false;
+  }
+  // The base's velocity as a scale of the command: exact when it lies on the command's arc (the
+  // gate's own output, a scaled command, or a measured velocity along it); otherwise the scale
+  // of the part that runs fastest against the command's (the bend between the arcs is not
+  // modelled, doc/velocity_gate.md).
+  const Twist& now = base_.velocity;
+  const double along =
+      (now.vx * v.vx + now.vy * v.vy + now.wz * v.wz) / (v.vx * v.vx + v.vy * v.vy + v.wz * v.wz);
+  const double off =
+      std::hypot(now.vx - along * v.vx, now.vy - along * v.vy) + std::fabs(now.wz - along * v.wz);
+  const double size =
+      std::hypot(now.vx, now.vy) + std::fabs(now.wz) + std::hypot(v.vx, v.vy) + std::fabs(v.wz);
+  if (along >= 0.0 && off <= 1e-9 * size) {
+    from_scale_ = along;
+  } else {
+    const double linear = std::hypot(v.vx, v.vy);
+    from_scale_ = std::max(linear > 0.0 ? std::hypot(now.vx, now.vy) / linear : 0.0,
+                           v.wz != 0.0 ? std::fabs(now.wz) / std::fabs(v.wz) : 0.0);
+  }
+  shed_rate_ = brakingRate(v, base_.dynamics);
+  double fastest = 0.0;  // the fastest link point under the full command [m/s]
+  for (const NamedEllipse& link : scene_.links) {
+    fastest = std::max(fastest, pointVelocity(v, link.ellipse.center).norm() +
+                                    std::fabs(v.wz) * boundingRadius(link.ellipse));
+  }
+  margin_sigma_ = fastest > 0.0 ? settings_.margin / fastest : 0.0;
+  const ScaleProfile widest = profileOf(std::max(1.0, from_scale_));
+  sigma_horizon_ = std::max(settings_.horizon, widest.stopSigma() + margin_sigma_);
+  time_horizon_ = std::max(settings_.horizon, widest.stopTime());
+  early_ = detail::kRotationResolution * std::max(sigma_horizon_, time_horizon_);
+  if (std::string r = invalidTwistReason(v, sigma_horizon_); !r.empty()) {
+    result_.error = "braking: " + r;
+    return false;
+  }
+  for (const NamedEllipse& link : scene_.links) {
+    if (std::string r = detail::linkReachReason(link.ellipse, v, sigma_horizon_); !r.empty()) {
+      result_.error = "braking: link '" + link.name + "': " + r;
+      return false;
+    }
+  }
+  return true;
+}
+
+PairTime Gate::brakingHit(const ScaleProfile& p, const PairTime& standing_first) {
+  PairTime hit;
+  // Standing obstacles: the base stays on the command's arc, so it meets the first one where its
+  // twist-time reaches that contact's; it must rest `margin` of the fastest point's path short.
+  if (standing_first.found && p.stopSigma() + margin_sigma_ >= standing_first.time) {
+    hit = standing_first;
+    hit.time = p.timeAtSigma(std::max(0.0, standing_first.time - margin_sigma_));
+  }
+  // Moving obstacles: certified first contact under the warped motion, `margin` short.
+  const double until = hit.found ? hit.time : p.stopTime();
+  for (const Candidate& c : candidates_) {
+    if (c.overlapping || c.standing) continue;
+    if (earliestPossible(c, p.maxScale(), early_) - settings_.margin > until) continue;
+    ++result_.pair_tests;
+    const FirstContact contact = brakingContact(
+        scene_.links[c.link].ellipse, twist_, p, scene_.obstacles[c.obstacle].ellipse,
+        scene_.obstacle_motions[c.obstacle], settings_.margin);
+    keepEarlier(hit, c, contact);
+  }
+  return hit;
+}
+
+long Gate::brakingScale(long n, long top, const PairTime& standing_first, PairTime& hit) {
+  const double res = settings_.resolution;
+  const auto gridValue = [&](long i) { return i > top ? 1.0 : i * res; };
+  if (standing_first.found && n > 0) {
+    // Against standing obstacles the rest point moves on monotonically with the scale: bisect
+    // for the largest grid scale that rests `margin` short, then check the moving ones downward.
+    const auto rests = [&](long i) {
+      return profileOf(gridValue(i)).stopSigma() + margin_sigma_ < standing_first.time;
+    };
+    if (!rests(n)) {
+      long lo = 0, hi = n;  // rests(hi) false; lo unknown
+      if (rests(0)) {
+        while (hi - lo > 1) {
+          const long mid = lo + (hi - lo) / 2;
+          (rests(mid) ? lo : hi) = mid;
+        }
+      }
+      n = lo;
+    }
+  }
+  for (; n >= 0; --n) {
+    hit = brakingHit(profileOf(gridValue(n)), standing_first);
+    if (!hit.found) return n;
+  }
+  return -1;
+}
+
 void Gate::run() {
+  if (!prepareBraking()) return;
   if (!findCandidates()) return;
   std::vector<ClosePair> close;
   measureClearance(close);
@@ -590,14 +807,15 @@ std::string invalidGateReason(const PathScene& scene, const Twist& twist,
   return {};
 }
 
-GateResult gateTwist(const PathScene& scene, const Twist& twist, const GateSettings& settings) {
+GateResult gateTwist(const PathScene& scene, const Twist& twist, const GateSettings& settings,
+                     const BaseState& base) {
   GateResult result;
   if (std::string r = cheapGateReason(scene, twist, settings); !r.empty()) {
     result.error = std::move(r);
     result.reason = "cannot judge the command: " + result.error;
     return result;
   }
-  Gate(scene, twist, settings, result).run();
+  Gate(scene, twist, settings, base, result).run();
   if (!result.ok()) {
     result.action = GateAction::Stop;
     result.scale = 0.0;

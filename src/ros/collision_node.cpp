@@ -120,6 +120,11 @@ CollisionNode::CollisionNode(const ros::NodeHandle& nh, const ros::NodeHandle& p
       private_nh_.advertiseService("gate/set_enabled", &CollisionNode::onSetGateEnabled, this);
   cmd_vel_sub_ = private_nh_.subscribe("cmd_vel_in", 1, &CollisionNode::onCommand, this,
                                        ros::TransportHints().tcpNoDelay());
+  const std::string& odom_topic = monitor_->gate().config().odom_topic;
+  if (!odom_topic.empty()) {
+    odom_sub_ = nh_.subscribe(odom_topic, 1, &CollisionNode::onOdometry, this,
+                              ros::TransportHints().tcpNoDelay());
+  }
   scheduleTimers();
   diagnostics_timer_ =
       private_nh_.createTimer(ros::Duration(1.0), &CollisionNode::onDiagnosticsTimer, this);
@@ -137,6 +142,7 @@ CollisionNode::CollisionNode(const ros::NodeHandle& nh, const ros::NodeHandle& p
     onGateReconfigure(config, level);
   });
 
+  warnIfIdealBase();
   for (const std::string& skipped : config_.urdf_links_skipped) {
     ROS_INFO_STREAM("ellipse_collision: links_from_urdf skipped " << skipped);
   }
@@ -208,6 +214,30 @@ void CollisionNode::retune(const std::optional<app::FieldError>& at_bound,
   if (changes.empty()) return;
   scheduleTimers();
   ROS_INFO_STREAM("ellipse_collision: reconfigured: " << changes);
+  warnIfIdealBase();
+}
+
+void CollisionNode::warnIfIdealBase() const {
+  const std::string warning = app::idealBaseWarning(monitor_->gate().config());
+  if (!warning.empty()) ROS_WARN_STREAM("ellipse_collision: " << warning);
+}
+
+void CollisionNode::onOdometry(const nav_msgs::Odometry::ConstPtr& msg) {
+  // The twist of nav_msgs/Odometry is in its child frame: the base's own frame.
+  const std::string& robot_frame = monitor_->gate().config().robot_frame;
+  if (!msg->child_frame_id.empty() && msg->child_frame_id != robot_frame) {
+    ROS_WARN_STREAM_THROTTLE(5.0, "ellipse_collision: gate/odom_topic: twist in '"
+                                      << msg->child_frame_id << "', not robot_frame '"
+                                      << robot_frame << "': ignored");
+    return;
+  }
+  const app::VelocityCommand twist = fromMsg(msg->twist.twist);
+  if (!twist.linear.allFinite() || !twist.angular.allFinite()) {
+    ROS_WARN_STREAM_THROTTLE(5.0, "ellipse_collision: gate/odom_topic: non-finite twist ignored");
+    return;
+  }
+  const ros::Time stamp = msg->header.stamp.isZero() ? ros::Time::now() : msg->header.stamp;
+  monitor_->gateOdometry(twist, stamp.toSec());
 }
 
 app::TransformLookup CollisionNode::lookup(const ros::Time& stamp,

@@ -208,6 +208,10 @@ GateState toMsg(const app::GateDecision& decision) {
   msg.contact_point.y = decision.contact_point.y();
   msg.input = toMsg(decision.input);
   msg.output = toMsg(decision.output);
+  msg.braking_distance = decision.braking_distance_m;
+  msg.free_distance = decision.free_distance_m;
+  msg.unavoidable = decision.unavoidable;
+  msg.impact_speed = decision.impact_speed;
   msg.reason = decision.reason;
   return msg;
 }

@@ -70,10 +70,16 @@ std::optional<app::FieldError> applyGateParameters(const GateParametersConfig& c
        &gate.timing.resolution},
       {"gate/cmd_vel_timeout", config.cmd_vel_timeout, min.cmd_vel_timeout, max.cmd_vel_timeout,
        &gate.cmd_vel_timeout_s},
-      {"gate/max_linear_speed", config.max_linear_speed, min.max_linear_speed,
-       max.max_linear_speed, &gate.max_linear_speed},
+      {"gate/max_linear_speed", config.max_linear_speed, min.max_linear_speed, max.max_linear_speed,
+       &gate.max_linear_speed},
       {"gate/max_angular_speed", config.max_angular_speed, min.max_angular_speed,
        max.max_angular_speed, &gate.max_angular_speed},
+      {"gate/reaction_time", config.reaction_time, min.reaction_time, max.reaction_time,
+       &gate.base.reaction_time},
+      {"gate/max_linear_deceleration", config.max_linear_deceleration, min.max_linear_deceleration,
+       max.max_linear_deceleration, &gate.base.linear_deceleration},
+      {"gate/max_angular_deceleration", config.max_angular_deceleration,
+       min.max_angular_deceleration, max.max_angular_deceleration, &gate.base.angular_deceleration},
   };
   std::optional<app::FieldError> bound;
   for (const auto& field : fields) {
@@ -108,6 +114,9 @@ void toGateParameters(const app::TunableSettings& settings, GateParametersConfig
   config->on_incomplete = app::toString(gate.on_incomplete);
   config->max_linear_speed = gate.max_linear_speed;
   config->max_angular_speed = gate.max_angular_speed;
+  config->reaction_time = gate.base.reaction_time;
+  config->max_linear_deceleration = gate.base.linear_deceleration;
+  config->max_angular_deceleration = gate.base.angular_deceleration;
 }
 
 }  // namespace ellipse_collision

@@ -8,9 +8,11 @@
 #include <string>
 #include <vector>
 
+#include "braking_base.h"
 #include "ellipse_collision/core/distance.h"
 #include "ellipse_collision/core/number_format.h"
 #include "ellipse_collision/core/overlap.h"
+#include "ellipse_collision/core/path_motion.h"
 #include "ellipse_collision/core/velocity_gate.h"
 #include "first_contact_oracle.h"
 #include "grazing_tally.h"
@@ -488,6 +490,169 @@ TEST(Gate, InvalidInputsStopWithTheFieldAndValue) {
   bad.obstacle_motions.push_back({});
   EXPECT_EQ(invalidGateReason(bad, {1.0, 0.0, 0.0}, settings(3.0, 1.5, 0.2)),
             "obstacle 1: name 'wall' repeats obstacle 0");
+}
+
+// ---- the braking rule: a base that answers late and brakes at bounded rates ------------------
+
+struct Course {
+  NamedEllipse obstacle;
+  Motion motion;          ///< in the world frame
+  double appears_s{0.0};  ///< seen from this time on
+};
+
+struct Drive {
+  bool touched_while_moving{false};
+  double touch_time{0.0};
+  double touch_speed{0.0};
+  bool came_to_rest{false};
+  double rest_gap{0.0};  ///< distance of the robot to the nearest obstacle when it came to rest
+  bool said_unavoidable{false};
+  std::string reason;  ///< the last decision's
+};
+
+/// The robot (links in its frame) driven by `input` at 20 Hz through gateTwist() for `duration`,
+/// the simulated base (ellipse_collision::test::BrakingBase) following the outputs late and braking
+/// at its limits, its velocity now (as odometry gives it) the gate's BaseState. Contact is checked
+/// every 5 ms of the simulated motion against the obstacles where they are then.
+Drive drive(const std::vector<NamedEllipse>& links, const std::vector<Course>& course,
+            const Twist& input, const BaseDynamics& dynamics, double duration,
+            const GateSettings& s) {
+  constexpr double kPeriod = 0.05;
+  ellipse_collision::test::BrakingBase base(dynamics, {}, input);  // cruising at the input
+  Drive result;
+  const auto worldLink = [&](const Ellipse& link) {
+    const ellipse_collision::test::BasePose& p = base.pose();
+    return placeAt(link, {p.x, p.y}, p.yaw);
+  };
+  const auto obstacleAt = [&](const Course& c, double t) {
+    return movedBy(c.obstacle.ellipse, c.motion, t);
+  };
+  for (double t = 0.0; t < duration; t += kPeriod) {
+    PathScene scene;
+    scene.links = links;
+    const ellipse_collision::test::BasePose& p = base.pose();
+    const double c = std::cos(p.yaw), sn = std::sin(p.yaw);
+    for (const Course& o : course) {
+      if (t < o.appears_s) continue;
+      Ellipse e = obstacleAt(o, t);
+      const Eigen::Vector2d d = e.center - Eigen::Vector2d(p.x, p.y);
+      e.center = {c * d.x() + sn * d.y(), -sn * d.x() + c * d.y()};
+      e.angle -= p.yaw;
+      scene.obstacles.push_back({o.obstacle.name, EllipseRole::Obstacle, e});
+      const Eigen::Vector2d v = o.motion.velocity;
+      scene.obstacle_motions.push_back(
+          {{c * v.x() + sn * v.y(), -sn * v.x() + c * v.y()}, o.motion.angular_velocity});
+    }
+    BaseState state;
+    state.dynamics = dynamics;
+    state.velocity = base.velocity();
+    state.command_period = kPeriod;
+    const GateResult r = gateTwist(scene, input, s, state);
+    EXPECT_TRUE(r.ok()) << r.error;
+    result.reason = r.reason;
+    result.said_unavoidable |= r.unavoidable;
+    base.command(t, scaled(input, r.scale));
+    for (int sub = 1; sub <= 10; ++sub) {
+      const double at = t + kPeriod * sub / 10;
+      base.advanceTo(at);
+      for (const Course& o : course) {
+        if (at < o.appears_s) continue;
+        for (const NamedEllipse& link : links) {
+          if (base.moving() && overlap(worldLink(link.ellipse), obstacleAt(o, at)) &&
+              !result.touched_while_moving) {
+            result.touched_while_moving = true;
+            result.touch_time = at;
+            result.touch_speed = base.speed();
+          }
+        }
+      }
+    }
+    if (!base.moving() && t > 0.5) {
+      result.came_to_rest = true;
+      double gap = std::numeric_limits<double>::infinity();
+      for (const Course& o : course) {
+        for (const NamedEllipse& link : links) {
+          gap = std::min(gap, distance(worldLink(link.ellipse), obstacleAt(o, t)).distance);
+        }
+      }
+      result.rest_gap = gap;
+      break;
+    }
+  }
+  return result;
+}
+
+GateSettings brakingSettings() { return settings(4.0, 1.0, 0.3, 0.05, 0.01); }
+
+TEST(GateBraking, WallsAreNeverTouchedAtAnySpeedDecelerationAndReaction) {
+  const std::vector<NamedEllipse> robot = {link("base", ellipse(0.0, 0.0, 0.3, 0.3))};
+  for (double speed : {0.5, 1.0, 1.5, 2.0}) {
+    for (double decel : {0.5, 1.0, 2.0}) {
+      for (double reaction : {0.05, 0.1, 0.2}) {
+        const double stopping = speed * (reaction + 0.05) + speed * speed / (2.0 * decel);
+        const double wall = 0.3 + 1.5 * stopping + 1.0;  // its near face
+        const Drive d = drive(robot, {{obstacle("wall", ellipse(wall + 0.05, 0.0, 0.05, 3.0)), {}}},
+                              {speed, 0.0, 0.0}, {reaction, decel, 2.0}, 20.0, brakingSettings());
+        const std::string what = std::to_string(speed) + " m/s, " + std::to_string(decel) +
+                                 " m/s^2, " + std::to_string(reaction) + " s";
+        EXPECT_FALSE(d.touched_while_moving)
+            << what << ": touched at " << d.touch_time << " s, " << d.touch_speed << " m/s";
+        EXPECT_TRUE(d.came_to_rest) << what << ": " << d.reason;
+        EXPECT_GE(d.rest_gap, 0.0) << what;
+        if (speed == 1.5) {
+          EXPECT_LE(d.rest_gap, 0.6) << what << ": rests absurdly early";
+        }
+      }
+    }
+  }
+}
+
+TEST(GateBraking, ABoxAppearingAtOnePointTwoStoppingDistancesIsNotHit) {
+  const std::vector<NamedEllipse> robot = {link("base", ellipse(0.0, 0.0, 0.3, 0.3))};
+  const double speed = 1.5, decel = 0.8, reaction = 0.1;
+  // The robot's front travels this far from the moment a command is judged until it rests.
+  const double stopping = speed * (reaction + 0.05) + speed * speed / (2.0 * decel);
+  const double appears = 1.0;
+  const double front_then = 0.3 + speed * appears;
+  const double box = front_then + 1.2 * stopping;  // the box's near face, when it appears
+  const Drive d = drive(robot, {{obstacle("box", ellipse(box + 0.2, 0.0, 0.2, 0.2)), {}, appears}},
+                        {speed, 0.0, 0.0}, {reaction, decel, 2.0}, 10.0, brakingSettings());
+  EXPECT_FALSE(d.touched_while_moving) << d.touch_time << " s at " << d.touch_speed << " m/s";
+  EXPECT_TRUE(d.came_to_rest) << d.reason;
+}
+
+TEST(GateBraking, ABoxAppearingTooCloseStopsAndSaysItIsUnavoidable) {
+  const std::vector<NamedEllipse> robot = {link("base", ellipse(0.0, 0.0, 0.3, 0.3))};
+  // 0.5 m ahead at 1.5 m/s with 0.8 m/s^2: braking needs 1.6 m.
+  const Drive d =
+      drive(robot, {{obstacle("box", ellipse(1.5 + 0.3 + 0.5 + 0.2, 0.0, 0.2, 0.2)), {}, 1.0}},
+            {1.5, 0.0, 0.0}, {0.1, 0.8, 2.0}, 4.0, brakingSettings());
+  EXPECT_TRUE(d.said_unavoidable) << d.reason;
+}
+
+TEST(GateBraking, AOneCentimetrePlateAtTwoMetresPerSecond) {
+  const std::vector<NamedEllipse> robot = {link("base", ellipse(0.0, 0.0, 0.3, 0.3))};
+  const Drive d = drive(robot, {{obstacle("plate", ellipse(6.0, 0.0, 0.005, 0.5)), {}}},
+                        {2.0, 0.0, 0.0}, {0.1, 1.0, 2.0}, 10.0, brakingSettings());
+  EXPECT_FALSE(d.touched_while_moving) << d.touch_time << " s at " << d.touch_speed << " m/s";
+  EXPECT_TRUE(d.came_to_rest) << d.reason;
+}
+
+TEST(GateBraking, TurningIntoAPostAtOnePointTwoRadiansPerSecond) {
+  // The origin circles (0, 0.5) at radius 0.5; the post stands on that circle, a half turn on.
+  const std::vector<NamedEllipse> robot = {link("base", ellipse(0.0, 0.0, 0.25, 0.15))};
+  const Drive d = drive(robot, {{obstacle("post", ellipse(0.0, 1.0, 0.05, 0.05)), {}}},
+                        {0.6, 0.0, 1.2}, {0.15, 0.5, 0.6}, 10.0, brakingSettings());
+  EXPECT_FALSE(d.touched_while_moving) << d.touch_time << " s at " << d.touch_speed << " m/s";
+  EXPECT_TRUE(d.came_to_rest) << d.reason;
+}
+
+TEST(GateBraking, AnOncomingCartIsNotTouchedWhileTheBaseMoves) {
+  const std::vector<NamedEllipse> robot = {link("base", ellipse(0.0, 0.0, 0.3, 0.3))};
+  const Drive d =
+      drive(robot, {{obstacle("cart", ellipse(9.0, 0.0, 0.4, 0.3)), {{-0.5, 0.0}, 0.0}}},
+            {1.5, 0.0, 0.0}, {0.2, 0.5, 2.0}, 12.0, brakingSettings());
+  EXPECT_FALSE(d.touched_while_moving) << d.touch_time << " s at " << d.touch_speed << " m/s";
 }
 
 }  // namespace

@@ -137,6 +137,10 @@ class CollisionMonitor {
                            const TransformLookup& latest, const TransformAtLookup& at);
   /// The gate's silence rule (VelocityGate::watchdog()).
   std::optional<GateDecision> gateWatchdog(double now_s) { return gate_.watchdog(now_s); }
+  /// The base's measured twist (gate/odom_topic, in the robot frame) at `stamp_s`.
+  void gateOdometry(const VelocityCommand& twist, double stamp_s) {
+    gate_.measuredVelocity(twist, stamp_s);
+  }
   /// ~gate/set_enabled.
   void setGateEnabled(bool enabled) { gate_.setEnabled(enabled); }
   bool gateEnabled() const { return gate_.enabled(); }

@@ -26,14 +26,29 @@ struct GateConfig {
   OnIncomplete on_incomplete{OnIncomplete::Stop};
   double max_linear_speed{5.0};   ///< a command faster along any axis is refused (STOP) [m/s]
   double max_angular_speed{5.0};  ///< a command turning faster about any axis is refused [rad/s]
+  /// How the base follows the output: reaction_time [s], max_linear_deceleration [m/s^2],
+  /// max_angular_deceleration [rad/s^2]. All 0: the base is taken to follow at once (the braking
+  /// rule is off, and the node says so).
+  core::BaseDynamics base;
+  /// nav_msgs/Odometry of the base: its measured twist is the base's velocity now ("" = the
+  /// gate's last output is).
+  std::string odom_topic;
 };
+
+/// The gate's decisions assume an ideal base (every deceleration 0, no reaction time): what the
+/// log and /diagnostics say then, or "".
+std::string idealBaseWarning(const GateConfig& config);
 
 /// Accepted ranges (refused, never clamped) besides core::findInvalidGateSettings()' for
 /// `timing`: cmd_vel_timeout within [0, core::kMaxGateHorizonS]; max_linear_speed within (0,
 /// kMaxGateSpeed]; max_angular_speed within (0, kMaxGateTurnRate]; robot_frame a non-empty frame
-/// without a leading '/'.
+/// without a leading '/'; the base's below; odom_topic any (a ROS name, checked by ROS).
 constexpr double kMaxGateSpeed = 100.0;    ///< [m/s]
 constexpr double kMaxGateTurnRate = 20.0;  ///< [rad/s]; * horizon stays within core::kMaxTurn
+/// reaction_time within [0, kMaxReactionTimeS]; max_linear_deceleration and
+/// max_angular_deceleration within [0, kMaxDeceleration] (0 = at once).
+constexpr double kMaxReactionTimeS = 5.0;
+constexpr double kMaxDeceleration = 100.0;  ///< [m/s^2] or [rad/s^2]
 
 /// The first gate setting outside its range, its key as in YAML ("gate/stop_time"), or nothing.
 std::optional<FieldError> findInvalidGateSetting(const GateConfig& config);

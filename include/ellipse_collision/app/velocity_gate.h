@@ -2,6 +2,8 @@
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <deque>
+#include <limits>
 #include <optional>
 #include <string>
 #include <utility>
@@ -38,6 +40,14 @@ struct GateDecision {
   std::vector<core::NamedEllipse> outline;
   /// The limiting obstacle where it stands at the command, in the fixed frame (when `obstacle`).
   core::Ellipse obstacle_ellipse;
+  /// The braking rule (gate/ decelerations or reaction time set): the base's path from now until
+  /// it rests under the output, the free path along the command's arc to the first standing
+  /// obstacle (infinity when none in reach) [m]; whether even braking now meets an obstacle, and
+  /// the base's predicted speed then [m/s].
+  double braking_distance_m{0.0};
+  double free_distance_m{std::numeric_limits<double>::infinity()};
+  bool unavoidable{false};
+  double impact_speed{0.0};
   std::string reason;  ///< why, in words a user reads
 };
 
@@ -57,7 +67,8 @@ struct PlanarPose {
 /// stops (an internal failure never passes).
 GateDecision gateOnScene(const VelocityCommand& command, const core::Scene& placed,
                          const std::vector<core::Motion>& obstacle_motions, const PlanarPose& robot,
-                         const core::AllowedPairs& allowed, const GateConfig& config);
+                         const core::AllowedPairs& allowed, const GateConfig& config,
+                         const core::BaseState& base = {});
 
 /// What the gate judges a command on, gathered by the monitor from the full check it ran.
 struct GateView {
@@ -69,6 +80,9 @@ struct GateView {
   std::vector<std::string> silent_sources;
   std::vector<core::Motion> obstacle_motions;  ///< one per placed entry, in the fixed frame
   const core::AllowedPairs* allowed{nullptr};
+  /// Changes whenever the stored obstacles change; with no obstacle moving, the same revision is
+  /// the same world (the no-stop-and-go rule).
+  std::uint64_t world_revision{0};
 };
 
 /// The velocity gate's state and policy, without ROS: its settings, whether it is on, the
@@ -91,10 +105,19 @@ class VelocityGate {
   /// The decision on a full check: STOP when it failed, INCOMPLETE without a fresh robot frame or
   /// (on_incomplete: stop) with data missing, otherwise gateOnScene(); recorded.
   GateDecision decide(const VelocityCommand& command, const GateView& view);
+  /// The base's measured velocity (gate/odom_topic) at `stamp_s`, in the robot frame: the base's
+  /// velocity now for the braking rule while it is no older than max(0.5 s, cmd_vel_timeout).
+  void measuredVelocity(const VelocityCommand& twist, double stamp_s);
   /// The silence rule: the first call at least cmd_vel_timeout after the last command (or after
   /// the first call, when none came yet) returns one TIMEOUT decision (a zero command); nothing
   /// before the next command. Nothing while the gate is disabled or the timeout is 0.
   std::optional<GateDecision> watchdog(double now_s);
+
+  /// What the braking rule takes as the base now (at `now_s`): its dynamics, its velocity (the
+  /// measured one while fresh, else the last output) and how long an output acts (the longest of
+  /// the last 20 command intervals, at most 1.25 cmd_vel_timeout; before two commands came,
+  /// 1.25 cmd_vel_timeout, or 0.1 s without one).
+  core::BaseState baseAt(double now_s) const;
 
   /// The gate's values for /diagnostics ("gate", "gate reason", "gate stops", "gate slow-downs").
   std::vector<std::pair<std::string, std::string>> healthValues() const;
@@ -102,7 +125,22 @@ class VelocityGate {
  private:
   GateDecision record(GateDecision decision);
 
+  /// The no-stop-and-go rule: while the input and the world stay the same, the scale never rises
+  /// after it has fallen.
+  void holdScale(GateDecision& decision, const GateView& view);
+
   GateConfig config_;
+  std::deque<double> intervals_;  ///< between the last commands [s]
+  std::optional<double> last_command_at_;
+  VelocityCommand last_output_;                                 ///< what the base was last told
+  std::optional<std::pair<VelocityCommand, double>> measured_;  ///< odometry and its stamp
+  /// The last decision by the rules (PASS, SLOW, STOP, ESCAPE): its input, scale and world.
+  struct Judged {
+    VelocityCommand input;
+    double scale{1.0};
+    std::uint64_t world_revision{0};
+  };
+  std::optional<Judged> last_judged_;
   bool heard_{false};           ///< a command came, or the watchdog started counting
   double last_command_s_{0.0};  ///< when the last command came (or the watchdog started)
   bool timeout_sent_{false};    ///< the watchdog's zero went out since the last command

@@ -2,9 +2,11 @@
 
 #include <Eigen/Core>
 #include <cstddef>
+#include <limits>
 #include <optional>
 #include <string>
 
+#include "ellipse_collision/core/base_braking.h"
 #include "ellipse_collision/core/gate_action.h"
 #include "ellipse_collision/core/path_check.h"
 #include "ellipse_collision/core/twist_motion.h"
@@ -30,6 +32,14 @@ struct GateSettings {
   double stop_time{0.3};              ///< a contact this soon under the full command stops [s]
   double margin{0.05};                ///< pairs closer than this now are "close" (escape rule) [m]
   double resolution{0.01};            ///< grid of the scale factor: k in {0, res, 2 res, ..., 1}
+};
+
+/// What the gate knows of the base it guards. With an ideal base (BaseDynamics all zero) the
+/// braking rule is off and the gate judges commands as if the base followed them at once.
+struct BaseState {
+  BaseDynamics dynamics;
+  Twist velocity;              ///< the base's velocity now, robot frame at t = 0
+  double command_period{0.0};  ///< how long an output acts before the next one can [s]
 };
 
 /// A GateSettings field outside its range: its name ("stop_time"), its value and the range
@@ -77,6 +87,14 @@ struct GateResult {
   std::string clearance_obstacle;
   std::string reason;  ///< why, in words, with names, times and scales
   std::string error;   ///< why the command could not be judged (then action Stop, scale 0)
+  /// The braking rule (a base that is not ideal): the path of the base's origin from now until
+  /// it rests under the output [m]; the free path along the command's arc to the first contact
+  /// with a standing obstacle (infinity when none within the braking reach) [m]; whether even
+  /// braking now meets an obstacle, and the base's predicted speed at that contact [m/s].
+  double braking_distance{0.0};
+  double free_distance{std::numeric_limits<double>::infinity()};
+  bool unavoidable{false};
+  double impact_speed{0.0};
   /// distance() and twistContact() calls: a statistic for tests and benchmarks.
   std::size_t pair_tests{0};
   bool ok() const { return error.empty(); }
@@ -95,6 +113,13 @@ std::string invalidGateReason(const PathScene& scene, const Twist& twist,
 /// resolution grid whose first contact comes no sooner than time_before_collision (Pass at 1,
 /// Slow below, Stop when none; Escape instead of Pass or Slow when pairs are close now and the
 /// command moves each apart). Never late: contacts come from twistContact().
-GateResult gateTwist(const PathScene& scene, const Twist& twist, const GateSettings& settings);
+///
+/// With a real base (`base.dynamics` not ideal) the braking rule also holds: an output is kept
+/// only if, after it acts for base.command_period plus the reaction time (the base's current
+/// velocity acting first), braking at the limits along its arc ends before any contact, `margin`
+/// short of it; the largest such scale on the grid is taken, Stop (unavoidable, with the predicted
+/// impact speed) when not even braking now ends clear.
+GateResult gateTwist(const PathScene& scene, const Twist& twist, const GateSettings& settings,
+                     const BaseState& base = {});
 
 }  // namespace ellipse_collision::core

@@ -2,6 +2,7 @@
 
 #include <dynamic_reconfigure/server.h>
 #include <geometry_msgs/Twist.h>
+#include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
 #include <std_srvs/SetBool.h>
 #include <tf2_ros/buffer.h>
@@ -13,13 +14,13 @@
 #include <string>
 #include <vector>
 
+#include "ellipse_collision/app/collision_monitor.h"
+#include "ellipse_collision/core/scene_check.h"
 #include "ellipse_collision/ros/collision_markers.h"
 #include "ellipse_collision/ros/gate_markers.h"
-#include "ellipse_collision/app/collision_monitor.h"
 #include "ellipse_collision/ros/messages.h"
 #include "ellipse_collision/ros/node_config.h"
 #include "ellipse_collision/ros/reconfigure.h"
-#include "ellipse_collision/core/scene_check.h"
 
 namespace ellipse_collision {
 
@@ -71,6 +72,10 @@ class CollisionNode {
   /// server then reports.
   void onCheckReconfigure(CheckParametersConfig& config, std::uint32_t level);
   void onGateReconfigure(GateParametersConfig& config, std::uint32_t level);
+  /// gate/odom_topic: the base's measured twist, for the braking rule.
+  void onOdometry(const nav_msgs::Odometry::ConstPtr& msg);
+  /// The log line while the gate assumes a base that stops at once (app::idealBaseWarning()).
+  void warnIfIdealBase() const;
   /// Takes `tunable` (unless a value was at a slider's bound: `at_bound`), or logs why not; the
   /// timers follow the rate and cmd_vel_timeout in force.
   void retune(const std::optional<app::FieldError>& at_bound, const app::TunableSettings& tunable);
@@ -102,6 +107,7 @@ class CollisionNode {
   ros::Publisher gate_markers_pub_;
   ros::ServiceServer gate_enable_service_;
   ros::Timer gate_watchdog_timer_;
+  ros::Subscriber odom_sub_;
   GateMarkers gate_markers_;
   std::unique_ptr<dynamic_reconfigure::Server<CheckParametersConfig>> check_reconfigure_;
   std::unique_ptr<dynamic_reconfigure::Server<GateParametersConfig>> gate_reconfigure_;
