@@ -556,7 +556,7 @@ void DemoDriver::setUpArmGuard() {
     throw DemoConfigError("arm_guard: the collision node's parameters (" + node.getNamespace() +
                           "): " + error.what());
   }
-  warning_distance_m_ = config.warning_distance_m;
+  warning_distance_m_ = config.monitor.check.rules.warning_distance;
   if (!(warning_distance_m_ > 0.0)) {
     throw DemoConfigError(
         "arm_guard: expected the collision node's warning_distance > 0 (its "
@@ -570,7 +570,7 @@ void DemoDriver::setUpArmGuard() {
   } catch (const std::exception& error) {
     throw DemoConfigError(std::string("arm_guard: ") + error.what());
   }
-  arm_links_ = armLinks(urdf, config.links, config.padding_m, base_frame_, trajectory_.joints);
+  arm_links_ = armLinks(urdf, config.links, config.monitor.check.global_padding_m, base_frame_, trajectory_.joints);
   // Persistent: one connection for the 30 calls a second (re-made when the node restarts).
   check_collisions_ =
       nh_.serviceClient<CheckCollisions>("ellipse_collision/check_collisions", true);
