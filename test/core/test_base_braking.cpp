@@ -108,23 +108,7 @@ double scannedBrakingContact(const Ellipse& link, const Twist& twist, const Scal
     const Clearance c = distance(a, b);
     return !c.separated || c.distance <= clearance;
   };
-  const double end = p.stopTime();
-  if (near(0.0)) return 0.0;
-  double prev = 0.0;
-  const int samples = 2000;
-  for (int i = 1; i <= samples; ++i) {
-    const double t = end * i / samples;
-    if (near(t)) {
-      double lo = prev, hi = t;
-      for (int k = 0; k < 40; ++k) {
-        const double mid = 0.5 * (lo + hi);
-        (near(mid) ? hi : lo) = mid;
-      }
-      return hi;
-    }
-    prev = t;
-  }
-  return -1.0;
+  return twist_oracle::firstScanned(near, p.stopTime(), 2000, 40);
 }
 
 TEST(BrakingContact, NeverLateAgainstTheScannedMotionAndCloseWhenItClaims) {

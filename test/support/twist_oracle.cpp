@@ -40,18 +40,24 @@ Ellipse obstacleAt(const Ellipse& o, const Motion& m, double t) {
 // first crossing. -1 when none is seen (a contact shorter than horizon / samples can be missed).
 double scannedContact(const Ellipse& link, const Twist& twist, const Ellipse& obstacle,
                       const Motion& motion, double horizon, int samples) {
-  const auto touches = [&](double t) {
-    return overlap(oracleLinkAt(link, twist, t), obstacleAt(obstacle, motion, t));
-  };
-  if (touches(0.0)) return 0.0;
+  return firstScanned(
+      [&](double t) {
+        return overlap(oracleLinkAt(link, twist, t), obstacleAt(obstacle, motion, t));
+      },
+      horizon, samples, 60);
+}
+
+double firstScanned(const std::function<bool(double)>& holds, double end, int samples,
+                    int bisections) {
+  if (holds(0.0)) return 0.0;
   double prev = 0.0;
   for (int i = 1; i <= samples; ++i) {
-    const double t = horizon * i / samples;
-    if (touches(t)) {
+    const double t = end * i / samples;
+    if (holds(t)) {
       double lo = prev, hi = t;
-      for (int k = 0; k < 60; ++k) {
+      for (int k = 0; k < bisections; ++k) {
         const double mid = 0.5 * (lo + hi);
-        (touches(mid) ? hi : lo) = mid;
+        (holds(mid) ? hi : lo) = mid;
       }
       return hi;
     }

@@ -3,6 +3,7 @@
 // The oracle of a link under a held twist: the arc about the instantaneous centre in quad
 // precision (independent of poseAfter()'s sinc form), and the first overlap() along it by a dense
 // scan and bisection.
+#include <functional>
 #include <string>
 
 #include "ellipse_collision/core/path_check.h"
@@ -18,6 +19,10 @@ Ellipse obstacleAt(const Ellipse& o, const Motion& m, double t);
 /// first crossing. -1 when none is seen (a contact shorter than horizon / samples can be missed).
 double scannedContact(const Ellipse& link, const Twist& twist, const Ellipse& obstacle,
                       const Motion& motion, double horizon, int samples = 2000);
+/// The first time in [0, end] at which `holds` (a contact) is true: `samples` uniform times, then
+/// `bisections` halvings of the first crossing; -1 when none is seen.
+double firstScanned(const std::function<bool(double)>& holds, double end, int samples,
+                    int bisections);
 /// The first contact of any pair of the scene under `twist`, scanned; -1 when none.
 double scannedSceneContact(const PathScene& scene, const Twist& twist, double horizon,
                            int samples = 2000);
