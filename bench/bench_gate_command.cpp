@@ -5,6 +5,7 @@
 // 10,000), a few within the robot's reach; `crowded`, all N on 20 m x 20 m as bench_run_check
 // places them (25 per m^2 at 10,000: hundreds within reach, every command slowed). The command
 // turns (0.8 m/s, 0.3 rad/s), so every near pair takes the certified turning first contact.
+// `*_braking`: the same with the braking rule on (a base 0.1 s late braking at 0.8 m/s^2).
 // Reports the median and the 99th percentile of the per-command latency (counters p50_us, p99_us)
 // besides Google Benchmark's mean.
 #include <benchmark/benchmark.h>
@@ -63,10 +64,12 @@ struct MovingBase {
   }
 };
 
-void gateCommands(benchmark::State& state, bool crowded) {
+void gateCommands(benchmark::State& state, bool crowded, bool braking = false) {
   MonitorSettings settings;
   settings.check.fixed_frame = "map";
   settings.gate.enabled = true;
+  // A real base (0.1 s late, 0.8 m/s^2, 2 rad/s^2): the braking rule on every command.
+  if (braking) settings.gate.base = {0.1, 0.8, 2.0};
   settings.gate.timing.horizon = 3.0;
   settings.gate.timing.time_before_collision = 1.5;
   CollisionMonitor monitor(settings, links(), obstacles(static_cast<int>(state.range(0)),
@@ -103,6 +106,10 @@ void gateCommands(benchmark::State& state, bool crowded) {
 BENCHMARK_CAPTURE(gateCommands, warehouse, false)
     ->Arg(1000)->Arg(10000)->Arg(100000)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(gateCommands, crowded, true)
+    ->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(gateCommands, warehouse_braking, false, true)
+    ->Arg(1000)->Arg(10000)->Arg(100000)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(gateCommands, crowded_braking, true, true)
     ->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
