@@ -131,18 +131,18 @@ bool startsWith(const std::string& text, const std::string& prefix) {
 }
 
 void checkAccepted(const NodeConfig& config) {
-  FUZZ_REQUIRE(!config.fixed_frame.empty() && config.fixed_frame.front() != '/',
-               "accepted fixed_frame '" + config.fixed_frame + "'");
+  FUZZ_REQUIRE(!config.monitor.check.fixed_frame.empty() && config.monitor.check.fixed_frame.front() != '/',
+               "accepted fixed_frame '" + config.monitor.check.fixed_frame + "'");
   for (double value :
-       {config.rate_hz, config.tf_timeout_s, config.padding_m, config.warning_distance_m}) {
+       {config.monitor.rate_hz, config.tf_timeout_s, config.monitor.check.global_padding_m, config.monitor.check.rules.warning_distance}) {
     FUZZ_REQUIRE(std::isfinite(value) && value >= 0.0, "accepted a negative or non-finite number");
   }
   // The documented ranges (node_config.h): a timer period and a tf wait ros::Duration can hold.
-  FUZZ_REQUIRE(config.rate_hz == 0.0 || (config.rate_hz >= kMinRateHz && config.rate_hz <= kMaxRateHz),
-               "accepted rate " + std::to_string(config.rate_hz));
+  FUZZ_REQUIRE(config.monitor.rate_hz == 0.0 || (config.monitor.rate_hz >= kMinRateHz && config.monitor.rate_hz <= kMaxRateHz),
+               "accepted rate " + std::to_string(config.monitor.rate_hz));
   FUZZ_REQUIRE(config.tf_timeout_s <= kMaxDurationS,
                "accepted tf_timeout " + std::to_string(config.tf_timeout_s));
-  FUZZ_REQUIRE(config.padding_m <= core::kMaxRadius, "accepted padding " + std::to_string(config.padding_m));
+  FUZZ_REQUIRE(config.monitor.check.global_padding_m <= core::kMaxRadius, "accepted padding " + std::to_string(config.monitor.check.global_padding_m));
   std::set<std::string> names;
   for (const auto* list : {&config.links, &config.obstacles}) {
     for (const app::EllipseSpec& spec : *list) {
@@ -150,19 +150,19 @@ void checkAccepted(const NodeConfig& config) {
       FUZZ_REQUIRE(!invalid, "accepted ellipse '" + spec.name + "' with bad " +
                                  (invalid ? invalid->key : std::string()));
       FUZZ_REQUIRE(names.insert(spec.name).second, "accepted duplicate name '" + spec.name + "'");
-      const core::Ellipse padded = app::paddedEllipse(spec, config.padding_m);
+      const core::Ellipse padded = app::paddedEllipse(spec, config.monitor.check.global_padding_m);
       FUZZ_REQUIRE(
           core::invalidReason(padded).empty(),
           "accepted ellipse '" + spec.name + "' that the core refuses: " + core::invalidReason(padded));
       if (spec.ellipsoid) {
         const std::string refused =
-            core::invalidReason(app::paddedEllipsoid(spec, config.padding_m));
+            core::invalidReason(app::paddedEllipsoid(spec, config.monitor.check.global_padding_m));
         FUZZ_REQUIRE(refused.empty(), "accepted ellipsoid '" + spec.name +
                                           "' that the core refuses: " + refused);
       }
     }
   }
-  for (const auto& [a, b] : config.allowed_pairs) {
+  for (const auto& [a, b] : config.monitor.check.rules.allowed.pairs()) {
     FUZZ_REQUIRE(a != b && names.count(a) && names.count(b),
                  "accepted allowed pair [" + a + ", " + b + "]");
   }
@@ -171,14 +171,14 @@ void checkAccepted(const NodeConfig& config) {
   // std::runtime_error outside +-2^31 s: an accepted configuration must not make them throw.
   // A positive rate must also give a positive period: a zero-period timer would spin.
   try {
-    if (config.rate_hz > 0.0) {
-      const ros::Duration period(1.0 / config.rate_hz);
+    if (config.monitor.rate_hz > 0.0) {
+      const ros::Duration period(1.0 / config.monitor.rate_hz);
       FUZZ_REQUIRE(period > ros::Duration(0),
-                   "accepted rate " + text(config.rate_hz) + " Hz whose timer period rounds to 0");
+                   "accepted rate " + text(config.monitor.rate_hz) + " Hz whose timer period rounds to 0");
     }
     const ros::Duration timeout(config.tf_timeout_s);
   } catch (const std::exception& e) {
-    fail("accepted rate " + text(config.rate_hz) + " Hz / tf_timeout " + text(config.tf_timeout_s) +
+    fail("accepted rate " + text(config.monitor.rate_hz) + " Hz / tf_timeout " + text(config.tf_timeout_s) +
          " s that ros::Duration refuses: " + e.what());
   }
 }

@@ -21,6 +21,8 @@ class AllowedPairs {
     return !pairs_.empty() && pairs_.count(ordered(a, b)) != 0;
   }
   std::size_t size() const { return pairs_.size(); }
+  /// Every pair, each ordered by name.
+  const std::set<std::pair<std::string, std::string>>& pairs() const { return pairs_; }
 
  private:
   static std::pair<std::string, std::string> ordered(const std::string& a, const std::string& b) {
