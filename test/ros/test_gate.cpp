@@ -13,6 +13,8 @@ using gate_test::GateTest;
 using gate_test::kStep;
 using gate_test::Obstacle;
 using gate_test::Pose;
+using test::nodeTopic;
+using test::waitUntil;
 
 TEST_F(GateTest, DrivingAtAWallItSlowsAndStopsWithoutTouchingAndNotAbsurdlyEarly) {
   addObstacle({"wall", {{3.0, 0.0}, 0.05, 2.0, 0.0}});
