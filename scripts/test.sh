@@ -45,8 +45,9 @@ with open(path, "w") as out:
 PY
 }
 
-# The libFuzzer targets, built with clang, ASan and UBSan, run for about a minute in all; one JUnit
-# test case per target (scripts/fuzz.sh --long SECONDS fuzzes for longer).
+# The libFuzzer targets, built with clang, ASan and UBSan, run for about a minute in all, the same
+# inputs on every run (the committed seeds, then a fixed seed and number of inputs); one JUnit
+# test case per target (scripts/fuzz.sh --campaign SECONDS searches for new findings).
 bash "${repo}/scripts/fuzz.sh" --ci --junit "${results}/fuzz/fuzz.xml" || true
 
 # The benchmarks compile and run once, briefly, so that they never rot (the full run is

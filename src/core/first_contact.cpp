@@ -37,6 +37,8 @@ namespace {
 // unnormalised as (s^2 - 1, 2 s): no trigonometry in the loop. The search stops when the entry is
 // certified to `kEntryTolerance`: F at every normal tried is a lower bound, and the chord between
 // the boundary points of the bracket's ends, which lies in K, crosses the path at an upper bound.
+// Where that bracket, roundings included, holds 0 or the horizon's reach (the verdict turns there)
+// the search goes on, on an ellipse's flat side in its own frame (FlatSideChart).
 // The exit is the entry of the reversed path.
 // Double precision places the path relative to K only to the pair's extent E = |p0 . d| + h_K(n):
 // p0, d, the normal's components and the ellipses' sin and cos carry roundings of ~eps, h_E(u) one
@@ -73,14 +75,17 @@ struct SupportOnPath {
   double h, k_d, k_n, curvature_radius_over_l3;
 };
 
-SupportOnPath supportOnPath(const AxesOnPath& e, double ud, double un) {
-  const double ax = ud * e.c + un * e.s;  // u . x axis
-  const double ay = un * e.c - ud * e.s;  // u . y axis
+/// The same from u's components (ax, ay) along e's own axes.
+SupportOnPath supportFromAxes(const AxesOnPath& e, double ax, double ay) {
   const double fx = e.rx2 * ax, fy = e.ry2 * ay;
   const double h = std::sqrt(fx * ax + fy * ay);
   const double inverse = 1.0 / h;
   return {h, (fx * e.c - fy * e.s) * inverse, (fx * e.s + fy * e.c) * inverse,
           e.rx2 * e.ry2 * (inverse * inverse * inverse)};
+}
+
+SupportOnPath supportOnPath(const AxesOnPath& e, double ud, double un) {
+  return supportFromAxes(e, ud * e.c + un * e.s, un * e.c - ud * e.s);  // u . x axis, u . y axis
 }
 
 /// The pair in the path frame: p0 = (x0, sigma), both ellipses' axes.
@@ -104,6 +109,21 @@ struct NormalOnPath {
   double cos_l, un, l;
 };
 
+/// A chart's sample: the normal, both ellipses' supports there, and df/dv over
+/// (rho_A + rho_B) / L^3 (f'(psi) = cos psi (rho_A + rho_B), times dpsi/dv).
+struct ChartSample {
+  NormalOnPath u;
+  SupportOnPath a, b;
+  double slope_factor;
+};
+
+/// Both supports from the normal's path-frame components; on v = s or 1 - |s| (dpsi/ds = 2 / L)
+/// df/ds = 2 cos_l L (rho_A + rho_B) / L^3.
+ChartSample sampleOnPath(const PathPair& p, const NormalOnPath& u) {
+  return {u, supportOnPath(p.a, -u.cos_l, u.un), supportOnPath(p.b, -u.cos_l, u.un),
+          2.0 * u.cos_l * u.l};
+}
+
 /// The search starts on v = s itself (CentreChart), whose doubles are 1.1e-16 apart near s = +-1.
 /// There u is within a small angle of +-n: the path meets K's boundary at a shallow angle theta to
 /// its tangent, and the entry moves along the path by the normal's error times rho / cos theta
@@ -120,6 +140,7 @@ struct CentreChart {
     const double v2 = v * v;
     return {1.0 - v2, 2.0 * v, 1.0 + v2};
   }
+  ChartSample sample(const PathPair& p, double v) const { return sampleOnPath(p, at(v)); }
 };
 
 /// v = 1 - |s| from the end s = kEnd (+1 or -1): s = kEnd (1 - v).
@@ -132,6 +153,54 @@ struct EndChart {
     return {cos_l, 2.0 * kEnd * (1.0 - v), 2.0 - cos_l};
   }
   static double fromS(double s) { return 1.0 - kEnd * s; }  // exact for s in the end's half
+  ChartSample sample(const PathPair& p, double v) const { return sampleOnPath(p, at(v)); }
+};
+
+/// Near an ellipse's flat side both charts above fail alike, whatever the path's angle: a normal
+/// in the path frame is resolved to ~eps rad, and on the flat side of a needle of axis ratio q
+/// (radius of curvature q radius_x) the supporting lines of the nearest normals lie up to
+/// ~(radius_x eps)^2 / radius_y outside the side, more than the needle's thickness for q near
+/// 1 / eps (fuzzer finding: a speck 3.4e-8 m off the flat side of a needle 1.7e9 m long, across a
+/// path at 65 deg, covering 8e-14 m within the horizon, was called in contact). So the search can
+/// go on in the ellipse's own frame: u = sigma (m + v l), m its minor axis and l its major axis
+/// turned so that psi rises with v, sigma = +-1 facing the motion. The ellipse's support comes
+/// from its own components (sigma, sigma v) exactly, resolving the normal to eps of its offset
+/// from m; only the other ellipse's and the path's components are rotated (rounding ~eps).
+struct FlatSideChart {
+  static constexpr bool kCentre = false;
+  static constexpr double kDsDv = 1.0;
+  bool of_b;        // whose flat side: p.b's, else p.a's
+  bool y_minor;     // the minor axis is the ellipse's y axis
+  double sigma;     // +-1
+  double m_d, m_n;  // m in the path frame
+  double l_d, l_n;  // l in the path frame
+
+  FlatSideChart(const PathPair& p, bool of_b_side) : of_b(of_b_side) {
+    const AxesOnPath& e = of_b ? p.b : p.a;
+    y_minor = e.ry2 <= e.rx2;
+    // x axis (c, s), y axis (-s, c); m = y with l = x, or m = x with l = -y: m x l = -1, so u
+    // turns clockwise as v rises, and psi (u = (-cos psi, sin psi)) rises.
+    m_d = y_minor ? -e.s : e.c, m_n = y_minor ? e.c : e.s;
+    l_d = y_minor ? e.c : e.s, l_n = y_minor ? e.s : -e.c;
+    sigma = m_d < 0.0 ? 1.0 : -1.0;
+  }
+  /// The chart's v of a path-frame normal (ud, un), NaN unless it lies on sigma m's side.
+  double of(double ud, double un) const {
+    const double along = sigma * (ud * m_d + un * m_n);
+    return along > 0.0 ? sigma * (ud * l_d + un * l_n) / along
+                       : std::numeric_limits<double>::quiet_NaN();
+  }
+  ChartSample sample(const PathPair& p, double v) const {
+    const double ud = sigma * (m_d + v * l_d), un = sigma * (m_n + v * l_n);
+    const double length = std::sqrt(1.0 + v * v);
+    // The ellipse's own components: m . u = sigma, l . u = sigma v (l = x, or l = -y).
+    const AxesOnPath& e = of_b ? p.b : p.a;
+    const SupportOnPath own =
+        y_minor ? supportFromAxes(e, sigma * v, sigma) : supportFromAxes(e, sigma, -sigma * v);
+    const SupportOnPath other = supportOnPath(of_b ? p.a : p.b, ud, un);
+    // dpsi/dv = 1 / (1 + v^2): df/dv = (cos_l / L) (rho_A + rho_B) / L^2.
+    return {{-ud, un, length}, of_b ? other : own, of_b ? own : other, -ud};
+  }
 };
 
 /// The safeguarded Newton search for the root of f on the normal: the bracket [lo, hi] and the
@@ -164,9 +233,9 @@ struct EntrySearch {
   /// end's half, where the end's chart resolves the normal further (false). At most
   /// kMaxEntrySteps samples on each chart.
   template <typename Chart>
-  bool run() {
+  bool run(const Chart& chart = {}) {
     for (int step = 0; step < kMaxEntrySteps; ++step) {
-      if (sample<Chart>()) return true;
+      if (sample(chart)) return true;
       if (!advance<Chart>()) return !Chart::kCentre || (lo < 0.5 && hi > -0.5);
     }
     return true;
@@ -184,43 +253,88 @@ struct EntrySearch {
     for (const double start : {from_lo, from_hi}) {
       if (!(start > lo && start < hi)) continue;  // an end, or on the side of one sampled closer
       v = start;
-      if (sample<Chart>()) return;
+      if (sample(Chart{})) return;
     }
     last_step = hi - lo;
     if (advance<Chart>()) run<Chart>();
   }
 
+  /// Whether the verdict is still open: [lower, upper] (upper enlarged by its rounding) holds 0
+  /// or `reach`.
+  bool undecided() const {
+    const double most = upper + upper_error;
+    return (lower <= 0.0 && most > 0.0) || (lower <= reach && most > reach);
+  }
+
+  /// Goes on in the flat-side chart of p.a (of_b false) or p.b, when the bracket's normals lie
+  /// within 1e-3 rad of its minor axis, facing the motion; else leaves the search as it is. The
+  /// bracket's ends are moved into the chart, widened by their rounding, and sampled again.
+  void runOnFlatSide(bool of_b) {
+    const FlatSideChart chart(p, of_b);
+    constexpr double kNear = 1e-3;
+    const double v_lo = chart.of(u_lo_d, u_lo_n), v_hi = chart.of(u_hi_d, u_hi_n);
+    if (!(std::fabs(v_lo) < kNear && std::fabs(v_hi) < kNear)) return;
+    double margin = 16.0 * std::numeric_limits<double>::epsilon() *
+                    (1.0 + std::max(std::fabs(v_lo), std::fabs(v_hi)));
+    for (int widen = 0; widen < 8; ++widen, margin *= 16.0) {
+      const double from = std::min(v_lo, v_hi) - margin, to = std::max(v_lo, v_hi) + margin;
+      if (!(chart.sample(p, from).u.cos_l > 0.0 && chart.sample(p, to).u.cos_l > 0.0)) return;
+      lo = -kNear, hi = kNear;  // wider than any sample: the two below set both ends
+      v = from;
+      if (sample(chart)) return;
+      if (lo != from) continue;  // f >= 0 there: the root is below
+      v = to;
+      if (sample(chart)) return;
+      if (hi != to) continue;
+      last_step = hi - lo;
+      if (advance<FlatSideChart>()) run(chart);
+      return;
+    }
+  }
+
  private:
-  double f = 0.0, slope = 0.0;  // at the last sample, df/ds
+  double f = 0.0, slope = 0.0;  // at the last sample, df/dv
+  double upper = std::numeric_limits<double>::infinity(), upper_error = 0.0;
+  double u_lo_d = 0.0, u_lo_n = -1.0, u_hi_d = 0.0, u_hi_n = 1.0;  // normals at k_lo, k_hi
 
   /// Samples F and f at v: true when `lower` is the answer (certified to `tolerance`, beyond
   /// `reach`, or the boundary point on the path).
   template <typename Chart>
-  bool sample() {
-    const NormalOnPath u = Chart::at(v);
-    const SupportOnPath sa = supportOnPath(p.a, -u.cos_l, u.un),
-                        sb = supportOnPath(p.b, -u.cos_l, u.un);
+  bool sample(const Chart& chart) {
+    const ChartSample q = chart.sample(p, v);
+    const NormalOnPath& u = q.u;
+    const SupportOnPath &sa = q.a, &sb = q.b;
     lower = std::max(lower, (u.un * p.sigma - u.cos_l * p.x0 - sa.h - sb.h) / u.cos_l);  // F |w|
     if (lower > reach) return true;
     const Eigen::Vector2d k(sa.k_d + sb.k_d, sa.k_n + sb.k_n);
     f = k.y() - p.sigma;
     if (f == 0.0) {  // k is the entry point
       lower = std::max(lower, k.x() - p.x0);
+      upper = k.x() - p.x0;
+      upper_error =
+          8.0 * std::numeric_limits<double>::epsilon() * (k.lpNorm<1>() + std::fabs(p.x0));
       return true;
     }
     ((f < 0.0) == (Chart::kDsDv > 0.0) ? lo : hi) = v;  // f rises with s
     (f < 0.0 ? k_lo : k_hi) = k;
-    const double upper =
-        k_lo.x() + (p.sigma - k_lo.y()) * ((k_hi.x() - k_lo.x()) / (k_hi.y() - k_lo.y())) - p.x0;
-    // df/ds = f'(psi) dpsi/ds = cos psi (rho_A + rho_B) 2 / L = 2 cos_l L (rho_A + rho_B) / L^3.
-    slope = 2.0 * u.cos_l * u.l * (sa.curvature_radius_over_l3 + sb.curvature_radius_over_l3);
+    (f < 0.0 ? u_lo_d : u_hi_d) = -u.cos_l;
+    (f < 0.0 ? u_lo_n : u_hi_n) = u.un;
+    const double chord_slope = (k_hi.x() - k_lo.x()) / (k_hi.y() - k_lo.y());
+    upper = k_lo.x() + (p.sigma - k_lo.y()) * chord_slope - p.x0;
+    // The boundary points carry roundings of ~eps times their size, which the chord's slope
+    // against the path magnifies: on a needle's flat side they lie up to ~E away, and the chord
+    // of path-frame normals put the path's entry 1e-7 m behind p0 though p0 was 3.4e-8 m outside
+    // (fuzzer finding), so the verdict seemed settled and the pair touching at 0.
+    upper_error = 8.0 * std::numeric_limits<double>::epsilon() *
+                  (k_lo.lpNorm<1>() + k_hi.lpNorm<1>() + std::fabs(p.x0) + std::fabs(p.sigma)) *
+                  (1.0 + std::fabs(chord_slope));
+    slope = q.slope_factor * (sa.curvature_radius_over_l3 + sb.curvature_radius_over_l3);
     // Certified to `tolerance`, unless [lower, upper] holds 0 or `reach`, where the verdict turns
     // (p0 past K's entry or not, the entry within reach or not): E-relative, the tolerance can
     // exceed the gap to K by far (fuzzer finding: a needle 1.7e9 m long across the path, p0 3e-8 m
     // off its flat side, certified to 0.7 m and called in contact; the horizon ended 3.4e-14 m
     // on). There the search goes on as long as the normal resolves the entry.
-    return upper - lower <= tolerance && !(lower <= 0.0 && upper > 0.0) &&
-           !(lower <= reach && upper > reach);
+    return upper - lower <= tolerance && !undecided();
   }
 
   /// The next v: a Newton step on f, or bisection when it leaves the bracket or fails to halve;
@@ -251,6 +365,11 @@ double entryDistance(const PathPair& p, double reach) {
     } else {
       search.runFromEnd<-1>();
     }
+  }
+  // Uncertified where the verdict turns: the normal may be resolved further on a flat side.
+  for (const bool of_b : {false, true}) {
+    if (search.lower > reach || !search.undecided()) break;
+    search.runOnFlatSide(of_b);
   }
   return search.lower;
 }

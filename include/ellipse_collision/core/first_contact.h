@@ -69,7 +69,10 @@ std::string invalidMotionReason(const Ellipse& ellipse, const Motion& motion, do
 /// times the pair's extent over (|relative velocity| cos theta), theta the path's angle to the
 /// Minkowski sum's normal at the entry. Rotation: never late, at most 2.5e-10 * horizon early
 /// where the pair overlaps (a pair grazing within 1e-9 may be reported in contact). Exactly
-/// symmetric in (a, motion_a) and (b, motion_b). Accuracy and method: doc/core_methods.md.
+/// symmetric in (a, motion_a) and (b, motion_b). The verdict is settled where the search can
+/// settle it: a path stopping short of a needle's flat side (axis ratio up to 1e18) by more than
+/// kTranslationExtentTolerance times the entry's distance from its centre is clear. Accuracy and
+/// method: doc/core_methods.md.
 /// Precondition: invalidMotionReason(a, motion_a, b, motion_b, horizon) is empty; otherwise the
 /// result is unspecified (but the call returns).
 FirstContact firstContact(const Ellipse& a, const Motion& motion_a, const Ellipse& b,
