@@ -68,8 +68,8 @@ set(ELLIPSE_COLLISION_APP_SOURCES
   src/app/scan_name_keeper.cpp
   src/app/scan_obstacles.cpp
   src/app/sensor_obstacle_series.cpp
-  src/app/split_memory.cpp
-  src/app/scene_placement.cpp
+  src/app/scan_cut_memory.cpp
+  src/app/frame_placer.cpp
   src/app/placement_cache.cpp
   src/app/standing_obstacles.cpp
   src/app/stored_placement.cpp

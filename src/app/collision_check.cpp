@@ -6,7 +6,7 @@
 #include <unordered_set>
 #include <utility>
 
-#include "ellipse_collision/app/scene_placement.h"
+#include "ellipse_collision/app/frame_placer.h"
 #include "ellipse_collision/app/stored_placement.h"
 #include "ellipse_collision/core/unique_names.h"
 
@@ -68,28 +68,28 @@ namespace {
 /// The request's query ellipses placed in the fixed frame, or the outcome's error when one cannot
 /// be: a query whose frame is unavailable or stale, or that projects to nothing, fails the request.
 bool placeQueries(const CheckRequest& request, const CheckSettings& settings,
-                  ScenePlacement& placement, std::vector<core::NamedEllipse>* queries,
+                  FramePlacer& placement, std::vector<core::NamedEllipse>* queries,
                   CheckOutcome* outcome) {
   for (std::size_t i = 0; i < request.query.size(); ++i) {
     const EllipseSpec& spec = request.query[i];
-    const ScenePlacement::Placement placed = placement.place(spec, core::EllipseRole::Query);
+    const FramePlacer::Placement placed = placement.place(spec, core::EllipseRole::Query);
     switch (placed.status) {
-      case ScenePlacement::Status::Placed:
+      case FramePlacer::Status::Placed:
         queries->push_back(placed.ellipse);
         continue;
-      case ScenePlacement::Status::FrameUnavailable:
+      case FramePlacer::Status::FrameUnavailable:
         outcome->error_kind = ErrorKind::FrameUnavailable;
         outcome->error = entryName("query", i) + ".frame_id = '" + spec.frame_id +
                          "': expected a frame with a transform to '" + settings.fixed_frame +
                          "', got none (" + placed.error + ")";
         return false;
-      case ScenePlacement::Status::Stale:
+      case FramePlacer::Status::Stale:
         outcome->error_kind = ErrorKind::FrameUnavailable;
         outcome->error = entryName("query", i) + ".frame_id = '" + spec.frame_id +
                          "': expected a transform to '" + settings.fixed_frame +
                          "' within max_transform_age, got a stale one (" + placed.error + ")";
         return false;
-      case ScenePlacement::Status::Degenerate:
+      case FramePlacer::Status::Degenerate:
         outcome->error_kind = ErrorKind::InvalidRequest;
         outcome->error = entryName("query", i) + ": " + placed.error;
         return false;
@@ -106,7 +106,7 @@ core::SceneCheckResult checkPlacedScene(const core::Scene& scene, std::size_t fi
                                         const CheckRequest& request,
                                         const CheckSettings& settings) {
   const std::set<std::string> only_names(request.names.begin(), request.names.end());
-  // Every entry was validated where it was made (ScenePlacement refuses an invalid projection,
+  // Every entry was validated where it was made (FramePlacer refuses an invalid projection,
   // the registry and validateCheckRequest() duplicate names) and the movers come first: the
   // core need not test every entry again on every check.
   if (!standing) {
@@ -147,8 +147,8 @@ CheckOutcome runCheck(const CheckRequest& request, const EllipseRegistry& regist
                       const CheckSettings& settings, const TransformLookup& lookup,
                       double reference_time_s, PlacementCache* cache) {
   CheckOutcome outcome;
-  ScenePlacement placement(lookup, settings.global_padding_m,
-                           Freshness{settings.max_transform_age_s, reference_time_s});
+  FramePlacer placement(lookup, settings.global_padding_m,
+                        Freshness{settings.max_transform_age_s, reference_time_s});
   std::vector<core::NamedEllipse> queries;
   if (!placeQueries(request, settings, placement, &queries, &outcome)) return outcome;
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <set>
 
-#include "ellipse_collision/app/scene_placement.h"
+#include "ellipse_collision/app/frame_placer.h"
 #include "ellipse_collision/core/number_format.h"
 
 namespace ellipse_collision::app {
@@ -98,8 +98,8 @@ PathCheckOutcome runPathCheck(const PathCheckRequest& request, const EllipseRegi
   bool timed = false;
   const std::vector<core::PathPose> poses = toPathPoses(request, &timed);
   const Freshness freshness{settings.max_transform_age_s, now_s};
-  ScenePlacement links(to_moving, settings.global_padding_m, freshness);
-  ScenePlacement obstacles(to_path, settings.global_padding_m, freshness);
+  FramePlacer links(to_moving, settings.global_padding_m, freshness);
+  FramePlacer obstacles(to_path, settings.global_padding_m, freshness);
   core::PathScene scene;
   scene.allowed = settings.rules.allowed;
   std::set<std::string> unavailable;
@@ -107,11 +107,11 @@ PathCheckOutcome runPathCheck(const PathCheckRequest& request, const EllipseRegi
   const double lead_s = timed ? request.poses.front().stamp_s - now_s : 0.0;
   for (const auto& [name, stored] : registry.entries()) {
     const bool is_link = stored.role() == core::EllipseRole::Link;
-    ScenePlacement& placement = is_link ? links : obstacles;
-    const ScenePlacement::Placement placed = placement.place(stored.spec, stored.role());
-    if (placed.status != ScenePlacement::Status::Placed) {
+    FramePlacer& placement = is_link ? links : obstacles;
+    const FramePlacer::Placement placed = placement.place(stored.spec, stored.role());
+    if (placed.status != FramePlacer::Status::Placed) {
       // As runCheck() words it: the frame, not tf's message about the target frame.
-      if (placed.status == ScenePlacement::Status::FrameUnavailable) {
+      if (placed.status == FramePlacer::Status::FrameUnavailable) {
         unavailable.insert(stored.spec.frame_id);
         outcome.skipped.push_back(name + ": frame '" + stored.spec.frame_id + "' unavailable");
       } else {

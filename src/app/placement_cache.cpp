@@ -77,7 +77,7 @@ core::Scene PlacementCache::takeRecycled() {
   return taken;
 }
 
-void PlacementCache::compare(Frame& frame, ScenePlacement& placement) {
+void PlacementCache::compare(Frame& frame, FramePlacer& placement) {
   frame.compared_in_check = check_;
   const FrameTransform& now = placement.lookup(frame.name);
   frame.usable = placement.usable(now);
@@ -102,8 +102,7 @@ bool PlacementCache::byFrameReady() {
   return true;
 }
 
-bool PlacementCache::refillByFrame(core::Scene& placed,
-                                   ScenePlacement& placement,
+bool PlacementCache::refillByFrame(core::Scene& placed, FramePlacer& placement,
                                    const std::function<bool(std::size_t position)>& project,
                                    std::size_t* reused_obstacles) {
   *reused_obstacles = 0;

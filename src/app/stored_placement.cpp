@@ -11,7 +11,7 @@ using RegistryEntry = std::pair<const std::string, StoredEllipse>;
 /// One check's placing of the stored ellipses into a scene that is either new or recycled.
 class StoredEllipsePlacer {
  public:
-  StoredEllipsePlacer(ScenePlacement& placement, PlacementCache* cache, std::size_t capacity)
+  StoredEllipsePlacer(FramePlacer& placement, PlacementCache* cache, std::size_t capacity)
       : placement_(placement), cache_(cache) {
     if (cache_) result_.scene = cache_->takeRecycled();
     rewrite_end_ = result_.scene.size();
@@ -25,8 +25,8 @@ class StoredEllipsePlacer {
     const auto project = [this](std::size_t at) {
       const PlacementCache::OrderedEntry& item = cache_->placingOrder()[at];
       const EllipseSpec& spec = item.entry->second.spec;
-      const ScenePlacement::Placement placed = placement_.place(spec, item.role);
-      if (placed.status != ScenePlacement::Status::Placed) return false;
+      const FramePlacer::Placement placed = placement_.place(spec, item.role);
+      if (placed.status != FramePlacer::Status::Placed) return false;
       remember(item.index, spec, placed.ellipse.ellipse);
       result_.scene.ellipse(at) = placed.ellipse.ellipse;
       return true;
@@ -50,28 +50,28 @@ class StoredEllipsePlacer {
     }
     const std::string& name = item.first;
     const EllipseSpec& spec = item.second.spec;
-    const ScenePlacement::Placement placed = placement_.place(spec, role);
+    const FramePlacer::Placement placed = placement_.place(spec, role);
     // A recycled scene holds every stored name in placing order only up to the first entry not
     // placed: the rest is dropped and appended as in a new scene.
-    if (placed.status != ScenePlacement::Status::Placed && position_ < rewrite_end_) {
+    if (placed.status != FramePlacer::Status::Placed && position_ < rewrite_end_) {
       result_.scene.truncate(position_);
       rewrite_end_ = position_;
     }
     switch (placed.status) {
-      case ScenePlacement::Status::Placed:
+      case FramePlacer::Status::Placed:
         if (cache_) remember(entry, spec, placed.ellipse.ellipse);
         put(item, role, placed.ellipse.ellipse);
         break;
-      case ScenePlacement::Status::FrameUnavailable:
+      case FramePlacer::Status::FrameUnavailable:
         unavailable_.insert(spec.frame_id);
         result_.skipped.push_back(name + ": frame '" + spec.frame_id + "' unavailable");
         break;
-      case ScenePlacement::Status::Stale:
+      case FramePlacer::Status::Stale:
         stale_.insert(spec.frame_id);
         result_.skipped.push_back(name + ": frame '" + spec.frame_id + "' stale (" +
                                   placed.error + ")");
         break;
-      case ScenePlacement::Status::Degenerate:
+      case FramePlacer::Status::Degenerate:
         result_.skipped.push_back(placed.error);
         break;
     }
@@ -101,7 +101,7 @@ class StoredEllipsePlacer {
                   ellipse);
   }
 
-  ScenePlacement& placement_;
+  FramePlacer& placement_;
   PlacementCache* cache_;
   StoredPlacement result_;
   std::size_t rewrite_end_{0};  ///< entries of the recycled scene still in placing order
@@ -112,7 +112,7 @@ class StoredEllipsePlacer {
 
 }  // namespace
 
-StoredPlacement placeStoredEllipses(const EllipseRegistry& registry, ScenePlacement& placement,
+StoredPlacement placeStoredEllipses(const EllipseRegistry& registry, FramePlacer& placement,
                                     double global_padding_m, PlacementCache* cache,
                                     std::size_t query_count) {
   if (cache) cache->begin(registry, global_padding_m);

@@ -516,7 +516,7 @@ ContourEllipses contourEllipses(const std::vector<std::vector<SensorReturn>>& co
     }
     // A hinted cut that two neighbouring runs would not need (their union is one ellipse that
     // stays out of the free space by hint_margin) is reported, so that the caller can let it go
-    // (SplitMemory). The margin is the hysteresis: a cut noise needs now and then is kept.
+    // (ScanCutMemory). The margin is the hysteresis: a cut noise needs now and then is kept.
     for (std::size_t k = 0; k + 1 < kept.size(); ++k) {
       const std::size_t at = kept[k].second;
       if (kept[k + 1].first != at || !std::binary_search(cuts.begin(), cuts.end(), at)) continue;

@@ -9,9 +9,9 @@
 #include <map>
 
 #include "ellipse_collision/app/collision_check.h"
+#include "ellipse_collision/app/frame_placer.h"
 #include "ellipse_collision/app/link_fitting.h"
 #include "ellipse_collision/app/path_request.h"
-#include "ellipse_collision/app/scene_placement.h"
 #include "shadow_oracle.h"
 #include "spec_builders.h"
 
@@ -76,17 +76,17 @@ TEST(EllipsoidLinks, PaddingGrowsAllThreeRadii) {
 
 TEST(EllipsoidLinks, RolledLinkIsPlacedByItsShadowWherePlanarOneIsLost) {
   for (const double degrees : {0.0, 80.0, 90.0, 170.0}) {
-    ScenePlacement placement(rolledArm(degrees * kPi / 180.0), 0.0);
+    FramePlacer placement(rolledArm(degrees * kPi / 180.0), 0.0);
     const auto placed = placement.place(upperArm("arm"), core::EllipseRole::Query);
-    ASSERT_EQ(placed.status, ScenePlacement::Status::Placed) << degrees << ": " << placed.error;
+    ASSERT_EQ(placed.status, FramePlacer::Status::Placed) << degrees << ": " << placed.error;
     EXPECT_NEAR(placed.ellipse.ellipse.radius_x, 0.2, 1e-12) << degrees;
     EXPECT_NEAR(placed.ellipse.ellipse.radius_y, 0.06, 1e-12) << degrees;
   }
   EllipseSpec planar = upperArm("arm");
   planar.ellipsoid.reset();
-  ScenePlacement placement(rolledArm(kPi / 2), 0.0);
+  FramePlacer placement(rolledArm(kPi / 2), 0.0);
   EXPECT_EQ(placement.place(planar, core::EllipseRole::Query).status,
-            ScenePlacement::Status::Degenerate);
+            FramePlacer::Status::Degenerate);
 }
 
 TEST(EllipsoidLinks, CheckReportsThePostTheRolledArmShadows) {
@@ -167,7 +167,7 @@ TEST(EllipsoidLinks, FittedArmFootprintContainsItsCylinderAtEveryRollAndPitch) {
                        Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitX()))
                           .toRotationMatrix();
       pose.translation() = Eigen::Vector3d(1.0, -0.5, 0.3);
-      ScenePlacement placement(
+      FramePlacer placement(
           [&pose](const std::string&) {
             FrameTransform t;
             t.ok = true;
@@ -176,7 +176,7 @@ TEST(EllipsoidLinks, FittedArmFootprintContainsItsCylinderAtEveryRollAndPitch) {
           },
           0.0);
       const auto placed = placement.place(arm, core::EllipseRole::Query);
-      ASSERT_EQ(placed.status, ScenePlacement::Status::Placed) << placed.error;
+      ASSERT_EQ(placed.status, FramePlacer::Status::Placed) << placed.error;
       for (int k = 0; k < 720; ++k) {
         const double t = 2 * kPi * (k % 72) / 72, along = (k / 72) / 9.0;
         for (const Eigen::Vector3d& local :

@@ -20,7 +20,7 @@
 #include <sstream>
 #include <thread>
 
-#include "ellipse_collision/app/scene_placement.h"
+#include "ellipse_collision/app/frame_placer.h"
 #include "ellipse_collision/core/scene_check.h"
 #include "ellipse_collision/ros/collision_markers.h"
 #include "ellipse_collision/ros/conversions.h"
@@ -443,14 +443,14 @@ TEST(DemoInRviz, CollidingEllipsesAreRedNearOnesYellowAndClearOnesGreen) {
   const std::set<std::string> warned = namesIn(frozen, true);
 
   // Where every ellipse is now, from tf, the configuration and scan_obstacles' last message.
-  app::ScenePlacement placement(
+  app::FramePlacer placement(
       tfLookup(tf_buffer, config.monitor.check.fixed_frame, ros::Time(0), ros::Duration(1.0)),
       config.monitor.check.global_padding_m);
   std::vector<core::NamedEllipse> placed;
   std::vector<Eigen::Vector2d> frame_origins;
   auto place = [&](const app::EllipseSpec& spec, core::EllipseRole role) {
-    const app::ScenePlacement::Placement p = placement.place(spec, role);
-    ASSERT_EQ(p.status, app::ScenePlacement::Status::Placed) << spec.name << ": " << p.error;
+    const app::FramePlacer::Placement p = placement.place(spec, role);
+    ASSERT_EQ(p.status, app::FramePlacer::Status::Placed) << spec.name << ": " << p.error;
     placed.push_back(p.ellipse);
   };
   for (const app::EllipseSpec& spec : config.links) {

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "ellipse_collision/app/ellipse_registry.h"
-#include "ellipse_collision/app/scene_placement.h"
+#include "ellipse_collision/app/frame_placer.h"
 #include "ellipse_collision/app/standing_obstacles.h"
 #include "ellipse_collision/core/ellipse.h"
 
@@ -41,7 +41,7 @@ class PlacementCache {
   /// The projection of entry `index` (in registry().entries() order) made through the transform
   /// `placement` now reports for its frame, or nullptr when it must be projected (again).
   /// Inline: it is asked for every stored ellipse of every check.
-  const core::Ellipse* reuse(std::size_t index, ScenePlacement& placement) {
+  const core::Ellipse* reuse(std::size_t index, FramePlacer& placement) {
     if (index >= entries_.size() || !entries_[index].valid) return nullptr;
     const Entry& entry = entries_[index];
     Frame& frame = frames_[entry.frame];
@@ -72,7 +72,7 @@ class PlacementCache {
   /// `placed` partly written, unless every stored entry has a projection, every frame is usable
   /// now and every projection succeeded: then refill entry by entry. `reused_obstacles` counts
   /// the obstacles whose projection was reused.
-  bool refillByFrame(core::Scene& placed, ScenePlacement& placement,
+  bool refillByFrame(core::Scene& placed, FramePlacer& placement,
                      const std::function<bool(std::size_t position)>& project,
                      std::size_t* reused_obstacles);
   /// Obstacles among placingOrder().
@@ -105,7 +105,7 @@ class PlacementCache {
   };
 
   /// Decides once per check whether `frame` still has the transform its entries were made with.
-  void compare(Frame& frame, ScenePlacement& placement);
+  void compare(Frame& frame, FramePlacer& placement);
   /// Whether every entry has a projection; then each frame lists its entries' positions.
   bool byFrameReady();
 

@@ -76,7 +76,7 @@ struct SensorObstacles {
 /// free beams (core::scanView()), cut into contours by the adaptive breakpoint rule
 /// (core::breakContours()), each contour split into as few ellipses as keep every return inside
 /// and the free space free (core::contourEllipses(), cut first where `split_hints` say:
-/// SplitMemory). `settings` must pass findInvalidSetting().
+/// ScanCutMemory). `settings` must pass findInvalidSetting().
 SensorObstacles scanObstacles(const std::vector<float>& ranges, double angle_min,
                               double angle_increment, double range_min, double range_max,
                               const std::string& frame_id, const ScanObstacleSettings& settings,

@@ -4,14 +4,14 @@
 #include <string>
 #include <vector>
 
+#include "ellipse_collision/app/scan_cut_memory.h"
 #include "ellipse_collision/app/scan_name_keeper.h"
 #include "ellipse_collision/app/scan_obstacles.h"
-#include "ellipse_collision/app/split_memory.h"
 
 namespace ellipse_collision::app {
 
 /// One sensor's messages in turn, as scan_obstacles handles them: each scan is cut first where
-/// the last scans cut it (SplitMemory), and names are carried over from message to message
+/// the last scans cut it (ScanCutMemory), and names are carried over from message to message
 /// (ScanNameKeeper), so that a scene that stays keeps its ellipses and names under range noise.
 /// Clouds keep their names; their cuts are not carried over (a cloud's bins and clusters are not
 /// ordered beams).
@@ -32,7 +32,7 @@ class SensorObstacleSeries {
 
  private:
   ScanObstacleSettings settings_;
-  SplitMemory scan_splits_;
+  ScanCutMemory scan_splits_;
   ScanNameKeeper scan_names_;
   ScanNameKeeper cloud_names_;
 };

@@ -5,8 +5,8 @@
 #include <vector>
 
 #include "ellipse_collision/app/ellipse_registry.h"
+#include "ellipse_collision/app/frame_placer.h"
 #include "ellipse_collision/app/placement_cache.h"
-#include "ellipse_collision/app/scene_placement.h"
 #include "ellipse_collision/core/scene.h"
 
 namespace ellipse_collision::app {
@@ -32,7 +32,7 @@ struct StoredPlacement {
 /// earlier check has only its geometry rewritten (frame by frame when it can), and a complete
 /// placement is handed to the cache for recycling. The scene is the same bit for bit either way.
 /// The scene keeps room for `query_count` more entries (the check's queries, put in front).
-StoredPlacement placeStoredEllipses(const EllipseRegistry& registry, ScenePlacement& placement,
+StoredPlacement placeStoredEllipses(const EllipseRegistry& registry, FramePlacer& placement,
                                     double global_padding_m, PlacementCache* cache,
                                     std::size_t query_count = 0);
 

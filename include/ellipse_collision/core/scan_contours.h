@@ -130,7 +130,7 @@ struct ContourEllipses {
 /// hint (and differs from the key before it), then each part is split as above. A sensor's last
 /// cuts given as hints keep the split from flickering under range noise (a stretch cut in one scan
 /// and not in the next); the hints that are no longer needed are reported in unneeded_hints, so
-/// that a caller can let them go (SplitMemory in the application layer): those where the runs on
+/// that a caller can let them go (ScanCutMemory in the application layer): those where the runs on
 /// either side would be one ellipse together that stays out of the free space even with both
 /// radii grown by `hint_margin` [m] (the hysteresis: a cut that noise needs now and then is not
 /// reported). The guarantees (every return in exactly one ellipse, none entering the free space)

@@ -12,7 +12,7 @@ namespace ellipse_collision::app {
 /// Places ellipses attached to frames into the fixed frame's plane for one check: each frame is
 /// looked up once, then the padded ellipse is projected or the padded ellipsoid's shadow cast
 /// (placeInPlane()).
-class ScenePlacement {
+class FramePlacer {
  public:
   enum class Status { Placed, FrameUnavailable, Stale, Degenerate };
 
@@ -25,7 +25,7 @@ class ScenePlacement {
 
   /// `lookup` answers for the fixed frame at the check's time; global padding in [m]. A frame
   /// whose transform is stale under `freshness` (isStale()) is not placed at that old pose.
-  ScenePlacement(TransformLookup lookup, double global_padding_m, Freshness freshness = {});
+  FramePlacer(TransformLookup lookup, double global_padding_m, Freshness freshness = {});
 
   Placement place(const EllipseSpec& spec, core::EllipseRole role);
 

@@ -1,4 +1,4 @@
-#include "ellipse_collision/app/scene_placement.h"
+#include "ellipse_collision/app/frame_placer.h"
 
 #include <utility>
 
@@ -6,17 +6,16 @@
 
 namespace ellipse_collision::app {
 
-ScenePlacement::ScenePlacement(TransformLookup lookup, double global_padding_m,
-                               Freshness freshness)
+FramePlacer::FramePlacer(TransformLookup lookup, double global_padding_m, Freshness freshness)
     : lookup_(std::move(lookup)), global_padding_m_(global_padding_m), freshness_(freshness) {}
 
-const FrameTransform& ScenePlacement::lookup(const std::string& frame) {
+const FrameTransform& FramePlacer::lookup(const std::string& frame) {
   const auto cached = frames_.find(frame);
   if (cached != frames_.end()) return cached->second;
   return frames_.emplace(frame, lookup_(frame)).first->second;
 }
 
-ScenePlacement::Placement ScenePlacement::place(const EllipseSpec& spec, core::EllipseRole role) {
+FramePlacer::Placement FramePlacer::place(const EllipseSpec& spec, core::EllipseRole role) {
   Placement placement;
   placement.ellipse.name = spec.name;
   placement.ellipse.role = role;
@@ -29,9 +28,9 @@ ScenePlacement::Placement ScenePlacement::place(const EllipseSpec& spec, core::E
   if (isStale(frame, freshness_)) {
     placement.status = Status::Stale;
     placement.age_s = ageOf(frame, freshness_);
-    placement.error = "transform of frame '" + spec.frame_id + "' is " +
-                      core::formatNumber(placement.age_s) + " s old, older than max_transform_age " +
-                      core::formatNumber(freshness_.max_age_s) + " s";
+    placement.error =
+        "transform of frame '" + spec.frame_id + "' is " + core::formatNumber(placement.age_s) +
+        " s old, older than max_transform_age " + core::formatNumber(freshness_.max_age_s) + " s";
     return placement;
   }
   const core::ProjectionResult projected =

@@ -18,7 +18,7 @@ namespace ellipse_collision::app {
 /// of it were one ellipse together, with noise to spare, in kUnneededMessages scans in a row. So
 /// a cut that noise needs now and then stays, and where the sensor moved (other ranges) the scan
 /// is split afresh. The guarantees of every scan hold whatever the hints.
-class SplitMemory {
+class ScanCutMemory {
  public:
   static constexpr std::size_t kUnneededMessages = 2;
   /// Two readings of one unchanged surface differ by sqrt(2) sigma (one standard deviation):

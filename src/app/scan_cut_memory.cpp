@@ -1,4 +1,4 @@
-#include "ellipse_collision/app/split_memory.h"
+#include "ellipse_collision/app/scan_cut_memory.h"
 
 #include <algorithm>
 #include <cmath>
@@ -20,9 +20,9 @@ Reading readingOf(float r) {
 
 }  // namespace
 
-std::vector<std::size_t> SplitMemory::hints(const std::vector<float>& ranges,
-                                            const std::string& frame_id,
-                                            double range_noise_sigma) const {
+std::vector<std::size_t> ScanCutMemory::hints(const std::vector<float>& ranges,
+                                              const std::string& frame_id,
+                                              double range_noise_sigma) const {
   std::vector<std::size_t> keys;
   if (ranges.size() != ranges_.size() || frame_id != frame_id_ || ranges.empty()) return keys;
   const double tolerance = kSameRangeSigmas * range_noise_sigma;
@@ -39,7 +39,7 @@ std::vector<std::size_t> SplitMemory::hints(const std::vector<float>& ranges,
   return keys;  // a map's keys come ascending
 }
 
-void SplitMemory::update(const SensorObstacles& obstacles, const std::vector<float>& ranges) {
+void ScanCutMemory::update(const SensorObstacles& obstacles, const std::vector<float>& ranges) {
   if (!obstacles.ellipses.empty()) frame_id_ = obstacles.ellipses.front().frame_id;
   if (ranges.size() != ranges_.size()) unneeded_for_.clear();
   ranges_ = ranges;
