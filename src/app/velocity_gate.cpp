@@ -204,7 +204,9 @@ GateDecision VelocityGate::decide(const VelocityCommand& command, const GateView
 void VelocityGate::holdScale(GateDecision& decision, const GateView& view) {
   const bool judged = decision.action == GateAction::Pass || decision.action == GateAction::Slow ||
                       decision.action == GateAction::Stop || decision.action == GateAction::Escape;
-  if (!judged) {
+  // Only the braking rule makes a larger scale safe again as the base slows down; the ideal
+  // base's rule does not (its answers stay as they were).
+  if (!judged || config_.base.ideal()) {
     last_judged_.reset();
     return;
   }
@@ -213,17 +215,22 @@ void VelocityGate::holdScale(GateDecision& decision, const GateView& view) {
     world_moves |= m.velocity.x() != 0.0 || m.velocity.y() != 0.0 || m.angular_velocity != 0.0;
   }
   const VelocityCommand& input = decision.input;
-  if (last_judged_ && !world_moves && last_judged_->world_revision == view.world_revision &&
-      last_judged_->input.linear == input.linear && last_judged_->input.angular == input.angular &&
-      decision.scale > last_judged_->scale) {
+  const bool same = last_judged_ && !world_moves &&
+                    last_judged_->world_revision == view.world_revision &&
+                    last_judged_->input.linear == input.linear &&
+                    last_judged_->input.angular == input.angular;
+  // The way ahead opened (the limiting obstacle passed or turned away from): no longer the
+  // situation in which the scale fell.
+  const bool opened =
+      same && decision.free_distance_m > last_judged_->free_distance_m + kHoldHysteresisM;
+  if (same && !opened && decision.scale > last_judged_->scale) {
     // The base slowing down makes a larger scale safe again; taking it would start the base
-    // again toward what stopped it: stop-and-go. The scale rises when the input or the world
-    // changes (a new command, new obstacles).
+    // again toward what stopped it: stop-and-go.
     const double held = last_judged_->scale;
     decision.reason += "; held at " + core::formatNumber(held) + " (from " +
                        core::formatNumber(decision.scale) +
-                       "): the input and the world are as when the scale fell, so it does not "
-                       "rise again";
+                       "): input, world and the free way ahead are as when the scale fell, so "
+                       "it does not rise again";
     decision.scale = held;
     decision.output = scaledCommand(input, held);
     if (held == 0.0) {
@@ -232,7 +239,11 @@ void VelocityGate::holdScale(GateDecision& decision, const GateView& view) {
       decision.action = GateAction::Slow;
     }
   }
-  last_judged_ = Judged{input, decision.scale, view.world_revision};
+  // The free way ahead is remembered at its shortest while the situation lasts.
+  const double free = same && !opened
+                          ? std::min(last_judged_->free_distance_m, decision.free_distance_m)
+                          : decision.free_distance_m;
+  last_judged_ = Judged{input, decision.scale, view.world_revision, free};
 }
 
 void VelocityGate::measuredVelocity(const VelocityCommand& twist, double stamp_s) {

@@ -125,8 +125,10 @@ class VelocityGate {
  private:
   GateDecision record(GateDecision decision);
 
-  /// The no-stop-and-go rule: while the input and the world stay the same, the scale never rises
-  /// after it has fallen.
+  /// The no-stop-and-go rule (braking rule on): while the input and the world stay the same and
+  /// the free way ahead has not grown by more than kHoldHysteresisM, the scale never rises after
+  /// it has fallen.
+  static constexpr double kHoldHysteresisM = 0.1;
   void holdScale(GateDecision& decision, const GateView& view);
 
   GateConfig config_;
@@ -139,6 +141,7 @@ class VelocityGate {
     VelocityCommand input;
     double scale{1.0};
     std::uint64_t world_revision{0};
+    double free_distance_m{0.0};  ///< the shortest free way ahead since [m]
   };
   std::optional<Judged> last_judged_;
   bool heard_{false};           ///< a command came, or the watchdog started counting
