@@ -17,6 +17,7 @@ set(ELLIPSE_COLLISION_CORE_SOURCES
   src/core/first_contact.cpp
   src/core/frame_projection.cpp
   src/core/gate_action.cpp
+  src/core/gate_braking.cpp
   src/core/indexed_obstacles.cpp
   src/core/median_partition.cpp
   src/core/motion_line_parser.cpp

@@ -9,20 +9,21 @@
 #include <utility>
 
 #include "ellipse_collision/core/base_braking.h"
-#include "ellipse_collision/core/distance.h"
 #include "ellipse_collision/core/contact_scale.h"
+#include "ellipse_collision/core/distance.h"
 #include "ellipse_collision/core/number_format.h"
 #include "ellipse_collision/core/overlap.h"
 #include "ellipse_collision/core/unique_names.h"
+#include "gate_search.h"
 #include "rotating_contact.h"
 #include "twist_motion_detail.h"
 
 namespace ellipse_collision::core {
 namespace {
 
+using detail::kReachWidening;
+
 constexpr double kPi = 3.14159265358979323846;
-// Relative widening of the broadphase's bounds: far above their rounding, far below any size.
-constexpr double kReachWidening = 1e-9;
 // Witness points closer than this (relative to the radii) give no reliable direction: the pair is
 // then treated as touching (contact-scale rule).
 constexpr double kReliableGap = 1e-6;
@@ -31,19 +32,6 @@ constexpr double kReliableGap = 1e-6;
 constexpr double kTouchShrink = 1.0 - 1e-4;
 // A rate of the distance within this fraction of the speeds involved is rounding (a slide).
 constexpr double kRateRounding = 1e-12;
-
-/// A computed time, distance or scale for a reason, to 4 significant digits ("0.42", not
-/// "0.41999999999999"); given settings are quoted exactly with formatNumber().
-std::string readable(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.4g", value);
-  return formatNumber(std::strtod(text, nullptr));
-}
-
-/// Velocity of the robot-fixed point `p` (in the robot frame at t = 0) at t = 0: v + wz z x p.
-Eigen::Vector2d pointVelocity(const Twist& twist, const Eigen::Vector2d& p) {
-  return {twist.vx - twist.wz * p.y(), twist.vy + twist.wz * p.x()};
-}
 
 /// Where `a` and `b` (apart, touching or overlapping) meet, and the unit normal from a to b.
 struct Touch {
@@ -74,12 +62,6 @@ Touch touchOf(const Ellipse& a, const Ellipse& b, const Clearance& now) {
   if (!c.separated || !(length > 0.0)) return {};
   return {true, a.center + (c.point_a - a.center) / kTouchShrink,
           b.center + (c.point_b - b.center) / kTouchShrink, gap / length};
-}
-
-Eigen::Vector2d contactPoint(const Ellipse& a, const Ellipse& b) {
-  const Touch touch = touchOf(a, b, distance(a, b));
-  if (touch.found) return 0.5 * (touch.point_a + touch.point_b);
-  return 0.5 * (a.center + b.center);
 }
 
 bool standing(const Ellipse& e, const Motion& m) {
@@ -139,142 +121,23 @@ std::string obstacleReason(const NamedEllipse& obstacle, const Motion& motion, d
   return {};
 }
 
-// ---- the gate ---------------------------------------------------------------------------------
+}  // namespace
 
-struct Candidate {
-  std::size_t link{0};
-  std::size_t obstacle{0};
-  bool standing{true};
-  bool overlapping{false};  // now: excluded from the contact rule (escape rule instead)
-  /// The gap between the bounding circles now, less twistContact()'s grazing band and rounding
-  /// [m]: a lower bound of distance() now, and of the distance at which a contact is reported in
-  /// the grazing band (earliestPossible()).
-  double gap{0.0};
-  double link_speed{0.0};      ///< |v_c|, the link centre's speed under the full command [m/s]
-  double obstacle_speed{0.0};  ///< |v_o| [m/s]
-};
+namespace detail {
 
-/// No contact of the pair under k twist is reported before this time [s]: the bounding circles
-/// (which hold the ellipses whatever their turn) close at most at k |v_c| + |v_o| (the link centre
-/// moves at the constant speed k |v_c|, the obstacle's at |v_o|), so the pair touches no sooner
-/// than gap / that speed. twistContact() reports a contact either at a distance within its grazing
-/// band, which `gap` has taken off, or at most one resolution (detail::kRotationResolution of the
-/// horizon of the call) before the first contact, which `early` (that of the gate's horizon, the
-/// longest any call has) takes off; an exact translation's early rounding is within the rounding
-/// allowance of `gap`. (The one exception would be a pair stopped at the safety cap on the steps,
-/// which no test or benchmark reaches, whose claimed time may be earlier: it is then late only
-/// against that claim, never against the motion.)
-double earliestPossible(const Candidate& c, double k, double early) {
-  if (!(c.gap > 0.0)) return 0.0;
-  const double speed = (k * c.link_speed + c.obstacle_speed) * (1.0 + kReachWidening);
-  return speed > 0.0 ? std::max(0.0, c.gap / speed - early)
-                     : std::numeric_limits<double>::infinity();
+/// A computed time, distance or scale for a reason, to 4 significant digits ("0.42", not
+/// "0.41999999999999"); given settings are quoted exactly with formatNumber().
+std::string readable(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.4g", value);
+  return formatNumber(std::strtod(text, nullptr));
 }
 
-struct ClosePair {
-  Candidate pair;
-  Clearance now;
-};
-
-struct PairTime {
-  bool found{false};
-  double time{0.0};
-  std::size_t link{0};
-  std::size_t obstacle{0};
-};
-
-class Gate {
- public:
-  Gate(const PathScene& scene, const Twist& twist, const GateSettings& settings,
-       const BaseState& base, GateResult& result)
-      : scene_(scene),
-        twist_(twist),
-        settings_(settings),
-        base_(base),
-        result_(result),
-        early_(detail::kRotationResolution * settings.horizon),
-        sigma_horizon_(settings.horizon),
-        time_horizon_(settings.horizon) {}
-
-  void run();
-
- private:
-  bool findCandidates();
-  void measureClearance(std::vector<ClosePair>& close);
-  bool pushesIn(const std::vector<ClosePair>& close);
-  /// The contact rule: the scale on the grid, the action and its reason (pairs close now that
-  /// the command moves apart make it Escape).
-  void scaleRule(bool escaping);
-  void keepEarliest(PairTime& best, bool standing, double k, double until);
-  /// The braking model of the command (off for an ideal base or a standing command): the base's
-  /// scale along the command now, the rate it sheds it, the windows it needs. False on an error.
-  bool prepareBraking();
-  ScaleProfile profileOf(double k) const {
-    return ScaleProfile(from_scale_, k, base_.dynamics.reaction_time, base_.command_period,
-                        shed_rate_);
-  }
-  /// The braking rule on grid scale `n` down from the contact rule's: the largest scale whose
-  /// braking ends `margin` clear of every contact; -1 when not even 0 does (then `hit` is the
-  /// contact braking now meets). `standing_first` is the standing pairs' first contact along the
-  /// arc at scale 1 (its time is twist-time).
-  long brakingScale(long n, long top, const PairTime& standing_first, PairTime& hit);
-  /// Where braking under profile `p` first meets an obstacle, `margin` short (none: found false).
-  PairTime brakingHit(const ScaleProfile& p, const PairTime& standing_first);
-
-  /// twistContact() over `horizon`, reported only when at or before `until` (<= horizon).
-  FirstContact contactOf(const Candidate& c, const Twist& twist, double horizon, double until) {
-    ++result_.pair_tests;
-    return detail::twistContactUntil(scene_.links[c.link].ellipse, twist,
-                                     scene_.obstacles[c.obstacle].ellipse,
-                                     scene_.obstacle_motions[c.obstacle], horizon, until);
-  }
-  /// Keeps the earlier of `best` and `p`; ties to the smaller link, then obstacle name.
-  void keepEarlier(PairTime& best, const PairTime& p) const {
-    if (!p.found) return;
-    if (best.found) {
-      if (p.time > best.time) return;
-      if (p.time == best.time) {
-        const std::string& link = scene_.links[p.link].name;
-        const std::string& best_link = scene_.links[best.link].name;
-        if (link > best_link) return;
-        if (link == best_link &&
-            scene_.obstacles[p.obstacle].name >= scene_.obstacles[best.obstacle].name) {
-          return;
-        }
-      }
-    }
-    best = p;
-  }
-  void keepEarlier(PairTime& best, const Candidate& c, const FirstContact& contact) const {
-    keepEarlier(best, {contact.contact, contact.time, c.link, c.obstacle});
-  }
-  GateContact describe(const PairTime& p, double k) const;
-  /// describe() for a contact met braking under profile `p` (the link where p puts it then).
-  GateContact describeBraking(const PairTime& p, const ScaleProfile& profile, double k) const;
-  std::string pairText(const GateContact& c) const {
-    return "link '" + c.link + "' with '" + c.obstacle + "'";
-  }
-
-  const PathScene& scene_;
-  const Twist& twist_;
-  const GateSettings& settings_;
-  const BaseState& base_;
-  GateResult& result_;
-  /// How much earlier than its first contact a pair's reported contact may come [s].
-  double early_;
-  /// The braking model (prepareBraking()).
-  bool braking_{false};
-  double from_scale_{0.0};    ///< the base's velocity now as a scale of the command
-  double shed_rate_{0.0};     ///< [1/s]
-  double margin_sigma_{0.0};  ///< `margin` as twist-time of the command's fastest link point [s]
-  double sigma_horizon_;      ///< twist-time the links may cover (the horizon, or braking's reach)
-  double time_horizon_;       ///< time obstacles may move for [s]
-  std::vector<Candidate> candidates_;
-  // keepEarliest()'s work space: bounds per candidate, candidates grouped by bound.
-  std::vector<double> bounds_;
-  std::vector<std::size_t> order_;
-  std::vector<std::size_t> bucket_starts_;
-};
+Eigen::Vector2d contactPoint(const Ellipse& a, const Ellipse& b) {
+  const Touch touch = touchOf(a, b, distance(a, b));
+  if (touch.found) return 0.5 * (touch.point_a + touch.point_b);
+  return 0.5 * (a.center + b.center);
+}
 
 GateContact Gate::describe(const PairTime& p, double k) const {
   GateContact c;
@@ -286,15 +149,6 @@ GateContact Gate::describe(const PairTime& p, double k) const {
   c.scale = k;
   c.point = contactPoint(
       linkAfter(scene_.links[p.link].ellipse, scaled(twist_, k), p.time),
-      movedBy(scene_.obstacles[p.obstacle].ellipse, scene_.obstacle_motions[p.obstacle], p.time));
-  return c;
-}
-
-GateContact Gate::describeBraking(const PairTime& p, const ScaleProfile& profile, double k) const {
-  GateContact c = describe(p, k);
-  if (!p.found) return c;
-  c.point = contactPoint(
-      linkAfter(scene_.links[p.link].ellipse, twist_, profile.sigmaAt(p.time)),
       movedBy(scene_.obstacles[p.obstacle].ellipse, scene_.obstacle_motions[p.obstacle], p.time));
   return c;
 }
@@ -481,62 +335,13 @@ void Gate::scaleRule(bool escaping) {
       if (n == 0) k = 0.0;
     }
   }
-  std::string braking_text;
-  bool braked = false;  // the braking rule lowered the scale: it, not the above, says why
-  std::optional<ScaleProfile> limiting_profile;  // the limiting contact is a braking one
-  if (braking_) {
-    // The braking rule below the contact rule's scale (its grid index n; n = 0 when it stopped).
-    if (k == 0.0) n = 0;
-    if (k == 1.0) n = top + 1;
-    PairTime along = standing_first;  // twist-time at scale 1 is time at k = 1
-    if (sigma_horizon_ > horizon && (!along.found || along.time > horizon)) {
-      along = PairTime();
-      keepEarliest(along, true, 1.0, sigma_horizon_);
-    }
-    const double linear = std::hypot(twist_.vx, twist_.vy);
-    result_.free_distance =
-        along.found ? linear * along.time : std::numeric_limits<double>::infinity();
-    PairTime hit;
-    const long kept = brakingScale(n, top, along, hit);
-    const std::string model = " (reaction " + formatNumber(base_.dynamics.reaction_time) +
-                              " s, then one command period " + readable(base_.command_period) +
-                              " s, then braking at the limits)";
-    if (kept < 0) {
-      // Not even braking now ends clear: stop, and say how hard it meets what.
-      const ScaleProfile now = profileOf(0.0);
-      result_.unavoidable = true;
-      result_.impact_speed = linear * now.scaleAt(hit.time);
-      limiting = hit;
-      limiting_scale = 0.0;
-      limiting_profile = now;
-      k = 0.0;
-      braked = true;
-      braking_text = "; braking now cannot avoid it: " + pairText(describeBraking(hit, now, 0.0)) +
-                     " within margin " + formatNumber(settings_.margin) + " m in " +
-                     readable(hit.time) + " s at " + readable(result_.impact_speed) + " m/s" +
-                     model;
-    } else if (kept < n) {
-      const double lowered = kept > top ? 1.0 : kept * res;
-      const double above = kept + 1 > top ? 1.0 : (kept + 1) * res;
-      const ScaleProfile tried = profileOf(above);
-      limiting = brakingHit(tried, along);
-      limiting_scale = above;
-      limiting_profile = tried;
-      braked = true;
-      braking_text = "; braking rule: at " + readable(above) + " the base would need " +
-                     readable(linear * tried.stopSigma()) + " m to rest" +
-                     (limiting.found ? " and come within margin of " +
-                                           pairText(describeBraking(limiting, tried, above))
-                                     : std::string()) +
-                     model;
-      k = lowered;
-    }
-    result_.braking_distance = linear * profileOf(k).stopSigma();
-    if (!braked) {
-      braking_text = "; braking from " + readable(k) + " ends in " +
-                     readable(result_.braking_distance) + " m" + model;
-    }
-  }
+  // The braking rule (a base that is not ideal) may lower the scale further: gate_braking.cpp.
+  const BrakingOutcome braking =
+      braking_ ? brakingRule(k, n, top, standing_first, limiting, limiting_scale)
+               : BrakingOutcome();
+  const std::string& braking_text = braking.text;
+  const bool braked = braking.braked;
+  const std::optional<ScaleProfile>& limiting_profile = braking.limiting_profile;
   result_.scale = k;
   result_.limiting = limiting_profile ? describeBraking(limiting, *limiting_profile, limiting_scale)
                                       : describe(limiting, limiting_scale);
@@ -633,122 +438,6 @@ void Gate::keepEarliest(PairTime& best, bool standing, double k, double until) {
   }
 }
 
-bool Gate::prepareBraking() {
-  const Twist& v = twist_;
-  const bool still_command = v.vx == 0.0 && v.vy == 0.0 && v.wz == 0.0;
-  braking_ = !base_.dynamics.ideal() && !still_command;
-  if (!braking_) return true;
-  const BaseDynamics& d = base_.dynamics;
-  const std::pair<const char*, double> fields[] = {
-      {"base.reaction_time", d.reaction_time},
-      {"base.linear_deceleration", d.linear_deceleration},
-      {"base.angular_deceleration", d.angular_deceleration},
-      {"base.command_period", base_.command_period}};
-  for (const auto& [name, value] : fields) {
-    if (!(value >= 0.0 && value <= kMaxGateHorizonS)) {
-      result_.error = std::string(name) + " = " + formatNumber(value) + " must be within [0, " +
-                      formatNumber(kMaxGateHorizonS) + "]";
-      return false;
-    }
-  }
-  if (std::string r =
-          invalidVelocityReason(Motion{{base_.velocity.vx, base_.velocity.vy}, base_.velocity.wz},
-                                0.0, {"base.velocity.vx", "base.velocity.vy", "base.velocity.wz"});
-      !r.empty()) {
-    result_.error = r;
-    return false;
-  }
-  // The base's velocity as a scale of the command: exact when it lies on the command's arc (the
-  // gate's own output, a scaled command, or a measured velocity along it); otherwise the scale
-  // of the part that runs fastest against the command's (the bend between the arcs is not
-  // modelled, doc/velocity_gate.md).
-  const Twist& now = base_.velocity;
-  const double along =
-      (now.vx * v.vx + now.vy * v.vy + now.wz * v.wz) / (v.vx * v.vx + v.vy * v.vy + v.wz * v.wz);
-  const double off =
-      std::hypot(now.vx - along * v.vx, now.vy - along * v.vy) + std::fabs(now.wz - along * v.wz);
-  const double size =
-      std::hypot(now.vx, now.vy) + std::fabs(now.wz) + std::hypot(v.vx, v.vy) + std::fabs(v.wz);
-  if (along >= 0.0 && off <= 1e-9 * size) {
-    from_scale_ = along;
-  } else {
-    const double linear = std::hypot(v.vx, v.vy);
-    from_scale_ = std::max(linear > 0.0 ? std::hypot(now.vx, now.vy) / linear : 0.0,
-                           v.wz != 0.0 ? std::fabs(now.wz) / std::fabs(v.wz) : 0.0);
-  }
-  shed_rate_ = brakingRate(v, base_.dynamics);
-  double fastest = 0.0;  // the fastest link point under the full command [m/s]
-  for (const NamedEllipse& link : scene_.links) {
-    fastest = std::max(fastest, pointVelocity(v, link.ellipse.center).norm() +
-                                    std::fabs(v.wz) * boundingRadius(link.ellipse));
-  }
-  margin_sigma_ = fastest > 0.0 ? settings_.margin / fastest : 0.0;
-  const ScaleProfile widest = profileOf(std::max(1.0, from_scale_));
-  sigma_horizon_ = std::max(settings_.horizon, widest.stopSigma() + margin_sigma_);
-  time_horizon_ = std::max(settings_.horizon, widest.stopTime());
-  early_ = detail::kRotationResolution * std::max(sigma_horizon_, time_horizon_);
-  if (std::string r = invalidTwistReason(v, sigma_horizon_); !r.empty()) {
-    result_.error = "braking: " + r;
-    return false;
-  }
-  for (const NamedEllipse& link : scene_.links) {
-    if (std::string r = detail::linkReachReason(link.ellipse, v, sigma_horizon_); !r.empty()) {
-      result_.error = "braking: link '" + link.name + "': " + r;
-      return false;
-    }
-  }
-  return true;
-}
-
-PairTime Gate::brakingHit(const ScaleProfile& p, const PairTime& standing_first) {
-  PairTime hit;
-  // Standing obstacles: the base stays on the command's arc, so it meets the first one where its
-  // twist-time reaches that contact's; it must rest `margin` of the fastest point's path short.
-  if (standing_first.found && p.stopSigma() + margin_sigma_ >= standing_first.time) {
-    hit = standing_first;
-    hit.time = p.timeAtSigma(std::max(0.0, standing_first.time - margin_sigma_));
-  }
-  // Moving obstacles: certified first contact under the warped motion, `margin` short.
-  const double until = hit.found ? hit.time : p.stopTime();
-  for (const Candidate& c : candidates_) {
-    if (c.overlapping || c.standing) continue;
-    if (earliestPossible(c, p.maxScale(), early_) - settings_.margin > until) continue;
-    ++result_.pair_tests;
-    const FirstContact contact = brakingContact(
-        scene_.links[c.link].ellipse, twist_, p, scene_.obstacles[c.obstacle].ellipse,
-        scene_.obstacle_motions[c.obstacle], settings_.margin);
-    keepEarlier(hit, c, contact);
-  }
-  return hit;
-}
-
-long Gate::brakingScale(long n, long top, const PairTime& standing_first, PairTime& hit) {
-  const double res = settings_.resolution;
-  const auto gridValue = [&](long i) { return i > top ? 1.0 : i * res; };
-  if (standing_first.found && n > 0) {
-    // Against standing obstacles the rest point moves on monotonically with the scale: bisect
-    // for the largest grid scale that rests `margin` short, then check the moving ones downward.
-    const auto rests = [&](long i) {
-      return profileOf(gridValue(i)).stopSigma() + margin_sigma_ < standing_first.time;
-    };
-    if (!rests(n)) {
-      long lo = 0, hi = n;  // rests(hi) false; lo unknown
-      if (rests(0)) {
-        while (hi - lo > 1) {
-          const long mid = lo + (hi - lo) / 2;
-          (rests(mid) ? lo : hi) = mid;
-        }
-      }
-      n = lo;
-    }
-  }
-  for (; n >= 0; --n) {
-    hit = brakingHit(profileOf(gridValue(n)), standing_first);
-    if (!hit.found) return n;
-  }
-  return -1;
-}
-
 void Gate::run() {
   if (!prepareBraking()) return;
   if (!findCandidates()) return;
@@ -758,7 +447,7 @@ void Gate::run() {
   scaleRule(!close.empty());
 }
 
-}  // namespace
+}  // namespace detail
 
 std::optional<GateSettingViolation> findInvalidGateSettings(const GateSettings& s) {
   const auto outside = [](const char* field, double value, double min, double max,
@@ -815,7 +504,7 @@ GateResult gateTwist(const PathScene& scene, const Twist& twist, const GateSetti
     result.reason = "cannot judge the command: " + result.error;
     return result;
   }
-  Gate(scene, twist, settings, base, result).run();
+  detail::Gate(scene, twist, settings, base, result).run();
   if (!result.ok()) {
     result.action = GateAction::Stop;
     result.scale = 0.0;
