@@ -16,6 +16,18 @@ std::optional<FieldError> parseOnIncomplete(const std::string& text, OnIncomplet
   return FieldError{"gate/on_incomplete", "'stop' or 'pass'", "'" + text + "'"};
 }
 
+namespace {
+
+/// A core range violation as the `gate/` key's configuration error.
+FieldError gateFieldError(const core::GateSettingViolation& v) {
+  FieldError e =
+      *findOutsideRange(std::string("gate/") + v.field, v.value, v.min, v.max, v.min_excluded);
+  if (v.max_field) e.expected += std::string(" (at most gate/") + v.max_field + ")";
+  return e;
+}
+
+}  // namespace
+
 std::optional<FieldError> findInvalidGateSetting(const GateConfig& config) {
   if (config.robot_frame.empty()) {
     return FieldError{"gate/robot_frame", "a non-empty tf frame id", "''"};
@@ -25,12 +37,7 @@ std::optional<FieldError> findInvalidGateSetting(const GateConfig& config) {
                       "'" + config.robot_frame + "'"};
   }
   // The core's ranges, in the words of the configuration.
-  if (const auto v = core::findInvalidGateSettings(config.timing)) {
-    FieldError e = *findOutsideRange(std::string("gate/") + v->field, v->value, v->min, v->max,
-                                     v->min_excluded);
-    if (v->max_field) e.expected += std::string(" (at most gate/") + v->max_field + ")";
-    return e;
-  }
+  if (const auto v = core::findInvalidGateSettings(config.timing)) return gateFieldError(*v);
   if (auto e = findOutsideRange("gate/cmd_vel_timeout", config.cmd_vel_timeout_s, 0.0,
                                 core::kMaxGateHorizonS)) {
     return e;
@@ -43,18 +50,7 @@ std::optional<FieldError> findInvalidGateSetting(const GateConfig& config) {
                                 kMaxGateTurnRate, true)) {
     return e;
   }
-  if (auto e = findOutsideRange("gate/reaction_time", config.base.reaction_time, 0.0,
-                                kMaxReactionTimeS)) {
-    return e;
-  }
-  if (auto e = findOutsideRange("gate/max_linear_deceleration", config.base.linear_deceleration,
-                                0.0, kMaxDeceleration)) {
-    return e;
-  }
-  if (auto e = findOutsideRange("gate/max_angular_deceleration", config.base.angular_deceleration,
-                                0.0, kMaxDeceleration)) {
-    return e;
-  }
+  if (const auto v = core::findInvalidBaseDynamics(config.base)) return gateFieldError(*v);
   return std::nullopt;
 }
 

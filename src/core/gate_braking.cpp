@@ -27,18 +27,15 @@ bool Gate::prepareBraking() {
   const bool still_command = v.vx == 0.0 && v.vy == 0.0 && v.wz == 0.0;
   braking_ = !base_.dynamics.ideal() && !still_command;
   if (!braking_) return true;
-  const BaseDynamics& d = base_.dynamics;
-  const std::pair<const char*, double> fields[] = {
-      {"base.reaction_time", d.reaction_time},
-      {"base.linear_deceleration", d.linear_deceleration},
-      {"base.angular_deceleration", d.angular_deceleration},
-      {"base.command_period", base_.command_period}};
-  for (const auto& [name, value] : fields) {
-    if (!(value >= 0.0 && value <= kMaxGateHorizonS)) {
-      result_.error = std::string(name) + " = " + formatNumber(value) + " must be within [0, " +
-                      formatNumber(kMaxGateHorizonS) + "]";
-      return false;
-    }
+  // The node's ranges (one home: findInvalidBaseDynamics()).
+  if (const auto v = findInvalidBaseDynamics(base_.dynamics)) {
+    result_.error = "base: " + violationText(*v);
+    return false;
+  }
+  if (!(base_.command_period >= 0.0 && base_.command_period <= kMaxGateHorizonS)) {
+    result_.error = "base: command_period = " + formatNumber(base_.command_period) +
+                    " must be within [0, " + formatNumber(kMaxGateHorizonS) + "]";
+    return false;
   }
   if (std::string r =
           invalidVelocityReason(Motion{{base_.velocity.vx, base_.velocity.vy}, base_.velocity.wz},
@@ -112,13 +109,11 @@ PairTime Gate::brakingHit(const ScaleProfile& p, const PairTime& standing_first)
 }
 
 long Gate::brakingScale(long n, long top, const PairTime& standing_first, PairTime& hit) {
-  const double res = settings_.resolution;
-  const auto gridValue = [&](long i) { return i > top ? 1.0 : i * res; };
   if (standing_first.found && n > 0) {
     // Against standing obstacles the rest point moves on monotonically with the scale: bisect
     // for the largest grid scale that rests `margin` short, then check the moving ones downward.
     const auto rests = [&](long i) {
-      return profileOf(gridValue(i)).stopSigma() + margin_sigma_ < standing_first.time;
+      return profileOf(gridScale(i, top)).stopSigma() + margin_sigma_ < standing_first.time;
     };
     if (!rests(n)) {
       long lo = 0, hi = n;  // rests(hi) false; lo unknown
@@ -132,7 +127,7 @@ long Gate::brakingScale(long n, long top, const PairTime& standing_first, PairTi
     }
   }
   for (; n >= 0; --n) {
-    hit = brakingHit(profileOf(gridValue(n)), standing_first);
+    hit = brakingHit(profileOf(gridScale(n, top)), standing_first);
     if (!hit.found) return n;
   }
   return -1;
@@ -141,11 +136,7 @@ long Gate::brakingScale(long n, long top, const PairTime& standing_first, PairTi
 BrakingOutcome Gate::brakingRule(double& k, long n, long top, const PairTime& standing_first,
                                  PairTime& limiting, double& limiting_scale) {
   BrakingOutcome outcome;
-  std::string& braking_text = outcome.text;
-  bool& braked = outcome.braked;
-  std::optional<ScaleProfile>& limiting_profile = outcome.limiting_profile;
   const double horizon = settings_.horizon;
-  const double res = settings_.resolution;
   // The braking rule below the contact rule's scale (its grid index n; n = 0 when it stopped).
   if (k == 0.0) n = 0;
   if (k == 1.0) n = top + 1;
@@ -169,21 +160,21 @@ BrakingOutcome Gate::brakingRule(double& k, long n, long top, const PairTime& st
     result_.impact_speed = linear * now.scaleAt(hit.time);
     limiting = hit;
     limiting_scale = 0.0;
-    limiting_profile = now;
+    outcome.limiting_profile = now;
     k = 0.0;
-    braked = true;
-    braking_text = "; braking now cannot avoid it: " + pairText(describeBraking(hit, now, 0.0)) +
+    outcome.braked = true;
+    outcome.text = "; braking now cannot avoid it: " + pairText(describeBraking(hit, now, 0.0)) +
                    " within margin " + formatNumber(settings_.margin) + " m in " +
                    readable(hit.time) + " s at " + readable(result_.impact_speed) + " m/s" + model;
   } else if (kept < n) {
-    const double lowered = kept > top ? 1.0 : kept * res;
-    const double above = kept + 1 > top ? 1.0 : (kept + 1) * res;
+    const double lowered = gridScale(kept, top);
+    const double above = gridScale(kept + 1, top);
     const ScaleProfile tried = profileOf(above);
     limiting = brakingHit(tried, along);
     limiting_scale = above;
-    limiting_profile = tried;
-    braked = true;
-    braking_text = "; braking rule: at " + readable(above) + " the base would need " +
+    outcome.limiting_profile = tried;
+    outcome.braked = true;
+    outcome.text = "; braking rule: at " + readable(above) + " the base would need " +
                    readable(linear * tried.stopSigma()) + " m to rest" +
                    (limiting.found ? " and come within margin of " +
                                          pairText(describeBraking(limiting, tried, above))
@@ -192,8 +183,8 @@ BrakingOutcome Gate::brakingRule(double& k, long n, long top, const PairTime& st
     k = lowered;
   }
   result_.braking_distance = linear * profileOf(k).stopSigma();
-  if (!braked) {
-    braking_text = "; braking from " + readable(k) + " ends in " +
+  if (!outcome.braked) {
+    outcome.text = "; braking from " + readable(k) + " ends in " +
                    readable(result_.braking_distance) + " m" + model;
   }
   return outcome;

@@ -23,6 +23,10 @@ constexpr double kReachWidening = 1e-9;
 /// "0.41999999999999"); given settings are quoted exactly with formatNumber().
 std::string readable(double value);
 
+/// A settings violation in the core's words: "stop_time = 2 must be within [0, 1.5] (at most
+/// time_before_collision)".
+std::string violationText(const GateSettingViolation& v);
+
 /// Velocity of the robot-fixed point `p` (in the robot frame at t = 0) at t = 0: v + wz z x p.
 inline Eigen::Vector2d pointVelocity(const Twist& twist, const Eigen::Vector2d& p) {
   return {twist.vx - twist.wz * p.y(), twist.vy + twist.wz * p.x()};
@@ -109,6 +113,8 @@ class Gate {
   /// The braking model of the command (off for an ideal base or a standing command): the base's
   /// scale along the command now, the rate it sheds it, the windows it needs. False on an error.
   bool prepareBraking();
+  /// Scale n of the grid {0, res, 2 res, ..., top res, 1}: 1 above top.
+  double gridScale(long n, long top) const { return n > top ? 1.0 : n * settings_.resolution; }
   ScaleProfile profileOf(double k) const {
     return ScaleProfile(from_scale_, k, base_.dynamics.reaction_time, base_.command_period,
                         shed_rate_);

@@ -84,15 +84,9 @@ double widened(double bound, double coordinate) {
   return bound * (1.0 + kReachWidening) + 1e-12 * coordinate;
 }
 
-/// A violation in the core's words: "stop_time = 2 must be within [0, 1.5] (at most
-/// time_before_collision)".
 std::string settingsReason(const GateSettings& s) {
   const auto violation = findInvalidGateSettings(s);
-  if (!violation) return {};
-  const GateSettingViolation& v = *violation;
-  return std::string(v.field) + " = " + formatNumber(v.value) + " must be within " +
-         (v.min_excluded ? "(" : "[") + formatNumber(v.min) + ", " + formatNumber(v.max) + "]" +
-         (v.max_field ? std::string(" (at most ") + v.max_field + ")" : std::string());
+  return violation ? detail::violationText(*violation) : std::string();
 }
 
 /// Everything gateTwist() checks on every call (no work per obstacle).
@@ -124,6 +118,14 @@ std::string obstacleReason(const NamedEllipse& obstacle, const Motion& motion, d
 }  // namespace
 
 namespace detail {
+
+/// A violation in the core's words: "stop_time = 2 must be within [0, 1.5] (at most
+/// time_before_collision)".
+std::string violationText(const GateSettingViolation& v) {
+  return std::string(v.field) + " = " + formatNumber(v.value) + " must be within " +
+         (v.min_excluded ? "(" : "[") + formatNumber(v.min) + ", " + formatNumber(v.max) + "]" +
+         (v.max_field ? std::string(" (at most ") + v.max_field + ")" : std::string());
+}
 
 /// A computed time, distance or scale for a reason, to 4 significant digits ("0.42", not
 /// "0.41999999999999"); given settings are quoted exactly with formatNumber().
@@ -274,7 +276,6 @@ void Gate::scaleRule(bool escaping) {
   PairTime first = standing_first;
   keepEarlier(first, moving_first);
   // The grid: k_n = n res for n = 0 .. top, and 1 (top_n: the largest n with n res < 1).
-  const auto gridValue = [res](long n, long top) { return n > top ? 1.0 : n * res; };
   const long top = static_cast<long>(std::ceil(1.0 / res)) - 1;  // n res < 1 for n <= top
   double k = 1.0;
   long n = top + 1;
@@ -289,7 +290,7 @@ void Gate::scaleRule(bool escaping) {
       // The largest grid k with t_s / k >= T_b, from below t_s / T_b (rounded down).
       n = std::min(top, static_cast<long>(std::floor(standing_first.time / before / res)));
       while (n > 0 && standing_first.time / (n * res) < before) --n;
-      k = gridValue(n, top);
+      k = gridScale(n, top);
       limiting = standing_first;
     }
     if (moving_count > 0 && k == 1.0 && moving_first.found && moving_first.time < before) {
@@ -298,7 +299,7 @@ void Gate::scaleRule(bool escaping) {
       limiting = moving_first;
       const bool still_command = twist_.vx == 0.0 && twist_.vy == 0.0 && twist_.wz == 0.0;
       n = still_command ? 0 : top;
-      k = gridValue(n, top);
+      k = gridScale(n, top);
     }
     if (moving_count > 0 && k > 0.0 && k < 1.0) {
       // Searched down the grid: under k twist a moving obstacle may arrive sooner or later. Only
@@ -316,7 +317,7 @@ void Gate::scaleRule(bool escaping) {
         return a.first < b.first || (a.first == b.first && a.second < b.second);
       });
       for (; n > 0; --n) {
-        k = gridValue(n, top);
+        k = gridScale(n, top);
         const Twist command = scaled(twist_, k);
         const auto fails = [&](const Candidate& c) {
           if (earliestPossible(c, k, early_) >= before)
@@ -449,25 +450,39 @@ void Gate::run() {
 
 }  // namespace detail
 
+namespace {
+
+std::optional<GateSettingViolation> outsideRange(const char* field, double value, double min,
+                                                 double max, bool min_excluded = false,
+                                                 const char* max_field = nullptr) {
+  const bool above_min = min_excluded ? value > min : value >= min;
+  if (above_min && value <= max) return std::nullopt;  // NaN is within no range
+  return GateSettingViolation{field, value, min, max, min_excluded, max_field};
+}
+
+}  // namespace
+
+std::optional<GateSettingViolation> findInvalidBaseDynamics(const BaseDynamics& d) {
+  if (auto v = outsideRange("reaction_time", d.reaction_time, 0.0, kMaxReactionTimeS)) return v;
+  if (auto v =
+          outsideRange("max_linear_deceleration", d.linear_deceleration, 0.0, kMaxDeceleration)) {
+    return v;
+  }
+  return outsideRange("max_angular_deceleration", d.angular_deceleration, 0.0, kMaxDeceleration);
+}
+
 std::optional<GateSettingViolation> findInvalidGateSettings(const GateSettings& s) {
-  const auto outside = [](const char* field, double value, double min, double max,
-                          bool min_excluded = false,
-                          const char* max_field = nullptr) -> std::optional<GateSettingViolation> {
-    const bool above_min = min_excluded ? value > min : value >= min;
-    if (above_min && value <= max) return std::nullopt;  // NaN is within no range
-    return GateSettingViolation{field, value, min, max, min_excluded, max_field};
-  };
-  if (auto v = outside("horizon", s.horizon, 0.0, kMaxGateHorizonS, true)) return v;
-  if (auto v = outside("time_before_collision", s.time_before_collision, 0.0, s.horizon, false,
-                       "horizon")) {
+  if (auto v = outsideRange("horizon", s.horizon, 0.0, kMaxGateHorizonS, true)) return v;
+  if (auto v = outsideRange("time_before_collision", s.time_before_collision, 0.0, s.horizon, false,
+                            "horizon")) {
     return v;
   }
-  if (auto v = outside("stop_time", s.stop_time, 0.0, s.time_before_collision, false,
-                       "time_before_collision")) {
+  if (auto v = outsideRange("stop_time", s.stop_time, 0.0, s.time_before_collision, false,
+                            "time_before_collision")) {
     return v;
   }
-  if (auto v = outside("margin", s.margin, 0.0, kMaxRadius)) return v;
-  return outside("resolution", s.resolution, kMinGateResolution, 1.0);
+  if (auto v = outsideRange("margin", s.margin, 0.0, kMaxRadius)) return v;
+  return outsideRange("resolution", s.resolution, kMinGateResolution, 1.0);
 }
 
 std::string invalidGateReason(const PathScene& scene, const Twist& twist,

@@ -42,13 +42,10 @@ std::string idealBaseWarning(const GateConfig& config);
 /// Accepted ranges (refused, never clamped) besides core::findInvalidGateSettings()' for
 /// `timing`: cmd_vel_timeout within [0, core::kMaxGateHorizonS]; max_linear_speed within (0,
 /// kMaxGateSpeed]; max_angular_speed within (0, kMaxGateTurnRate]; robot_frame a non-empty frame
-/// without a leading '/'; the base's below; odom_topic any (a ROS name, checked by ROS).
+/// without a leading '/'; `base` within core::findInvalidBaseDynamics()' ranges; odom_topic any
+/// (a ROS name, checked by ROS).
 constexpr double kMaxGateSpeed = 100.0;    ///< [m/s]
 constexpr double kMaxGateTurnRate = 20.0;  ///< [rad/s]; * horizon stays within core::kMaxTurn
-/// reaction_time within [0, kMaxReactionTimeS]; max_linear_deceleration and
-/// max_angular_deceleration within [0, kMaxDeceleration] (0 = at once).
-constexpr double kMaxReactionTimeS = 5.0;
-constexpr double kMaxDeceleration = 100.0;  ///< [m/s^2] or [rad/s^2]
 
 /// The first gate setting outside its range, its key as in YAML ("gate/stop_time"), or nothing.
 std::optional<FieldError> findInvalidGateSetting(const GateConfig& config);

@@ -58,6 +58,15 @@ struct GateSettingViolation {
 /// stop_time, margin, resolution), or nothing: the one home of the gate settings' ranges.
 std::optional<GateSettingViolation> findInvalidGateSettings(const GateSettings& settings);
 
+/// Accepted ranges of BaseDynamics: reaction_time within [0, kMaxReactionTimeS] [s], each
+/// deceleration within [0, kMaxDeceleration] [m/s^2, rad/s^2] (0 = at once).
+constexpr double kMaxReactionTimeS = 5.0;
+constexpr double kMaxDeceleration = 100.0;
+
+/// The first field of `dynamics` outside its range, named as the node's keys name it
+/// ("reaction_time", "max_linear_deceleration", "max_angular_deceleration"), or nothing.
+std::optional<GateSettingViolation> findInvalidBaseDynamics(const BaseDynamics& dynamics);
+
 /// A predicted contact of one link with one obstacle.
 struct GateContact {
   bool found{false};
