@@ -45,6 +45,7 @@ set(ELLIPSE_COLLISION_CORE_SOURCES
   src/core/scene_nearest.cpp
   src/core/shape_hull.cpp
   src/core/shape_outline.cpp
+  src/core/simulated_base.cpp
   src/core/twist_motion.cpp
   src/core/unique_names.cpp
   src/core/velocity_gate.cpp)

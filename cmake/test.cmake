@@ -90,7 +90,7 @@ ellipse_collision_add_gtest(test_base_braking LIBRARIES ellipse_collision_core q
   test/support/twist_oracle.cpp)
 
 # The velocity gate: its decisions against dense overlap() scans of the exact arcs, and driving a
-# simulated base that answers late and brakes at bounded rates (test/support/braking_base.h).
+# simulated base that answers late and brakes at bounded rates (core::SimulatedBase).
 ellipse_collision_add_gtest(test_velocity_gate LIBRARIES ellipse_collision_core quadmath SOURCES
   test/core/test_velocity_gate.cpp
   test/support/twist_oracle.cpp
@@ -309,3 +309,7 @@ set(_readme_test test/docs/doc_readme.test)
 catkin_run_tests_target("rostest" "test_docs_doc_readme.test" "rostest-test_docs_doc_readme.xml"
   COMMAND "xvfb-run -a -s \"-screen 0 1280x800x24\" ${PYTHON_EXECUTABLE} /usr/bin/rostest --pkgdir=${PROJECT_SOURCE_DIR} --package=${PROJECT_NAME} --results-filename test_docs_doc_readme.xml --results-base-dir \"${CATKIN_TEST_RESULTS_DIR}\" ${PROJECT_SOURCE_DIR}/${_readme_test}"
   DEPENDENCIES ellipse_collision_node ${PROJECT_NAME}_generate_messages)
+
+# The simulated base the gate's tests and the demo drive: its rest against the closed forms.
+ellipse_collision_add_gtest(test_simulated_base LIBRARIES ellipse_collision_core SOURCES
+  test/core/test_simulated_base.cpp)

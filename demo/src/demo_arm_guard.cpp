@@ -34,7 +34,7 @@ double reachFrom(const ArmLink& link, std::size_t first) {
 /// at most the base's speed, plus the base's turn rate times the reach from the base's origin,
 /// plus each joint's rate times the reach from its axis.
 double sweptDistance(const ArmLink& link, const std::vector<SineMotion>& joints, double arm_clock_s,
-                     const core::Twist& base_twist, double t0_s, double t1_s) {
+                     double direction, const core::Twist& base_twist, double t0_s, double t1_s) {
   const double base_reach =
       (link.chain.empty() ? 0.0 : link.chain.front().origin.position.norm()) + reachFrom(link, 0);
   double moved = std::abs(t1_s - t0_s) *
@@ -42,7 +42,8 @@ double sweptDistance(const ArmLink& link, const std::vector<SineMotion>& joints,
   for (std::size_t i = 0; i < link.chain.size(); ++i) {
     const int j = link.chain[i].joint;
     if (j >= 0)
-      moved += joints[j].travel(arm_clock_s + t0_s, arm_clock_s + t1_s) * reachFrom(link, i);
+      moved += joints[j].travel(arm_clock_s + direction * t0_s, arm_clock_s + direction * t1_s) *
+               reachFrom(link, i);
   }
   return moved;
 }
@@ -69,7 +70,7 @@ core::Ellipse placedAt(const core::Ellipse& shape, const Pose2D& pose) {
 
 std::vector<ArmSample> armSweep(const std::vector<ArmLink>& links,
                                 const std::vector<SineMotion>& joints, double arm_clock_s,
-                                const Pose2D& base, const core::Twist& base_twist,
+                                double direction, const Pose2D& base, const core::Twist& base_twist,
                                 const ArmGuardSettings& settings) {
   const int steps =
       std::max(1, static_cast<int>(std::ceil(settings.horizon_s / settings.step_s - 1e-9)));
@@ -78,7 +79,8 @@ std::vector<ArmSample> armSweep(const std::vector<ArmLink>& links,
   std::vector<double> q(joints.size());
   for (int k = 0; k <= steps; ++k) {
     const double t = k * h;
-    for (std::size_t j = 0; j < joints.size(); ++j) q[j] = joints[j].at(arm_clock_s + t);
+    for (std::size_t j = 0; j < joints.size(); ++j)
+      q[j] = joints[j].at(arm_clock_s + direction * t);
     const Pose2D base_then = poseAfterArc(base, base_twist, t);
     for (const ArmLink& link : links) {
       ArmSample sample;
@@ -88,9 +90,9 @@ std::vector<ArmSample> armSweep(const std::vector<ArmLink>& links,
       sample.from_s = std::max(0.0, t - h / 2);
       sample.to_s = std::min(settings.horizon_s, t + h / 2);
       sample.ellipse = placedAt(link.shape, compose(base_then, linkPose(link, q)));
-      sample.sweep_m =
-          std::max(sweptDistance(link, joints, arm_clock_s, base_twist, sample.from_s, t),
-                   sweptDistance(link, joints, arm_clock_s, base_twist, t, sample.to_s));
+      sample.sweep_m = std::max(
+          sweptDistance(link, joints, arm_clock_s, direction, base_twist, sample.from_s, t),
+          sweptDistance(link, joints, arm_clock_s, direction, base_twist, t, sample.to_s));
       sweep.push_back(sample);
     }
   }

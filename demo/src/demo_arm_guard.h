@@ -41,6 +41,10 @@ struct ArmGuardSettings {
   double horizon_s{0.3};     ///< the motion checked ahead [s], > 0
   double step_s{0.05};       ///< at most this between sampled poses [s], in (0, horizon_s]
   double clearance_m{0.05};  ///< the joints hold when a link would come this close [m], >= 0
+  /// After holding this long for an obstacle [s] the arm backs off along its sweep, for up to
+  /// retreat_s of it [s] while that way is clear, then goes on.
+  double retreat_after_s{1.0};
+  double retreat_s{2.0};
 };
 
 /// One sampled pose of one link.
@@ -58,11 +62,12 @@ struct ArmSample {
 };
 
 /// The next `settings.horizon_s` of the arm's motion, sampled at equal steps of at most
-/// `settings.step_s` (0 and horizon_s included): the joints along `joints` from `arm_clock_s` on,
-/// the base along the arc of `base_twist` from `base`. Samples in time order, links in order.
+/// `settings.step_s` (0 and horizon_s included): the joints along `joints` from `arm_clock_s` on
+/// (`direction` +1) or back along them (-1: the arm retracing its sweep), the base along the arc
+/// of `base_twist` from `base`. Samples in time order, links in order.
 std::vector<ArmSample> armSweep(const std::vector<ArmLink>& links,
                                 const std::vector<SineMotion>& joints, double arm_clock_s,
-                                const Pose2D& base, const core::Twist& base_twist,
+                                double direction, const Pose2D& base, const core::Twist& base_twist,
                                 const ArmGuardSettings& settings);
 
 /// A sampled link near an obstacle, as the check answered: a collision (distance 0) or a warning

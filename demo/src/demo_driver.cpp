@@ -15,8 +15,10 @@
 #include <utility>
 #include <vector>
 
+#include "ellipse_collision/app/gate_config.h"
 #include "ellipse_collision/core/number_format.h"
 #include "ellipse_collision/core/unique_names.h"
+#include "ellipse_collision/core/velocity_gate.h"
 #include "ellipse_collision/ros/conversions.h"
 #include "ellipse_collision/ros/messages.h"
 #include "ellipse_collision/ros/node_config.h"
@@ -206,7 +208,7 @@ DemoDriver::DemoDriver(const ros::NodeHandle& nh, const ros::NodeHandle& private
   const ros::NodeHandle& p = private_nh_;
   dictKeys(p, "",
            {"rate", "odom_frame", "base_frame", "start", "route", "drive", "back_off", "joints",
-            "static_obstacles", "moving_obstacle", "scanner", "planned_path", "arm_guard"});
+            "static_obstacles", "moving_obstacle", "scanner", "planned_path", "arm_guard", "base"});
   const double rate_hz = p.hasParam("rate") ? positive(p, "rate") : 30.0;
   odom_frame_ = frameOr(p, "odom_frame", "odom");
   base_frame_ = frameOr(p, "base_frame", "base_link");
@@ -214,6 +216,9 @@ DemoDriver::DemoDriver(const ros::NodeHandle& nh, const ros::NodeHandle& private
   dictKeys(p, "start", {"x", "y", "yaw"});
   base_.position = {number(p, "start/x"), number(p, "start/y")};
   base_.yaw = number(p, "start/yaw");
+  readBaseDynamics();
+  base_sim_.emplace(base_dynamics_,
+                    core::PathPose{base_.position.x(), base_.position.y(), base_.yaw, 0.0});
   dictKeys(p, "drive", {"speed", "turn_rate", "heading_gain", "tolerance"});
   dictKeys(p, "back_off", {"blocked_time", "speed", "turn_rate", "duration"});
   DriveSettings drive;
@@ -336,11 +341,11 @@ DemoDriver::DemoDriver(const ros::NodeHandle& nh, const ros::NodeHandle& private
   gated_sub_ = nh_.subscribe("cmd_vel_gated", 1, &DemoDriver::onGatedCommand, this,
                              ros::TransportHints().tcpNoDelay());
   scan_pub_ = nh_.advertise<sensor_msgs::LaserScan>("scan", 10);
+  odom_pub_ = nh_.advertise<nav_msgs::Odometry>("odom", 10);
   pause_service_ = private_nh_.advertiseService("pause", &DemoDriver::onPause, this);
 
   started_ = ros::Time::now();
   launched_ = started_;
-  last_cycle_ = started_;
   timer_ = nh_.createTimer(ros::Duration(1.0 / rate_hz), &DemoDriver::onTimer, this);
   ROS_INFO_STREAM("demo_driver: driving " << base_frame_ << " in " << odom_frame_
                                           << " through the gate (cmd_vel -> cmd_vel_gated), "
@@ -365,6 +370,10 @@ bool DemoDriver::onPause(std_srvs::SetBool::Request& request,
   // gated command for a new command.
   gated_ = core::Twist();
   gated_since_command_ = false;
+  // A pause freezes the base where it stands (no braking: the demo's clock stops); it starts
+  // again at rest.
+  base_sim_.emplace(base_dynamics_, core::PathPose{base_.position.x(), base_.position.y(),
+                                                   base_.yaw, clock_at_start_s_});
   response.success = true;
   response.message = std::string(paused_ ? "paused" : "running") + " at demo time " +
                      core::formatNumber(clock_at_start_s_) + " s";
@@ -378,17 +387,56 @@ void DemoDriver::onGatedCommand(const geometry_msgs::Twist& gated) {
   gated_.vy = gated.linear.y;
   gated_.wz = gated.angular.z;
   gated_since_command_ = true;
+  base_sim_->command(demoTime(ros::Time::now()), gated_);
+}
+
+void DemoDriver::readBaseDynamics() {
+  const ros::NodeHandle& p = private_nh_;
+  if (!p.hasParam("base")) return;
+  dictKeys(p, "base", {"reaction_time", "max_linear_deceleration", "max_angular_deceleration"});
+  for (const auto& [key, field] :
+       {std::pair<const char*, double*>{"reaction_time", &base_dynamics_.reaction_time},
+        {"max_linear_deceleration", &base_dynamics_.linear_deceleration},
+        {"max_angular_deceleration", &base_dynamics_.angular_deceleration}}) {
+    const std::string name = std::string("base/") + key;
+    if (p.hasParam(name)) *field = number(p, name);
+  }
+  // The node's gate/ parameters of the same names have the same ranges: one home for both.
+  if (const auto violation = core::findInvalidBaseDynamics(base_dynamics_)) {
+    const app::FieldError error = app::gateFieldError(*violation, fullName(p, "base") + "/");
+    throw DemoConfigError("parameter " + error.key + ": expected " + error.expected + ", got " +
+                          error.actual);
+  }
+}
+
+void DemoDriver::publishOdometry(const ros::Time& now) {
+  nav_msgs::Odometry odom;
+  odom.header.stamp = now;
+  odom.header.frame_id = odom_frame_;
+  odom.child_frame_id = base_frame_;
+  odom.pose.pose.position.x = base_.position.x();
+  odom.pose.pose.position.y = base_.position.y();
+  odom.pose.pose.orientation.z = std::sin(base_.yaw / 2);
+  odom.pose.pose.orientation.w = std::cos(base_.yaw / 2);
+  // The twist of nav_msgs/Odometry is in its child frame: the base's own.
+  const core::Twist velocity = paused_ ? core::Twist() : base_sim_->velocity();
+  odom.twist.twist.linear.x = velocity.vx;
+  odom.twist.twist.linear.y = velocity.vy;
+  odom.twist.twist.angular.z = velocity.wz;
+  odom_pub_.publish(odom);
 }
 
 void DemoDriver::onTimer(const ros::TimerEvent&) {
   const ros::Time now = ros::Time::now();
   const double t = demoTime(now);
 
-  // The base has moved by the gated command since the last cycle (the gate judged it at the
-  // pose of that cycle): the exact arc.
-  const double elapsed_s = std::max(0.0, (now - last_cycle_).toSec());
-  last_cycle_ = now;
-  if (!paused_) base_ = poseAfterArc(base_, gated_, elapsed_s);
+  // The base has moved since the last cycle as a real one follows the gated commands: late, and
+  // changing speed at bounded rates (demo time, which stands while paused).
+  if (!paused_) {
+    base_sim_->advanceTo(t);
+    base_.position = {base_sim_->pose().x, base_sim_->pose().y};
+    base_.yaw = base_sim_->pose().yaw;
+  }
   const Pose2D& base = base_;
   geometry_msgs::TransformStamped odom_to_base;
   odom_to_base.header.stamp = now;
@@ -399,6 +447,7 @@ void DemoDriver::onTimer(const ros::TimerEvent&) {
   odom_to_base.transform.rotation.z = std::sin(base.yaw / 2);
   odom_to_base.transform.rotation.w = std::cos(base.yaw / 2);
   tf_broadcaster_.sendTransform(odom_to_base);
+  publishOdometry(now);
 
   // The arm: by the demo clock, or (arm_guard) by its own clock, which stands while the joints
   // hold.
@@ -523,13 +572,18 @@ void DemoDriver::onPathCheckTimer(const ros::TimerEvent&) {
 void DemoDriver::setUpArmGuard() {
   const ros::NodeHandle& p = private_nh_;
   if (p.hasParam("arm_guard")) {
-    dictKeys(p, "arm_guard", {"enabled", "horizon", "step", "clearance"});
+    dictKeys(p, "arm_guard",
+             {"enabled", "horizon", "step", "clearance", "retreat_after", "retreat"});
     if (p.hasParam("arm_guard/enabled") && !p.getParam("arm_guard/enabled", arm_guard_enabled_)) {
       throw DemoConfigError("parameter " + fullName(p, "arm_guard/enabled") +
                             ": expected true or false");
     }
     if (p.hasParam("arm_guard/horizon")) arm_guard_.horizon_s = positive(p, "arm_guard/horizon");
     if (p.hasParam("arm_guard/step")) arm_guard_.step_s = positive(p, "arm_guard/step");
+    if (p.hasParam("arm_guard/retreat_after")) {
+      arm_guard_.retreat_after_s = positive(p, "arm_guard/retreat_after");
+    }
+    if (p.hasParam("arm_guard/retreat")) arm_guard_.retreat_s = positive(p, "arm_guard/retreat");
     if (p.hasParam("arm_guard/clearance")) {
       arm_guard_.clearance_m = number(p, "arm_guard/clearance");
       if (arm_guard_.clearance_m < 0.0) {
@@ -582,9 +636,9 @@ void DemoDriver::setUpArmGuard() {
                                            << core::formatNumber(arm_guard_.horizon_s) << " s");
 }
 
-std::string DemoDriver::armHoldReason(std::optional<ArmHold>* hold) {
-  const std::vector<ArmSample> sweep =
-      armSweep(arm_links_, joint_motions_, arm_clock_s_, base_, gated_, arm_guard_);
+std::string DemoDriver::armHoldReason(double direction, std::optional<ArmHold>* hold) {
+  const std::vector<ArmSample> sweep = armSweep(arm_links_, joint_motions_, arm_clock_s_, direction,
+                                                base_, base_sim_->velocity(), arm_guard_);
   if (const auto undecided = undecidedSample(sweep, arm_guard_.clearance_m, warning_distance_m_)) {
     char text[160];
     std::snprintf(text, sizeof(text),
@@ -630,10 +684,33 @@ std::string DemoDriver::armHoldReason(std::optional<ArmHold>* hold) {
 }
 
 void DemoDriver::guardArm(const ros::Time& now, double dt_s) {
-  std::optional<ArmHold> hold;
-  const std::string text = armHoldReason(&hold);
   // The check covered the next horizon_s; a longer stall moves on at most that far.
-  if (text.empty()) arm_clock_s_ += std::min(dt_s, arm_guard_.horizon_s);
+  const double step_s = std::min(dt_s, arm_guard_.horizon_s);
+  std::optional<ArmHold> hold;
+  std::string text;
+  if (arm_retreat_left_s_ > 0.0) {
+    // Backing off along the sweep, as far as that way is clear.
+    text = armHoldReason(-1.0, &hold);
+    if (text.empty()) {
+      arm_clock_s_ -= step_s;
+      arm_retreat_left_s_ -= step_s;
+      text = arm_retreat_text_;
+    } else {
+      arm_retreat_left_s_ = 0.0;
+    }
+  } else {
+    text = armHoldReason(1.0, &hold);
+    if (text.empty()) {
+      arm_clock_s_ += step_s;
+      arm_held_s_ = 0.0;
+    } else if (hold && (arm_held_s_ += dt_s) >= arm_guard_.retreat_after_s) {
+      // Held this long, the arm may be what keeps the base stuck too (the gate moves every link
+      // rigidly with the base): it backs off along the way it came.
+      arm_held_s_ = 0.0;
+      arm_retreat_left_s_ = arm_guard_.retreat_s;
+      arm_retreat_text_ = "arm backs off: " + hold->link + " held near " + hold->obstacle;
+    }
+  }
   const bool starting_up = (now - launched_).toSec() < kStartUpS;
   if (arm_log_.shouldLog(hold ? hold->link + " / " + hold->obstacle : text, now.toSec())) {
     if (starting_up && !hold) {
@@ -687,7 +764,7 @@ void DemoDriver::publishArmHold(const ros::Time& now, const std::string& text,
     label.pose.position.y = at.y();
     label.pose.position.z = 0.5;
   }
-  if (hold || text.empty()) markers.markers.push_back(outline);
+  markers.markers.push_back(outline);  // DELETE when no link is held
   markers.markers.push_back(label);
   path_check_markers_pub_.publish(markers);
 }

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <geometry_msgs/Twist.h>
+#include <nav_msgs/Odometry.h>
 #include <nav_msgs/Path.h>
 #include <ros/ros.h>
 #include <std_srvs/SetBool.h>
@@ -22,6 +23,7 @@
 #include "demo_trajectory.h"
 #include "demo_world.h"
 #include "ellipse_collision/app/ellipse_spec.h"
+#include "ellipse_collision/core/simulated_base.h"
 
 namespace ellipse_collision {
 
@@ -70,6 +72,10 @@ class DemoDriver {
   nav_msgs::Path plannedPath(const ros::Time& now, const core::Twist& command) const;
   void onGatedCommand(const geometry_msgs::Twist& gated);
   void onPathCheckTimer(const ros::TimerEvent& event);
+  /// Reads `base` (the simulated base's reaction time and deceleration limits).
+  void readBaseDynamics();
+  /// The base's pose and measured twist on `odom` (nav_msgs/Odometry), as a base driver does.
+  void publishOdometry(const ros::Time& now);
   /// Reads `arm_guard` and, when enabled, the collision node's configuration (its links and
   /// warning distance) and the arm's chains from the URDF in robot_description.
   void setUpArmGuard();
@@ -78,7 +84,8 @@ class DemoDriver {
   void guardArm(const ros::Time& now, double dt_s);
   /// Why the arm must hold now ("" = it may move): the hold rule on the node's answer, or a
   /// check that failed or could not decide.
-  std::string armHoldReason(std::optional<ArmHold>* hold);
+  /// `direction` +1: the arm's next motion along its sweep; -1: back along it.
+  std::string armHoldReason(double direction, std::optional<ArmHold>* hold);
   void publishArmHold(const ros::Time& now, const std::string& text,
                       const std::optional<ArmHold>& hold);
   /// The demo clock [s]: ROS time since start, minus the time spent paused.
@@ -90,11 +97,13 @@ class DemoDriver {
   std::string base_frame_;
   DemoTrajectory trajectory_;
   std::unique_ptr<BaseScript> base_script_;
-  Pose2D base_;                 ///< the base's pose in the odom frame, moved by the gated command
+  Pose2D base_;  ///< the base's pose in the odom frame, as base_sim_ moved it
+  core::BaseDynamics base_dynamics_{0.1, 1.0, 2.0};  ///< `base`: how the simulated base follows
+  /// The base, following the gated commands late and braking at bounded rates (demo clock).
+  std::optional<core::SimulatedBase> base_sim_;
   core::Twist command_;         ///< the last command sent on cmd_vel
   core::Twist gated_;           ///< the last gated command received; the base moves by it
   bool gated_since_command_{false};  ///< a gated command arrived since the last command
-  ros::Time last_cycle_;        ///< when the base's pose was last advanced
   DemoWorld world_;             ///< what the scanner sees, in the odom frame
   std::string moving_name_;     ///< the moving obstacle's name (for the log)
   std::string scanner_frame_;
@@ -107,6 +116,7 @@ class DemoDriver {
   ros::Publisher cmd_vel_pub_;
   ros::Subscriber gated_sub_;
   ros::Publisher scan_pub_;
+  ros::Publisher odom_pub_;
   ros::ServiceServer pause_service_;
   ros::Timer timer_;
   ros::Publisher planned_path_pub_;
@@ -134,6 +144,9 @@ class DemoDriver {
   double arm_clock_s_{0.0};    ///< [s] the time along the joints' sweep
   double last_demo_t_s_{0.0};  ///< the demo clock at the last cycle [s]
   std::string arm_hold_text_;  ///< what the hold marker shows; "" = not held
+  double arm_held_s_{0.0};     ///< [s] how long the arm has held for an obstacle without a break
+  double arm_retreat_left_s_{0.0};  ///< [s] of the sweep still to back off along; 0 = forward
+  std::string arm_retreat_text_;    ///< what the marker shows while the arm backs off
   ros::Time arm_marker_sent_;
   LogOnChange arm_log_{5.0};
   LogOnChange plan_log_{5.0};

@@ -16,17 +16,11 @@ std::optional<FieldError> parseOnIncomplete(const std::string& text, OnIncomplet
   return FieldError{"gate/on_incomplete", "'stop' or 'pass'", "'" + text + "'"};
 }
 
-namespace {
-
-/// A core range violation as the `gate/` key's configuration error.
-FieldError gateFieldError(const core::GateSettingViolation& v) {
-  FieldError e =
-      *findOutsideRange(std::string("gate/") + v.field, v.value, v.min, v.max, v.min_excluded);
-  if (v.max_field) e.expected += std::string(" (at most gate/") + v.max_field + ")";
+FieldError gateFieldError(const core::GateSettingViolation& v, const std::string& prefix) {
+  FieldError e = *findOutsideRange(prefix + v.field, v.value, v.min, v.max, v.min_excluded);
+  if (v.max_field) e.expected += " (at most " + prefix + v.max_field + ")";
   return e;
 }
-
-}  // namespace
 
 std::optional<FieldError> findInvalidGateSetting(const GateConfig& config) {
   if (config.robot_frame.empty()) {

@@ -8,11 +8,11 @@
 #include <string>
 #include <vector>
 
-#include "braking_base.h"
 #include "ellipse_collision/core/distance.h"
 #include "ellipse_collision/core/number_format.h"
 #include "ellipse_collision/core/overlap.h"
 #include "ellipse_collision/core/path_motion.h"
+#include "ellipse_collision/core/simulated_base.h"
 #include "ellipse_collision/core/velocity_gate.h"
 #include "first_contact_oracle.h"
 #include "grazing_tally.h"
@@ -511,17 +511,17 @@ struct Drive {
 };
 
 /// The robot (links in its frame) driven by `input` at 20 Hz through gateTwist() for `duration`,
-/// the simulated base (ellipse_collision::test::BrakingBase) following the outputs late and braking
+/// the simulated base (core::SimulatedBase) following the outputs late and braking
 /// at its limits, its velocity now (as odometry gives it) the gate's BaseState. Contact is checked
 /// every 5 ms of the simulated motion against the obstacles where they are then.
 Drive drive(const std::vector<NamedEllipse>& links, const std::vector<Course>& course,
             const Twist& input, const BaseDynamics& dynamics, double duration,
             const GateSettings& s) {
   constexpr double kPeriod = 0.05;
-  ellipse_collision::test::BrakingBase base(dynamics, {}, input);  // cruising at the input
+  core::SimulatedBase base(dynamics, {}, input);  // cruising at the input
   Drive result;
   const auto worldLink = [&](const Ellipse& link) {
-    const ellipse_collision::test::BasePose& p = base.pose();
+    const core::PathPose& p = base.pose();
     return placeAt(link, {p.x, p.y}, p.yaw);
   };
   const auto obstacleAt = [&](const Course& c, double t) {
@@ -530,7 +530,7 @@ Drive drive(const std::vector<NamedEllipse>& links, const std::vector<Course>& c
   for (double t = 0.0; t < duration; t += kPeriod) {
     PathScene scene;
     scene.links = links;
-    const ellipse_collision::test::BasePose& p = base.pose();
+    const core::PathPose& p = base.pose();
     const double c = std::cos(p.yaw), sn = std::sin(p.yaw);
     for (const Course& o : course) {
       if (t < o.appears_s) continue;

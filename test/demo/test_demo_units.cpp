@@ -290,38 +290,42 @@ TEST(DemoArmGuard, EverySampleCoversWhereItsLinkGoesWithinItsStretch) {
   base.yaw = 0.7;
   const core::Twist twist{0.4, 0.1, -0.8};
   double worst_share = 0.0;  // largest displacement found / its bound
-  for (double clock = 0.0; clock < 77.0; clock += 0.61) {
-    const std::vector<ArmSample> sweep = armSweep(arm, joints, clock, base, twist, settings);
-    ASSERT_EQ(sweep.size(), 9u * arm.size());
-    EXPECT_EQ(sweep.front().name, "upper_arm@0");
-    EXPECT_EQ(sweep.back().name, "hand@8");
-    EXPECT_DOUBLE_EQ(sweep.back().to_s, 0.3);
-    for (const ArmSample& sample : sweep) {
-      const ArmLink& link = *std::find_if(arm.begin(), arm.end(),
-                                          [&](const ArmLink& l) { return l.name == sample.link; });
-      // Oracle: where points of the link really are, its frame from the chain at that time.
-      const auto pointAt = [&](double t, const Eigen::Vector2d& in_link) {
-        std::vector<double> q;
-        for (const SineMotion& j : joints) q.push_back(j.at(clock + t));
-        const Pose2D frame = linkPose(link, q);
-        const Eigen::Vector2d in_base = frame.position + Eigen::Rotation2Dd(frame.yaw) * in_link;
-        const Pose2D base_then = poseAfterArc(base, twist, t);
-        return Eigen::Vector2d(base_then.position + Eigen::Rotation2Dd(base_then.yaw) * in_base);
-      };
-      // The sampled ellipse is the link at time_s.
-      const Eigen::Vector2d centre = pointAt(sample.time_s, link.shape.center);
-      EXPECT_NEAR((sample.ellipse.center - centre).norm(), 0.0, 1e-9) << sample.name;
-      for (int k = 0; k <= 20; ++k) {
-        const double t = sample.from_s + (sample.to_s - sample.from_s) * k / 20;
-        for (int r = 0; r < 16; ++r) {
-          const double a = 2 * M_PI * r / 16;
-          const Eigen::Vector2d rim =
-              link.shape.center + Eigen::Rotation2Dd(link.shape.angle) *
-                                      Eigen::Vector2d(link.shape.radius_x * std::cos(a),
-                                                      link.shape.radius_y * std::sin(a));
-          const double moved = (pointAt(t, rim) - pointAt(sample.time_s, rim)).norm();
-          ASSERT_LE(moved, sample.sweep_m + 1e-12) << sample.name << " at " << t;
-          worst_share = std::max(worst_share, moved / sample.sweep_m);
+  // Forward along the sweep, and back along it (the arm retracing it).
+  for (const double direction : {1.0, -1.0}) {
+    for (double clock = 0.0; clock < 77.0; clock += 0.61) {
+      const std::vector<ArmSample> sweep =
+          armSweep(arm, joints, clock, direction, base, twist, settings);
+      ASSERT_EQ(sweep.size(), 9u * arm.size());
+      EXPECT_EQ(sweep.front().name, "upper_arm@0");
+      EXPECT_EQ(sweep.back().name, "hand@8");
+      EXPECT_DOUBLE_EQ(sweep.back().to_s, 0.3);
+      for (const ArmSample& sample : sweep) {
+        const ArmLink& link = *std::find_if(
+            arm.begin(), arm.end(), [&](const ArmLink& l) { return l.name == sample.link; });
+        // Oracle: where points of the link really are, its frame from the chain at that time.
+        const auto pointAt = [&](double t, const Eigen::Vector2d& in_link) {
+          std::vector<double> q;
+          for (const SineMotion& j : joints) q.push_back(j.at(clock + direction * t));
+          const Pose2D frame = linkPose(link, q);
+          const Eigen::Vector2d in_base = frame.position + Eigen::Rotation2Dd(frame.yaw) * in_link;
+          const Pose2D base_then = poseAfterArc(base, twist, t);
+          return Eigen::Vector2d(base_then.position + Eigen::Rotation2Dd(base_then.yaw) * in_base);
+        };
+        // The sampled ellipse is the link at time_s.
+        const Eigen::Vector2d centre = pointAt(sample.time_s, link.shape.center);
+        EXPECT_NEAR((sample.ellipse.center - centre).norm(), 0.0, 1e-9) << sample.name;
+        for (int k = 0; k <= 20; ++k) {
+          const double t = sample.from_s + (sample.to_s - sample.from_s) * k / 20;
+          for (int r = 0; r < 16; ++r) {
+            const double a = 2 * M_PI * r / 16;
+            const Eigen::Vector2d rim =
+                link.shape.center + Eigen::Rotation2Dd(link.shape.angle) *
+                                        Eigen::Vector2d(link.shape.radius_x * std::cos(a),
+                                                        link.shape.radius_y * std::sin(a));
+            const double moved = (pointAt(t, rim) - pointAt(sample.time_s, rim)).norm();
+            ASSERT_LE(moved, sample.sweep_m + 1e-12) << sample.name << " at " << t;
+            worst_share = std::max(worst_share, moved / sample.sweep_m);
+          }
         }
       }
     }
@@ -420,7 +424,7 @@ void sweepIntoAWall(const ArmGuardSettings& settings) {
     for (const core::Ellipse& link : linksAt(t)) {
       if (wall_there && core::overlap(link, wall)) ++unguarded_hits;
     }
-    const std::vector<ArmSample> sweep = armSweep(arm, joints, clock, base, still, settings);
+    const std::vector<ArmSample> sweep = armSweep(arm, joints, clock, 1.0, base, still, settings);
     ASSERT_FALSE(undecidedSample(sweep, settings.clearance_m, warning)) << "at " << t;
     const auto hold = firstHold(sweep, answer(sweep, world, warning), settings.clearance_m);
     if (hold) {

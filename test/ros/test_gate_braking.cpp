@@ -1,6 +1,6 @@
 // The braking rule through the real node (gate_braking.test), on simulated time, with a base that
 // moves as a real one: commands reach it 0.1 s late and it sheds speed at 0.8 m/s^2 and 2 rad/s^2
-// (test::BrakingBase, the same limits as the node's gate/ parameters), its velocity published as
+// (core::SimulatedBase, the same limits as the node's gate/ parameters), its velocity published as
 // odometry. Commands at 20 Hz; contact is checked every 5 ms of the motion.
 #include <dynamic_reconfigure/Reconfigure.h>
 #include <nav_msgs/Odometry.h>
@@ -8,7 +8,7 @@
 #include <algorithm>
 #include <iostream>
 
-#include "braking_base.h"
+#include "ellipse_collision/core/simulated_base.h"
 #include "gate_test_fixture.h"
 
 namespace ellipse_collision {
@@ -29,7 +29,7 @@ class BrakingGateTest : public GateTest {
     odom_pub_ = nh_.advertise<nav_msgs::Odometry>("/odom", 10);
     ASSERT_TRUE(test::waitUntil([&] { return odom_pub_.getNumSubscribers() > 0; }, 30.0));
     start_ = now_;
-    base_.emplace(kBase, test::BasePose{}, core::Twist{kCruise, 0.0, 0.0});
+    base_.emplace(kBase, core::PathPose{}, core::Twist{kCruise, 0.0, 0.0});
     pose_ = Pose();
   }
 
@@ -87,7 +87,7 @@ class BrakingGateTest : public GateTest {
   }
 
   ros::Publisher odom_pub_;
-  std::optional<test::BrakingBase> base_;
+  std::optional<core::SimulatedBase> base_;
   double start_{0.0};
   bool touched_{false};
   double touch_speed_{0.0};

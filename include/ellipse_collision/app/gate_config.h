@@ -50,4 +50,8 @@ constexpr double kMaxGateTurnRate = 20.0;  ///< [rad/s]; * horizon stays within 
 /// The first gate setting outside its range, its key as in YAML ("gate/stop_time"), or nothing.
 std::optional<FieldError> findInvalidGateSetting(const GateConfig& config);
 
+/// A core range violation (core::findInvalidGateSettings, core::findInvalidBaseDynamics) as the
+/// configuration error of the key `prefix` + its field ("gate/reaction_time").
+FieldError gateFieldError(const core::GateSettingViolation& v, const std::string& prefix = "gate/");
+
 }  // namespace ellipse_collision::app
