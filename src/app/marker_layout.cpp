@@ -185,163 +185,126 @@ void MarkerLayout::appendFills(std::size_t layer, const std::vector<char>& wante
   }
 }
 
-MarkerLayout::Changes MarkerLayout::update(const core::Scene& placed,
-                                           const std::vector<core::CollidingPair>& collisions,
-                                           const std::vector<core::NearPair>& warnings,
-                                           const std::set<std::string>& predicted) {
-  ++generation_;
-  std::unordered_set<std::string> colliding;
-  for (const core::CollidingPair& pair : collisions) colliding.insert({pair.name_a, pair.name_b});
-  std::unordered_set<std::string> warned;
-  for (const core::NearPair& pair : warnings) warned.insert({pair.name_a, pair.name_b});
-  // The highest-ranked state the ellipse qualifies for.
-  const auto stateOf = [&](const std::string& name) {
-    if (colliding.count(name)) return MarkerState::Collision;
-    if (predicted.count(name)) return MarkerState::Predicted;
-    if (warned.count(name)) return MarkerState::Warning;
-    return MarkerState::Free;
-  };
-  const auto layerOf = [](core::EllipseRole role) {
-    return role == core::EllipseRole::Link ? 0u : 1u;
-  };
+void MarkerLayout::Layer::begin(std::size_t count) {
+  const std::uint32_t wanted = bucketsFor(count, buckets);
+  // Every marker changes (or, at the first update, none exists yet): cut anew and send all, once
+  // the entries are where the scene has them now.
+  regroup = wanted != buckets || members.size() != kStateCount * wanted;
+  buckets = wanted;
+  dirty.assign(kStateCount * buckets, regroup ? 1 : 0);
+  seen = 0;
+}
 
-  std::array<std::size_t, kLayers> counts{};
-  for (std::size_t i = 0; i < placed.size(); ++i) {
-    if (placed.role(i) != core::EllipseRole::Query) ++counts[layerOf(placed.role(i))];
-  }
-  std::array<bool, kLayers> regroup{};
-  std::array<std::vector<char>, kLayers> dirty;  // by state index * B + cell
-  for (std::size_t layer = 0; layer < kLayers; ++layer) {
-    Layer& l = layers_[layer];
-    const std::uint32_t buckets = bucketsFor(counts[layer], l.buckets);
-    // Every marker changes (or, at the first update, none exists yet): cut anew and send all,
-    // below, once the entries are where the scene has them now.
-    regroup[layer] = buckets != l.buckets || l.members.size() != kStateCount * buckets;
-    l.buckets = buckets;
-    dirty[layer].assign(kStateCount * buckets, regroup[layer] ? 1 : 0);
-  }
-  const auto indexOf = [&](std::size_t layer, MarkerState state, std::uint32_t cell) {
-    return stateIndex(state) * layers_[layer].buckets + cell;
-  };
-  // In a layer cut anew everything is sent and grouped below: nothing to mark or move.
-  const auto markDirty = [&](std::size_t layer, MarkerState state, std::uint32_t cell) {
-    if (!regroup[layer]) dirty[layer][indexOf(layer, state, cell)] = 1;
-  };
-  const auto join = [&](std::size_t layer, Entry* entry) {
-    if (regroup[layer]) return;
-    layers_[layer].members[indexOf(layer, entry->state, entry->cell)].push_back(entry);
-  };
-  const auto leave = [&](std::size_t layer, Entry* entry) {
-    if (regroup[layer]) return;
-    std::vector<Entry*>& members =
-        layers_[layer].members[indexOf(layer, entry->state, entry->cell)];
-    const auto it = std::find(members.begin(), members.end(), entry);
-    *it = members.back();
-    members.pop_back();
-  };
-  std::array<std::size_t, kLayers> seen{};  // distinct entries met in this update
+// In a layer cut anew everything is sent and grouped at the end: nothing to mark or move.
+void MarkerLayout::Layer::markDirty(MarkerState state, std::uint32_t cell) {
+  if (!regroup) dirty[slotOf(state, cell)] = 1;
+}
 
-  std::array<std::vector<Entry*>, kLayers> positions;
-  for (std::size_t layer = 0; layer < kLayers; ++layer) positions[layer].reserve(counts[layer]);
-  for (std::size_t i = 0; i < placed.size(); ++i) {
-    const core::EllipseRole role = placed.role(i);
-    if (role == core::EllipseRole::Query) continue;
-    const std::string& name = placed.name(i);
-    const core::Ellipse& ellipse = placed.ellipse(i);
-    const std::size_t layer = layerOf(role);
-    Layer& l = layers_[layer];
-    const std::size_t position = positions[layer].size();
-    // Scenes mostly list the same names in the same order: try last cycle's entry at this place
-    // before the hash lookup.
-    Entry* entry = position < l.by_position.size() && l.by_position[position]->name == name
-                       ? l.by_position[position]
-                       : nullptr;
-    if (!entry) {
-      const auto found = l.entries.find(name);
-      if (found != l.entries.end()) entry = &found->second;
-    }
-    const MarkerState state = stateOf(name);
-    if (!entry) {
-      entry = &l.entries[name];
-      entry->name = name;
-      entry->ellipse = ellipse;
+void MarkerLayout::Layer::join(Entry* entry) {
+  if (!regroup) members[slotOf(entry->state, entry->cell)].push_back(entry);
+}
+
+void MarkerLayout::Layer::leave(Entry* entry) {
+  if (regroup) return;
+  std::vector<Entry*>& slot = members[slotOf(entry->state, entry->cell)];
+  const auto it = std::find(slot.begin(), slot.end(), entry);
+  *it = slot.back();
+  slot.pop_back();
+}
+
+std::size_t MarkerLayout::Layer::slotOf(MarkerState state, std::uint32_t cell) const {
+  return stateIndex(state) * buckets + cell;
+}
+
+MarkerLayout::Entry* MarkerLayout::meet(Layer& l, std::size_t position, const std::string& name,
+                                        const core::Ellipse& ellipse, MarkerState state) {
+  // Scenes mostly list the same names in the same order: try last cycle's entry at this place
+  // before the hash lookup.
+  Entry* entry = position < l.by_position.size() && l.by_position[position]->name == name
+                     ? l.by_position[position]
+                     : nullptr;
+  if (!entry) {
+    const auto found = l.entries.find(name);
+    if (found != l.entries.end()) entry = &found->second;
+  }
+  if (!entry) {
+    entry = &l.entries[name];
+    entry->name = name;
+    entry->ellipse = ellipse;
+    entry->state = state;
+    if (!l.regroup) entry->cell = l.partition.cellOf(ellipse.center);
+    l.markDirty(state, entry->cell);
+    l.join(entry);
+  } else if (l.regroup) {
+    entry->ellipse = ellipse;
+    entry->state = state;
+  } else if (entry->state != state || !sameEllipse(entry->ellipse, ellipse)) {
+    // An ellipse that moved into another cell leaves its old marker for that cell's.
+    const std::uint32_t cell =
+        entry->ellipse.center == ellipse.center ? entry->cell : l.partition.cellOf(ellipse.center);
+    l.markDirty(entry->state, entry->cell);
+    l.markDirty(state, cell);
+    if (entry->state != state || entry->cell != cell) {
+      l.leave(entry);
       entry->state = state;
-      if (!regroup[layer]) entry->cell = l.partition.cellOf(ellipse.center);
-      markDirty(layer, state, entry->cell);
-      join(layer, entry);
-    } else if (regroup[layer]) {
-      entry->ellipse = ellipse;
-      entry->state = state;
-    } else if (entry->state != state || !sameEllipse(entry->ellipse, ellipse)) {
-      // An ellipse that moved into another cell leaves its old marker for that cell's.
-      const std::uint32_t cell = entry->ellipse.center == ellipse.center
-                                     ? entry->cell
-                                     : l.partition.cellOf(ellipse.center);
-      markDirty(layer, entry->state, entry->cell);
-      markDirty(layer, state, cell);
-      if (entry->state != state || entry->cell != cell) {
-        leave(layer, entry);
-        entry->state = state;
-        entry->cell = cell;
-        join(layer, entry);
-      }
-      entry->ellipse = ellipse;
+      entry->cell = cell;
+      l.join(entry);
     }
-    if (entry->generation != generation_) ++seen[layer];
-    entry->generation = generation_;
-    positions[layer].push_back(entry);
+    entry->ellipse = ellipse;
+  }
+  if (entry->generation != generation_) ++l.seen;
+  entry->generation = generation_;
+  return entry;
+}
+
+void MarkerLayout::finishLayer(std::size_t layer, std::vector<Entry*> positions, Changes& changes) {
+  Layer& l = layers_[layer];
+  // When every entry was met in this update nothing went away: no pass over the namespace.
+  for (auto it = l.entries.begin(); l.seen != l.entries.size() && it != l.entries.end();) {
+    if (it->second.generation == generation_) {
+      ++it;
+      continue;
+    }
+    l.markDirty(it->second.state, it->second.cell);
+    l.leave(&it->second);
+    it = l.entries.erase(it);
+  }
+  l.by_position = std::move(positions);
+  if (l.regroup) {
+    std::vector<Eigen::Vector2d> centres;
+    centres.reserve(l.entries.size());
+    for (const auto& [name, entry] : l.entries) centres.push_back(entry.ellipse.center);
+    l.partition = core::MedianPartition(std::move(centres), l.buckets);
+    l.members.assign(kStateCount * l.buckets, {});
+    for (auto& [name, entry] : l.entries) {
+      entry.cell = l.partition.cellOf(entry.ellipse.center);
+      l.members[l.slotOf(entry.state, entry.cell)].push_back(&entry);
+    }
+    const std::vector<std::size_t> in_cell = ellipsesPerCell(l);
+    l.largest_cell_when_cut = *std::max_element(in_cell.begin(), in_cell.end());
+  } else {
+    recutCrowdedCells(l, l.dirty);
   }
 
-  Changes changes;
-  for (std::size_t layer = 0; layer < kLayers; ++layer) {
-    Layer& l = layers_[layer];
-    // When every entry was met in this update nothing went away: no pass over the namespace.
-    for (auto it = l.entries.begin(); seen[layer] != l.entries.size() && it != l.entries.end();) {
-      if (it->second.generation == generation_) {
-        ++it;
-        continue;
-      }
-      markDirty(layer, it->second.state, it->second.cell);
-      leave(layer, &it->second);
-      it = l.entries.erase(it);
+  const std::size_t first_sent = changes.fills.size();
+  appendFills(layer, l.dirty, changes.fills);
+  std::set<std::int32_t> sent;
+  for (std::size_t i = first_sent; i < changes.fills.size(); ++i) sent.insert(changes.fills[i].id);
+  for (auto it = l.shown.begin(); it != l.shown.end();) {
+    const std::optional<std::size_t> slot = slotOfFillId(*it, l.buckets);
+    const bool asked = l.regroup || !slot || l.dirty[*slot];
+    if (!asked || sent.count(*it)) {
+      ++it;
+      continue;
     }
-    l.by_position = std::move(positions[layer]);
-    if (regroup[layer]) {
-      std::vector<Eigen::Vector2d> centres;
-      centres.reserve(l.entries.size());
-      for (const auto& [name, entry] : l.entries) centres.push_back(entry.ellipse.center);
-      l.partition = core::MedianPartition(std::move(centres), l.buckets);
-      l.members.assign(kStateCount * l.buckets, {});
-      for (auto& [name, entry] : l.entries) {
-        entry.cell = l.partition.cellOf(entry.ellipse.center);
-        l.members[indexOf(layer, entry.state, entry.cell)].push_back(&entry);
-      }
-      const std::vector<std::size_t> in_cell = ellipsesPerCell(l);
-      l.largest_cell_when_cut = *std::max_element(in_cell.begin(), in_cell.end());
-    } else {
-      recutCrowdedCells(l, dirty[layer]);
-    }
-
-    const std::size_t first_sent = changes.fills.size();
-    appendFills(layer, dirty[layer], changes.fills);
-    std::set<std::int32_t> sent;
-    for (std::size_t i = first_sent; i < changes.fills.size(); ++i) {
-      sent.insert(changes.fills[i].id);
-    }
-    for (auto it = l.shown.begin(); it != l.shown.end();) {
-      const std::optional<std::size_t> slot = slotOfFillId(*it, l.buckets);
-      const bool asked = regroup[layer] || !slot || dirty[layer][*slot];
-      if (!asked || sent.count(*it)) {
-        ++it;
-        continue;
-      }
-      changes.fills.push_back(deletedFill(roleOf(layer), *it));
-      it = l.shown.erase(it);
-    }
-    l.shown.insert(sent.begin(), sent.end());
-    l.ever_sent.insert(sent.begin(), sent.end());
+    changes.fills.push_back(deletedFill(roleOf(layer), *it));
+    it = l.shown.erase(it);
   }
+  l.shown.insert(sent.begin(), sent.end());
+  l.ever_sent.insert(sent.begin(), sent.end());
+}
 
+void MarkerLayout::updateLines(const std::vector<core::NearPair>& warnings, Changes& changes) {
   std::map<std::int32_t, Points> lines_now;
   std::map<std::string, std::int32_t> ids_now;
   for (const core::NearPair& pair : warnings) {
@@ -369,6 +332,51 @@ MarkerLayout::Changes MarkerLayout::update(const core::Scene& placed,
   }
   lines_shown_ = std::move(lines_now);
   line_ids_ = std::move(ids_now);
+}
+
+MarkerLayout::Changes MarkerLayout::update(const core::Scene& placed,
+                                           const std::vector<core::CollidingPair>& collisions,
+                                           const std::vector<core::NearPair>& warnings,
+                                           const std::set<std::string>& predicted) {
+  ++generation_;
+  std::unordered_set<std::string> colliding;
+  for (const core::CollidingPair& pair : collisions) colliding.insert({pair.name_a, pair.name_b});
+  std::unordered_set<std::string> warned;
+  for (const core::NearPair& pair : warnings) warned.insert({pair.name_a, pair.name_b});
+  // The highest-ranked state the ellipse qualifies for.
+  const auto stateOf = [&](const std::string& name) {
+    if (colliding.count(name)) return MarkerState::Collision;
+    if (predicted.count(name)) return MarkerState::Predicted;
+    if (warned.count(name)) return MarkerState::Warning;
+    return MarkerState::Free;
+  };
+  const auto layerOf = [](core::EllipseRole role) {
+    return role == core::EllipseRole::Link ? 0u : 1u;
+  };
+
+  std::array<std::size_t, kLayers> counts{};
+  for (std::size_t i = 0; i < placed.size(); ++i) {
+    if (placed.role(i) != core::EllipseRole::Query) ++counts[layerOf(placed.role(i))];
+  }
+  for (std::size_t layer = 0; layer < kLayers; ++layer) layers_[layer].begin(counts[layer]);
+
+  // Each layer's entries in the order `placed` lists them: next update's fast path.
+  std::array<std::vector<Entry*>, kLayers> positions;
+  for (std::size_t layer = 0; layer < kLayers; ++layer) positions[layer].reserve(counts[layer]);
+  for (std::size_t i = 0; i < placed.size(); ++i) {
+    const core::EllipseRole role = placed.role(i);
+    if (role == core::EllipseRole::Query) continue;
+    const std::size_t layer = layerOf(role);
+    const std::string& name = placed.name(i);
+    positions[layer].push_back(
+        meet(layers_[layer], positions[layer].size(), name, placed.ellipse(i), stateOf(name)));
+  }
+
+  Changes changes;
+  for (std::size_t layer = 0; layer < kLayers; ++layer) {
+    finishLayer(layer, std::move(positions[layer]), changes);
+  }
+  updateLines(warnings, changes);
   return changes;
 }
 

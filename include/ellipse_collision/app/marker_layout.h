@@ -133,6 +133,19 @@ class MarkerLayout {
     /// The entries of each marker, by state index * B + cell: a changed marker is rebuilt from
     /// its own ellipses, not by a pass over the whole namespace.
     std::vector<std::vector<Entry*>> members;
+
+    // The update() under way: whether the layer is cut anew (all sent), the markers that
+    // changed (by slot), and the distinct entries met.
+    bool regroup{false};
+    std::vector<char> dirty;
+    std::size_t seen{0};
+
+    /// Starts an update of `count` ellipses: B for them, and whether the layer is cut anew.
+    void begin(std::size_t count);
+    std::size_t slotOf(MarkerState state, std::uint32_t cell) const;
+    void markDirty(MarkerState state, std::uint32_t cell);
+    void join(Entry* entry);   ///< into its marker's members (not while cut anew)
+    void leave(Entry* entry);  ///< out of its marker's members (not while cut anew)
   };
   static constexpr std::size_t kLayers = 2;  // links, obstacles
   using Points = std::pair<Eigen::Vector2d, Eigen::Vector2d>;  // a line's witness points
@@ -145,6 +158,15 @@ class MarkerLayout {
   /// recut()), and only that part's markers are marked in `dirty` (by state index * B + cell).
   static void recutCrowdedCells(Layer& layer, std::vector<char>& dirty);
 
+  /// The entry of `name`, found (at `position` as last time, else by name) or made, brought to
+  /// `ellipse` and `state` with the markers it leaves and joins marked.
+  Entry* meet(Layer& layer, std::size_t position, const std::string& name,
+              const core::Ellipse& ellipse, MarkerState state);
+  /// Ends a layer's update: drops the entries not met, cuts anew or recuts crowded cells, and
+  /// appends the changed markers (Show) and the emptied ones (Delete) to `changes`.
+  void finishLayer(std::size_t layer, std::vector<Entry*> positions, Changes& changes);
+  /// The clearance lines of `warnings`, as changes against those shown.
+  void updateLines(const std::vector<core::NearPair>& warnings, Changes& changes);
   /// Appends to `out` a Show for each non-empty slot of `layer` marked in `wanted`, in slot order.
   void appendFills(std::size_t layer, const std::vector<char>& wanted,
                    std::vector<FillChange>& out) const;
