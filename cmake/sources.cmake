@@ -66,6 +66,7 @@ set(ELLIPSE_COLLISION_APP_SOURCES
   src/app/obstacle_store.cpp
   src/app/obstacle_persistence.cpp
   src/app/obstacle_store_writer.cpp
+  src/app/obstacle_tracker.cpp
   src/app/path_request.cpp
   src/app/scan_name_keeper.cpp
   src/app/scan_obstacles.cpp

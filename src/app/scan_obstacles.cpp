@@ -43,6 +43,51 @@ SensorObstacles toSpecs(const core::ContourEllipses& fit, const std::string& fra
   return result;
 }
 
+/// `result.objects`: each contour's centroid and extent, and the ellipses whose first return is
+/// one of its returns.
+void addObjects(const std::vector<std::vector<core::SensorReturn>>& contours,
+                const core::ContourEllipses& fit, const std::vector<float>* ranges,
+                double join_distance, SensorObstacles& result) {
+  // A key in two contours (a cloud's angular bin holds points at several ranges) leaves the
+  // ellipse starting there in no object: it stands.
+  constexpr std::size_t kAmbiguous = static_cast<std::size_t>(-1);
+  std::unordered_map<std::size_t, std::size_t> contour_of_key;
+  result.objects.reserve(contours.size());
+  for (const std::vector<core::SensorReturn>& contour : contours) {
+    SensorObject object;
+    for (const core::SensorReturn& r : contour) {
+      object.centroid += r.point;
+      const auto [it, added] = contour_of_key.emplace(r.key, result.objects.size());
+      if (!added && it->second != result.objects.size()) it->second = kAmbiguous;
+    }
+    if (!contour.empty()) object.centroid /= static_cast<double>(contour.size());
+    for (const core::SensorReturn& r : contour) {
+      object.extent = std::max(object.extent, (r.point - object.centroid).norm());
+    }
+    if (ranges && !contour.empty() && !ranges->empty()) {
+      // The beams beside the contour's ends (keys are beam indices, on a ring).
+      const std::size_t n = ranges->size();
+      const auto hides = [&](const core::SensorReturn& end, std::size_t beside) {
+        const float r = (*ranges)[beside % n];
+        return std::isnan(r) || r < end.point.norm() - join_distance;
+      };
+      object.occluded = hides(contour.front(), contour.front().key + n - 1) ||
+                        hides(contour.back(), contour.back().key + 1);
+    }
+    result.objects.push_back(object);
+  }
+  for (std::size_t i = 0; i < fit.ellipses.size(); ++i) {
+    const auto found = contour_of_key.find(fit.ellipses[i].key);
+    if (found != contour_of_key.end() && found->second != kAmbiguous) {
+      result.objects[found->second].ellipses.push_back(i);
+    }
+  }
+  // Contours that got no ellipse (too few returns) are no object.
+  result.objects.erase(std::remove_if(result.objects.begin(), result.objects.end(),
+                                      [](const SensorObject& o) { return o.ellipses.empty(); }),
+                       result.objects.end());
+}
+
 }  // namespace
 
 std::optional<FieldError> findInvalidSetting(const ScanObstacleSettings& s) {
@@ -82,10 +127,12 @@ SensorObstacles scanObstacles(const std::vector<float>& ranges, double angle_min
   const auto contours =
       core::breakContours(view, settings.range_noise_sigma, settings.cluster_distance,
                           static_cast<std::size_t>(settings.min_cluster_points));
-  return toSpecs(
+  const core::ContourEllipses fit =
       core::contourEllipses(contours, view.free_space, settings.min_radius, split_hints,
-                            kHintMarginSigmas * settings.range_noise_sigma),
-      frame_id, settings, ranges.size());
+                            kHintMarginSigmas * settings.range_noise_sigma);
+  SensorObstacles result = toSpecs(fit, frame_id, settings, ranges.size());
+  addObjects(contours, fit, &ranges, settings.cluster_distance, result);
+  return result;
 }
 
 SensorObstacles cloudObstacles(const std::vector<Eigen::Vector3f>& points,
@@ -100,10 +147,12 @@ SensorObstacles cloudObstacles(const std::vector<Eigen::Vector3f>& points,
   const core::SensorView view = core::cloudView(band, settings.free_space_tolerance);
   const auto contours = core::cloudContours(view, settings.cluster_distance,
                                             static_cast<std::size_t>(settings.min_cluster_points));
-  return toSpecs(
+  const core::ContourEllipses fit =
       core::contourEllipses(contours, view.free_space, settings.min_radius, split_hints,
-                            kHintMarginSigmas * settings.range_noise_sigma),
-      frame_id, settings, core::kCloudBins);
+                            kHintMarginSigmas * settings.range_noise_sigma);
+  SensorObstacles result = toSpecs(fit, frame_id, settings, core::kCloudBins);
+  addObjects(contours, fit, nullptr, settings.cluster_distance, result);
+  return result;
 }
 
 }  // namespace ellipse_collision::app

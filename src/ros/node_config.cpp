@@ -501,9 +501,15 @@ app::ScanObstacleSettings parseScanObstacleSettings(const XmlRpcValue& params) {
     throw ConfigError("private namespace: expected a dict of parameters, got " +
                       describeValue(root));
   }
-  static const std::vector<std::string> kScanKeys = {
-      "cluster_distance",     "min_cluster_points", "min_radius", "range_noise_sigma",
-      "free_space_tolerance", "z_min",              "z_max",      "name_prefix"};
+  static const std::vector<std::string> kScanKeys = {"cluster_distance",
+                                                     "min_cluster_points",
+                                                     "min_radius",
+                                                     "range_noise_sigma",
+                                                     "free_space_tolerance",
+                                                     "z_min",
+                                                     "z_max",
+                                                     "name_prefix",
+                                                     "tracking"};
   if (const auto key = unknownKey(root, kScanKeys)) {
     throw ConfigError("parameter ~" + *key + ": unknown key (expected one of " +
                       app::joinText(kScanKeys, ", ") + ")");
@@ -539,6 +545,57 @@ app::ScanObstacleSettings loadScanObstacleSettings(const ros::NodeHandle& privat
   XmlRpcValue params;
   if (!ros::param::get(private_nh.getNamespace(), params)) params = XmlRpcValue();
   return parseScanObstacleSettings(params);
+}
+
+app::TrackingSettings parseTrackingSettings(const XmlRpcValue& params) {
+  app::TrackingSettings settings;
+  if (params.getType() != XmlRpcValue::TypeStruct || !params.hasMember("tracking")) {
+    return settings;
+  }
+  XmlRpcValue root = params["tracking"];
+  if (root.getType() != XmlRpcValue::TypeStruct) {
+    fail("parameter ~tracking", "tracking", "a dict", describeValue(root));
+  }
+  static const std::vector<std::string> kKeys = {"enabled",       "fixed_frame",   "max_speed",
+                                                 "max_size",      "confirm_count", "min_speed",
+                                                 "position_sigma"};
+  if (const auto key = unknownKey(root, kKeys)) {
+    throw ConfigError("parameter ~tracking/" + *key + ": unknown key (expected one of " +
+                      app::joinText(kKeys, ", ") + ")");
+  }
+  if (root.hasMember("enabled")) {
+    settings.enabled = readBool(root["enabled"], "parameter ~tracking/enabled", "tracking/enabled");
+  }
+  if (root.hasMember("fixed_frame")) {
+    settings.fixed_frame =
+        readString(root["fixed_frame"], "parameter ~tracking/fixed_frame", "tracking/fixed_frame");
+  }
+  for (const auto& [key, field] :
+       {std::pair<const char*, double*>{"max_speed", &settings.max_speed},
+        {"max_size", &settings.max_size},
+        {"min_speed", &settings.min_speed},
+        {"position_sigma", &settings.position_sigma}}) {
+    const std::string name = std::string("tracking/") + key;
+    if (root.hasMember(key)) *field = readNumber(root[key], "parameter ~" + name, name);
+  }
+  if (root.hasMember("confirm_count")) {
+    XmlRpcValue value = root["confirm_count"];
+    if (value.getType() != XmlRpcValue::TypeInt) {
+      fail("parameter ~tracking/confirm_count", "tracking/confirm_count", "an integer",
+           describeValue(value));
+    }
+    settings.confirm_count = static_cast<int&>(value);
+  }
+  if (const auto invalid = app::findInvalidSetting(settings)) {
+    fail("parameter ~" + invalid->key, invalid->key, invalid->expected, invalid->actual);
+  }
+  return settings;
+}
+
+app::TrackingSettings loadTrackingSettings(const ros::NodeHandle& private_nh) {
+  XmlRpcValue params;
+  if (!ros::param::get(private_nh.getNamespace(), params)) params = XmlRpcValue();
+  return parseTrackingSettings(params);
 }
 
 }  // namespace ellipse_collision

@@ -3,11 +3,13 @@
 #include <sensor_msgs/point_cloud2_iterator.h>
 
 #include <boost/make_shared.hpp>
+#include <cmath>
 #include <stdexcept>
 
 #include "ellipse_collision/app/collision_check.h"
 #include "ellipse_collision/ros/conversions.h"
 #include "ellipse_collision/ros/node_config.h"
+#include "ellipse_collision/ros/tf_lookup.h"
 
 namespace ellipse_collision {
 
@@ -41,7 +43,7 @@ app::SensorObstacles scanObstacles(const sensor_msgs::LaserScan& scan,
 }
 
 ScanObstaclesNode::ScanObstaclesNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
-    : nh_(nh), series_(loadScanObstacleSettings(private_nh)) {
+    : nh_(nh), series_(loadScanObstacleSettings(private_nh), loadTrackingSettings(private_nh)) {
   obstacles_pub_ = nh_.advertise<EllipseArray>("obstacles", 1);
   scan_sub_ = nh_.subscribe<sensor_msgs::LaserScan>("scan", 1, &ScanObstaclesNode::onScan, this);
   cloud_sub_ =
@@ -53,15 +55,50 @@ ScanObstaclesNode::ScanObstaclesNode(const ros::NodeHandle& nh, const ros::NodeH
                   << " m), min_radius " << s.min_radius << " m, free space up to "
                   << s.free_space_tolerance << " m before each return, cloud z within ["
                   << s.z_min << ", " << s.z_max << "] m");
+  const app::TrackingSettings& t = series_.tracking();
+  if (t.enabled) {
+    ROS_INFO_STREAM("scan_obstacles: tracking in "
+                    << t.fixed_frame << ": velocities once seen " << t.confirm_count
+                    << " times, at least " << t.min_speed << " m/s, things up to " << t.max_size
+                    << " m from their centre");
+  }
 }
 
 void ScanObstaclesNode::onScan(const sensor_msgs::LaserScan::ConstPtr& scan) {
-  publish(scanObstacles(*scan, series_), scan->header);
+  app::SensorObstacles obstacles = scanObstacles(*scan, series_);
+  track(obstacles, scan->header, false);
+  publish(obstacles, scan->header);
+}
+
+void ScanObstaclesNode::track(app::SensorObstacles& obstacles, const std_msgs::Header& header,
+                              bool cloud) {
+  if (!series_.tracking().enabled) return;
+  Eigen::Isometry3d fixed_from_sensor;
+  std::string error;
+  // The sensor's pose at the message's stamp: its own motion taken out of the centroids.
+  if (!lookupTransformSafe(tf_buffer_, series_.tracking().fixed_frame, header.frame_id,
+                           header.stamp, ros::Duration(0.05), fixed_from_sensor, &error)) {
+    ROS_WARN_STREAM_THROTTLE(5.0,
+                             "scan_obstacles: no velocities (every obstacle stands): " << error);
+    for (app::EllipseSpec& e : obstacles.ellipses) e.vx = e.vy = e.angular_velocity = 0.0;
+    return;
+  }
+  const Eigen::Vector3d x_axis = fixed_from_sensor.linear().col(0);
+  const core::PathPose sensor{fixed_from_sensor.translation().x(),
+                              fixed_from_sensor.translation().y(),
+                              std::atan2(x_axis.y(), x_axis.x()), 0.0};
+  if (cloud) {
+    series_.trackCloud(header.stamp.toSec(), sensor, obstacles);
+  } else {
+    series_.trackScan(header.stamp.toSec(), sensor, obstacles);
+  }
 }
 
 void ScanObstaclesNode::onCloud(const sensor_msgs::PointCloud2::ConstPtr& cloud) {
   try {
-    publish(series_.cloud(cloudPoints(*cloud), cloud->header.frame_id), cloud->header);
+    app::SensorObstacles obstacles = series_.cloud(cloudPoints(*cloud), cloud->header.frame_id);
+    track(obstacles, cloud->header, true);
+    publish(obstacles, cloud->header);
   } catch (const std::runtime_error& error) {
     ROS_WARN_STREAM_THROTTLE(5.0, "scan_obstacles: refused a cloud: " << error.what());
   }

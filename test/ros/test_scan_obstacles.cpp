@@ -2,7 +2,8 @@
 // LaserScan of a circle and a wall, with NaN, inf and out-of-range beams; the ellipses that reach
 // the collision node's ~obstacles (every hit point inside, sizes close to the shapes, the
 // sensor's header, stable names) and the collisions they cause with the configured links, on
-// ~collisions and in a ~check_collisions answer. The same client runs against the nodelet
+// ~collisions and in a ~check_collisions answer; a circle crossing carries its tracked velocity.
+// The same client runs against the nodelet
 // pipeline (test/ros/scan_pipeline_nodelets.test, with test_scan_pipeline_nodelets.cpp).
 #include <gtest/gtest.h>
 #include <ros/ros.h>
@@ -191,6 +192,74 @@ TEST(ScanObstacles, CheckCollisionsNamesTheScannedObstacles) {
   ASSERT_TRUE(circle_only.success) << circle_only.message;
   ASSERT_EQ(circle_only.collisions.size(), 1u);
   EXPECT_TRUE(collides(circle_only.collisions, "arm", kCircleName));
+}
+
+/// A scan of the wall and of a 0.2 m circle at (cx, cy) in the laser frame.
+sensor_msgs::LaserScan movingCircleScan(const ros::Time& stamp, double cx, double cy) {
+  sensor_msgs::LaserScan scan = syntheticScan(stamp);
+  constexpr double kRadius = 0.2;
+  for (std::size_t i = 0; i < scan.ranges.size(); ++i) {
+    if (i >= 10 && i <= 13) continue;  // the hostile beams stay
+    const double a = scan.angle_min + i * static_cast<double>(scan.angle_increment);
+    const double dx = std::cos(a), dy = std::sin(a);
+    std::optional<double> best;
+    const double b = dx * cx + dy * cy, disc = b * b - (cx * cx + cy * cy - kRadius * kRadius);
+    if (disc >= 0.0 && b - std::sqrt(disc) > 0.0) best = b - std::sqrt(disc);
+    if (dy < 0.0) {
+      const double t = kWallY / dy;
+      if (std::abs(t * dx) <= kWallHalfLength && (!best || t < *best)) best = t;
+    }
+    scan.ranges[i] = best ? static_cast<float>(*best) : std::numeric_limits<float>::infinity();
+  }
+  return scan;
+}
+
+TEST(ScanObstacles, AThingThatMovesCarriesItsVelocityAndTheWallStands) {
+  // A 0.2 m circle crossing 1.5 m ahead of the laser at 0.8 m/s (+y in the laser frame), 40 scans
+  // a second: tracked in odom through tf (laser turned 0.5 rad on base_link), its obstacle
+  // carries (0, 0.8) in the laser's axes; the wall (1 m from its centroid) stands.
+  ros::NodeHandle nh;
+  std::mutex mutex;
+  std::optional<EllipseArray> last;
+  auto obstacles_sub = nh.subscribe<EllipseArray>(test::nodeTopic("obstacles"), 100,
+                                                  [&](const EllipseArray::ConstPtr& msg) {
+                                                    std::lock_guard<std::mutex> lock(mutex);
+                                                    last = *msg;
+                                                  });
+  ros::Publisher scan_pub = nh.advertise<sensor_msgs::LaserScan>("/scan", 100);
+  ros::AsyncSpinner spinner(2);
+  spinner.start();
+  ASSERT_TRUE(test::waitUntil([&] { return scan_pub.getNumSubscribers() > 0; }, 30.0));
+  const ros::Time start = ros::Time::now();
+  constexpr double kSpeed = 0.8, kRate = 40.0;
+  constexpr int kScans = 48;
+  for (int k = 0; k < kScans; ++k) {
+    scan_pub.publish(
+        movingCircleScan(start + ros::Duration(k / kRate), kCircleX, -0.4 + kSpeed * k / kRate));
+    ros::Duration(1.0 / kRate).sleep();
+  }
+  const ros::Time last_stamp = start + ros::Duration((kScans - 1) / kRate);
+  ASSERT_TRUE(test::waitUntil(
+      [&] {
+        std::lock_guard<std::mutex> lock(mutex);
+        return last && last->header.stamp == last_stamp;
+      },
+      10.0))
+      << "the last scan's obstacles never arrived";
+  std::lock_guard<std::mutex> lock(mutex);
+  const double cy = -0.4 + kSpeed * (kScans - 1) / kRate;
+  const Ellipse* moving = nullptr;
+  const Ellipse* wall = nullptr;
+  for (const Ellipse& e : last->ellipses) {
+    if (std::hypot(e.x - kCircleX, e.y - cy) < 0.2) moving = &e;
+    if (std::abs(e.y - kWallY) < 0.1) wall = &e;
+  }
+  ASSERT_NE(moving, nullptr) << "no obstacle on the circle";
+  ASSERT_NE(wall, nullptr) << "no obstacle on the wall";
+  EXPECT_NEAR(moving->vx, 0.0, 0.15);
+  EXPECT_NEAR(moving->vy, kSpeed, 0.15);
+  EXPECT_EQ(wall->vx, 0.0);
+  EXPECT_EQ(wall->vy, 0.0);
 }
 
 }  // namespace

@@ -23,6 +23,54 @@ std::string settingsError(const XmlRpc::XmlRpcValue& params) {
   return "";
 }
 
+std::string trackingError(const XmlRpc::XmlRpcValue& params) {
+  try {
+    parseTrackingSettings(params);
+  } catch (const ConfigError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+TEST(TrackingSettings, DefaultsOverridesAndBadValuesNamingTheKey) {
+  const app::TrackingSettings defaults = parseTrackingSettings(XmlRpc::XmlRpcValue());
+  EXPECT_TRUE(defaults.enabled);
+  EXPECT_EQ(defaults.fixed_frame, "odom");
+  EXPECT_EQ(defaults.confirm_count, 8);
+  XmlRpc::XmlRpcValue params;
+  params["tracking"]["enabled"] = false;
+  params["tracking"]["fixed_frame"] = "map";
+  params["tracking"]["max_speed"] = 2;  // ints are numbers
+  params["tracking"]["confirm_count"] = 4;
+  const app::TrackingSettings set = parseTrackingSettings(params);
+  EXPECT_FALSE(set.enabled);
+  EXPECT_EQ(set.fixed_frame, "map");
+  EXPECT_EQ(set.max_speed, 2.0);
+  EXPECT_EQ(set.confirm_count, 4);
+  // The scan keys accept `tracking` beside them.
+  EXPECT_EQ(settingsError(params), "");
+
+  params = XmlRpc::XmlRpcValue();
+  params["tracking"]["min_speed"] = 4.0;  // above max_speed 3
+  EXPECT_EQ(trackingError(params),
+            "parameter ~tracking/min_speed, key 'tracking/min_speed': expected a number within "
+            "[0, 3], got 4");
+  params = XmlRpc::XmlRpcValue();
+  params["tracking"]["confirm_count"] = 1.5;
+  EXPECT_NE(trackingError(params).find("key 'tracking/confirm_count': expected an integer"),
+            std::string::npos);
+  params = XmlRpc::XmlRpcValue();
+  params["tracking"]["fixed_frame"] = "/odom";
+  EXPECT_NE(trackingError(params).find("key 'tracking/fixed_frame'"), std::string::npos);
+  params = XmlRpc::XmlRpcValue();
+  params["tracking"]["max_sped"] = 1.0;
+  EXPECT_NE(trackingError(params).find("parameter ~tracking/max_sped: unknown key"),
+            std::string::npos);
+  params = XmlRpc::XmlRpcValue();
+  params["tracking"] = 1.0;
+  EXPECT_NE(trackingError(params).find("expected a dict"), std::string::npos);
+}
+
 TEST(ScanObstacleSettings, DefaultsAndOverrides) {
   const app::ScanObstacleSettings defaults = parseScanObstacleSettings(XmlRpc::XmlRpcValue());
   EXPECT_EQ(defaults.cluster_distance, 0.1);

@@ -56,6 +56,17 @@ struct KeySpan {
   std::size_t last{0};
 };
 
+/// One contour (scans) or cluster (clouds) the ellipses were cut from: one thing the sensor sees,
+/// what ObstacleTracker follows from message to message.
+struct SensorObject {
+  Eigen::Vector2d centroid{0.0, 0.0};  ///< mean of its returns, sensor frame [m]
+  double extent{0.0};                  ///< farthest return from the centroid [m]
+  std::vector<std::size_t> ellipses;   ///< indices into SensorObstacles::ellipses
+  /// Scans: a beam beside either end returns nearer (by more than cluster_distance) or unknown
+  /// (NaN): something in front may hide part of it, so its centroid moves as the view does.
+  bool occluded{false};
+};
+
 /// Obstacle ellipses of one sensor message, in the sensor's frame.
 struct SensorObstacles {
   /// Names: name_prefix + the key of the ellipse's first return (scans: its beam index, so a
@@ -70,6 +81,8 @@ struct SensorObstacles {
   std::size_t key_ring{1};  ///< scans: the number of beams; clouds: core::kCloudBins
   /// The split hints this message did not need (core::ContourEllipses::unneeded_hints).
   std::vector<std::size_t> unneeded_hints;
+  /// The contours or clusters, each with the ellipses cut from it (every ellipse in one).
+  std::vector<SensorObject> objects;
 };
 
 /// A laser scan (sensor_msgs/LaserScan's fields, angles [rad], ranges [m]): its returns and

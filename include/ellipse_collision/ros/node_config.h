@@ -15,6 +15,7 @@
 #include "ellipse_collision/app/ellipse_spec.h"
 #include "ellipse_collision/app/gate_config.h"
 #include "ellipse_collision/app/link_fitting.h"
+#include "ellipse_collision/app/obstacle_tracker.h"
 #include "ellipse_collision/app/scan_obstacles.h"
 #include "ellipse_collision/app/tunable_settings.h"
 
@@ -104,5 +105,11 @@ app::ScanObstacleSettings parseScanObstacleSettings(const XmlRpc::XmlRpcValue& p
 
 /// Reads scan_obstacles' private namespace from the parameter server and parses it.
 app::ScanObstacleSettings loadScanObstacleSettings(const ros::NodeHandle& private_nh);
+
+/// Parses the `tracking` dict of scan_obstacles' private namespace (every key optional, defaults
+/// in app::TrackingSettings; ranges from app::findInvalidSetting()). Throws ConfigError naming
+/// the key.
+app::TrackingSettings parseTrackingSettings(const XmlRpc::XmlRpcValue& params);
+app::TrackingSettings loadTrackingSettings(const ros::NodeHandle& private_nh);
 
 }  // namespace ellipse_collision

@@ -3,6 +3,8 @@
 #include <ros/ros.h>
 #include <sensor_msgs/LaserScan.h>
 #include <sensor_msgs/PointCloud2.h>
+#include <tf2_ros/buffer.h>
+#include <tf2_ros/transform_listener.h>
 
 #include <Eigen/Core>
 #include <vector>
@@ -30,7 +32,9 @@ app::SensorObstacles scanObstacles(const sensor_msgs::LaserScan& scan,
 /// scan_obstacles: turns `scan` (sensor_msgs/LaserScan) and `cloud` (sensor_msgs/PointCloud2,
 /// points within a z band) into obstacle ellipses on `obstacles` (EllipseArray, header = the
 /// sensor's frame and stamp): every return inside an ellipse, no ellipse in the free part of any
-/// beam, each contour in as few ellipses as that allows (README: scan_obstacles).
+/// beam, each contour in as few ellipses as that allows (README: scan_obstacles). With `tracking`
+/// on (the default) each obstacle carries the velocity of the thing it was cut from, tracked in
+/// tracking/fixed_frame through tf (app::ObstacleTracker).
 class ScanObstaclesNode {
  public:
   /// Reads and validates the private parameters first; throws ConfigError naming the key.
@@ -39,6 +43,9 @@ class ScanObstaclesNode {
  private:
   void onScan(const sensor_msgs::LaserScan::ConstPtr& scan);
   void onCloud(const sensor_msgs::PointCloud2::ConstPtr& cloud);
+  /// Puts the tracked velocities on `obstacles` (the sensor's pose from tf at the stamp); without
+  /// that transform every obstacle stands, and the log says why.
+  void track(app::SensorObstacles& obstacles, const std_msgs::Header& header, bool cloud);
   void publish(const app::SensorObstacles& obstacles, const std_msgs::Header& header);
 
   ros::NodeHandle nh_;
@@ -46,6 +53,8 @@ class ScanObstaclesNode {
   ros::Publisher obstacles_pub_;
   ros::Subscriber scan_sub_;
   ros::Subscriber cloud_sub_;
+  tf2_ros::Buffer tf_buffer_;
+  tf2_ros::TransformListener tf_listener_{tf_buffer_};
 };
 
 }  // namespace ellipse_collision
