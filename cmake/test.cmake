@@ -134,7 +134,8 @@ ellipse_collision_add_gtest(test_app LIBRARIES ellipse_collision_app quadmath SO
   test/app/test_path_request.cpp
   test/app/test_ellipsoid_links.cpp
   test/app/test_ellipsoid_obstacles.cpp
-  test/app/test_obstacle_tracker.cpp)
+  test/app/test_obstacle_tracker.cpp
+  test/app/test_tracked_crossings.cpp)
 
 # scan_obstacles' guarantees on ray-cast scenes: coverage, free space, doorways, names, counts.
 ellipse_collision_add_gtest(test_scan_contours LIBRARIES ellipse_collision_app SOURCES
