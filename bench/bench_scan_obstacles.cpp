@@ -98,11 +98,12 @@ void setCounters(benchmark::State& state, std::size_t ellipses, double rate_hz) 
 }
 
 enum class ScanPath {
-  Old,    ///< the clustering before contours
-  Alone,  ///< app::scanObstacles(), each scan on its own
-  New,    ///< the node's path (app::SensorObstacleSeries): each scan cut first where the last one
-          ///< was, names carried over; the same scan again and again is its costliest case, every
-          ///< cut a hint whose merge is tried
+  Old,      ///< the clustering before contours
+  Alone,    ///< app::scanObstacles(), each scan on its own
+  New,      ///< the node's path (app::SensorObstacleSeries): each scan cut first where the last one
+            ///< was, names carried over; the same scan again and again is its costliest case, every
+            ///< cut a hint whose merge is tried
+  Tracked,  ///< the node's path with tracking (ObstacleTracker), 25 ms between scans
 };
 
 template <ScanPath kPath>
@@ -110,12 +111,14 @@ void scanBenchmark(benchmark::State& state, const sensor_msgs::LaserScan& scan) 
   const ellipse_collision::app::ScanObstacleSettings settings;
   ellipse_collision::app::SensorObstacleSeries series{settings};
   std::size_t ellipses = 0;
+  double stamp_s = 0.0;
   for (auto _ : state) {
-    const ellipse_collision::EllipseArray msg = ellipse_collision::toMsg(
+    ellipse_collision::app::SensorObstacles obstacles =
         kPath == ScanPath::Old     ? oldScanPath(scan)
         : kPath == ScanPath::Alone ? ellipse_collision::scanObstacles(scan, settings)
-                                   : ellipse_collision::scanObstacles(scan, series),
-        scan.header);
+                                   : ellipse_collision::scanObstacles(scan, series);
+    if (kPath == ScanPath::Tracked) series.trackScan(stamp_s += 0.025, {}, obstacles);
+    const ellipse_collision::EllipseArray msg = ellipse_collision::toMsg(obstacles, scan.header);
     ellipses = msg.ellipses.size();
     benchmark::DoNotOptimize(msg.ellipses.data());
   }
@@ -125,15 +128,23 @@ void scanBenchmark(benchmark::State& state, const sensor_msgs::LaserScan& scan) 
 void BM_Scan720ObjectRoom_Old(benchmark::State& state) { scanBenchmark<ScanPath::Old>(state, objectRoomScan()); }
 void BM_Scan720ObjectRoom_Alone(benchmark::State& state) { scanBenchmark<ScanPath::Alone>(state, objectRoomScan()); }
 void BM_Scan720ObjectRoom_New(benchmark::State& state) { scanBenchmark<ScanPath::New>(state, objectRoomScan()); }
+void BM_Scan720ObjectRoom_Tracked(benchmark::State& state) {
+  scanBenchmark<ScanPath::Tracked>(state, objectRoomScan());
+}
 void BM_Scan720DoorwayRoom_Old(benchmark::State& state) { scanBenchmark<ScanPath::Old>(state, doorwayRoomScan()); }
 void BM_Scan720DoorwayRoom_Alone(benchmark::State& state) { scanBenchmark<ScanPath::Alone>(state, doorwayRoomScan()); }
 void BM_Scan720DoorwayRoom_New(benchmark::State& state) { scanBenchmark<ScanPath::New>(state, doorwayRoomScan()); }
+void BM_Scan720DoorwayRoom_Tracked(benchmark::State& state) {
+  scanBenchmark<ScanPath::Tracked>(state, doorwayRoomScan());
+}
 BENCHMARK(BM_Scan720ObjectRoom_Old)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Scan720ObjectRoom_Alone)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Scan720ObjectRoom_New)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_Scan720ObjectRoom_Tracked)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Scan720DoorwayRoom_Old)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Scan720DoorwayRoom_Alone)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Scan720DoorwayRoom_New)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_Scan720DoorwayRoom_Tracked)->Unit(benchmark::kMicrosecond);
 
 template <bool kOld>
 void cloudBenchmark(benchmark::State& state) {
