@@ -28,6 +28,7 @@ ellipse_collision_add_gtest(test_core LIBRARIES ellipse_collision_core quadmath 
   test/core/test_pair_line_parser.cpp
   test/core/test_motion_line_parser.cpp
   test/core/test_unique_names.cpp
+  test/core/test_number_format.cpp
   test/core/test_ellipse_polygon.cpp
   test/support/contact_scale_oracle.cpp)
 # The early-out stages are internal to overlap(): their test reads src/core's detail headers.
@@ -120,7 +121,20 @@ target_compile_options(test_check_ellipses PRIVATE ${ELLIPSE_COLLISION_WARNINGS}
 # ---- application layer (test/app): no ROS library, transforms from a table --------------------
 ellipse_collision_add_gtest(test_app LIBRARIES ellipse_collision_app quadmath SOURCES
   test/app/test_ellipse_registry.cpp
-  test/app/test_field_validation.cpp
+  test/app/test_ellipse_spec.cpp
+  test/app/test_field_error.cpp
+  test/app/test_gate_config.cpp
+  test/app/test_velocity_command.cpp
+  test/app/test_transform_lookup.cpp
+  test/app/test_placement_cache.cpp
+  test/app/test_tunable_settings.cpp
+  test/app/test_scan_name_keeper.cpp
+  test/app/test_scan_cut_memory.cpp
+  test/app/test_obstacle_persistence.cpp
+  test/app/test_frame_placer.cpp
+  test/app/test_standing_obstacles.cpp
+  test/app/test_sensor_obstacle_series.cpp
+  test/app/test_stored_placement.cpp
   test/app/test_collision_check.cpp
   test/app/test_collision_monitor.cpp
   test/app/test_velocity_gate.cpp
