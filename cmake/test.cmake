@@ -38,7 +38,13 @@ ellipse_collision_add_gtest(test_scene_core LIBRARIES ellipse_collision_core SOU
   test/core/test_scene_check.cpp
   test/core/test_scene_broadphase.cpp
   test/core/test_scene_clearance.cpp
-  test/core/test_median_partition.cpp)
+  test/core/test_median_partition.cpp
+  test/core/test_scene.cpp
+  test/core/test_scene_entry_ref.cpp
+  test/core/test_scene_nearest.cpp
+  test/core/test_indexed_obstacles.cpp
+  test/core/test_pair_culling.cpp
+  test/core/test_pair_collector.cpp)
 # src/core for scene_check_detail.h: the scene tests force each culling kernel of the narrow phase.
 target_include_directories(test_scene_core PRIVATE ${PROJECT_SOURCE_DIR}/src/core)
 ellipse_collision_add_gtest(test_distance LIBRARIES ellipse_collision_core quadmath SOURCES
