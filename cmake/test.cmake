@@ -29,6 +29,16 @@ ellipse_collision_add_gtest(test_core LIBRARIES ellipse_collision_core quadmath 
   test/core/test_motion_line_parser.cpp
   test/core/test_unique_names.cpp
   test/core/test_number_format.cpp
+  test/core/test_number_fields.cpp
+  test/core/test_gate_action.cpp
+  test/core/test_free_space.cpp
+  test/core/test_path_motion.cpp
+  test/core/test_overlap.cpp
+  test/core/test_relative_shape.cpp
+  test/core/test_rotating_pair.cpp
+  test/core/test_rotating_separation.cpp
+  test/core/test_rotating_step_bounds.cpp
+  test/core/test_enclosing_ellipsoid.cpp
   test/core/test_ellipse_polygon.cpp
   test/support/contact_scale_oracle.cpp)
 # The early-out stages are internal to overlap(): their test reads src/core's detail headers.
@@ -105,8 +115,8 @@ ellipse_collision_add_gtest(test_velocity_gate LIBRARIES ellipse_collision_core 
   test/support/grazing_passes.cpp)
 target_include_directories(test_velocity_gate PRIVATE ${PROJECT_SOURCE_DIR}/src/core)
 
-# Ellipsoids: the shadow against projected surface samples, the minimum-volume fit against
-# closed forms and their affine images, in quad precision.
+# Ellipsoids: the shadow against projected surface samples and the link ellipsoids of URDF shapes
+# in quad precision (the minimum-volume fit is in test_core: test_enclosing_ellipsoid.cpp).
 ellipse_collision_add_gtest(test_ellipsoid LIBRARIES ellipse_collision_core quadmath SOURCES
   test/core/test_ellipsoid.cpp
   test/core/test_shape_hull.cpp)
