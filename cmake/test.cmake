@@ -174,7 +174,9 @@ ellipse_collision_add_gtest(test_ros_units LIBRARIES ellipse_collision_ros SOURC
   test/ros/test_conversions.cpp
   test/ros/test_node_config.cpp
   test/ros/test_collision_markers.cpp
-  test/ros/test_scan_obstacles_units.cpp)
+  test/ros/test_scan_obstacles_units.cpp
+  test/ros/test_gate_markers.cpp
+  test/ros/test_tf_lookup.cpp)
 
 # URDF links to ellipses (test/fixtures/), fit_link_ellipses' YAML read back by the node's parser.
 ellipse_collision_add_gtest(test_urdf_links LIBRARIES ellipse_collision_ros SOURCES
