@@ -56,25 +56,27 @@ Case randomCase(test::RandomSource& random) {
   return c;
 }
 
-/// The distance of the two rims sampled at 1,000 points each: never below the true distance.
+/// The distance of the two rims sampled at 360 points each: never below the true distance.
 Long sampledDistance(const Ellipse& a, const Ellipse& b) {
   const auto rim = [](const Ellipse& e) {
     std::vector<std::pair<Long, Long>> points;
     const Long c = std::cos(Long(e.angle)), sn = std::sin(Long(e.angle));
-    for (int k = 0; k < 1000; ++k) {
-      const Long s = 2 * 3.14159265358979323846L * k / 1000;
+    for (int k = 0; k < 360; ++k) {
+      const Long s = 2 * 3.14159265358979323846L * k / 360;
       const Long x = e.radius_x * std::cos(s), y = e.radius_y * std::sin(s);
       points.emplace_back(e.center.x() + c * x - sn * y, e.center.y() + sn * x + c * y);
     }
     return points;
   };
   Long best = 1e300L;
+  const auto rim_b = rim(b);
   for (const auto& pa : rim(a)) {
-    for (const auto& pb : rim(b)) {
-      best = std::min(best, std::hypot(pa.first - pb.first, pa.second - pb.second));
+    for (const auto& pb : rim_b) {
+      const Long dx = pa.first - pb.first, dy = pa.second - pb.second;
+      best = std::min(best, dx * dx + dy * dy);
     }
   }
-  return best;
+  return std::sqrt(best);
 }
 
 TEST(RotatingSeparation, ValueAndRatesAgreeWithTheSupportFunctionsInLongDouble) {
