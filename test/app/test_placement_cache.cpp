@@ -7,6 +7,7 @@
 #include <cstring>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "ellipse_collision/app/collision_check.h"
@@ -219,6 +220,93 @@ TEST(PlacementCache, ReusedProjectionsLookUpEachFrameOncePerCheck) {
   EXPECT_EQ(lookups["map"], 3);
   EXPECT_EQ(lookups["arm"], 3);
   EXPECT_EQ(lookups["cart"], 3);
+}
+
+TEST(PlacementCache, AProjectionIsReusedOnlyThroughTheVeryTransformItWasMadeWith) {
+  EllipseRegistry registry({circle("hand", "arm", 0.0, 0.0, 0.1)},
+                           {circle("rock", "map", 1.0, 0.0, 0.2)});
+  std::map<std::string, int> lookups;
+  PoseTable table{{{"map", Eigen::Isometry3d::Identity()}, {"arm", pose(0.5, 0.0, 0.25)}},
+                  &lookups};
+  PlacementCache cache;
+  cache.begin(registry, 0.0);
+  // Links before obstacles; indices in the registry's (name) order.
+  ASSERT_EQ(cache.placingOrder().size(), 2u);
+  EXPECT_EQ(cache.placingOrder()[0].entry->first, "hand");
+  EXPECT_EQ(cache.placingOrder()[0].role, core::EllipseRole::Link);
+  EXPECT_EQ(cache.placingOrder()[1].index, 1u);
+  EXPECT_EQ(cache.obstacleCount(), 1u);
+  FramePlacer first(TransformLookup(table), 0.0);
+  EXPECT_EQ(cache.reuse(0, first), nullptr) << "nothing stored yet";
+  const core::Ellipse kept{{7.0, 7.0}, 1.0, 1.0, 0.0};  // the cache keeps what it is given
+  cache.store(0, "arm", first.lookup("arm").fixed_from_frame, kept);
+
+  const auto reusedThrough = [&](double padding) {
+    cache.begin(registry, padding);
+    FramePlacer placer(TransformLookup(table), padding);
+    return cache.reuse(0, placer);
+  };
+  const core::Ellipse* reused = reusedThrough(0.0);
+  ASSERT_NE(reused, nullptr) << "the same transform, bit for bit";
+  EXPECT_EQ(reused->center, kept.center);
+  table.poses["arm"].translation().x() = std::nextafter(0.5, 1.0);
+  EXPECT_EQ(reusedThrough(0.0), nullptr) << "moved by one ulp";
+  table.poses["arm"] = pose(0.5, 0.0, 0.25);
+  EXPECT_NE(reusedThrough(0.0), nullptr) << "back where it was projected";
+  EXPECT_EQ(reusedThrough(0.01), nullptr) << "another padding forgets every projection";
+  EXPECT_EQ(reusedThrough(0.0), nullptr) << "and it stays forgotten";
+
+  // A registry change forgets too.
+  cache.begin(registry, 0.0);
+  FramePlacer again(TransformLookup(table), 0.0);
+  cache.store(0, "arm", again.lookup("arm").fixed_from_frame, kept);
+  EXPECT_NE(reusedThrough(0.0), nullptr);
+  ASSERT_EQ(registry.addObstacles({circle("late", "map", 3.0, 0.0, 0.2)}, "obstacles"), "");
+  EXPECT_EQ(reusedThrough(0.0), nullptr);
+}
+
+TEST(PlacementCache, AFrameThatIsStaleNowIsNotReusedThroughItsOldTransform) {
+  EllipseRegistry registry({circle("hand", "arm", 0.0, 0.0, 0.1)}, {});
+  const auto stamped = [](double stamp) {
+    return TransformLookup([stamp](const std::string&) {
+      FrameTransform transform;
+      transform.ok = true;
+      transform.stamp_s = stamp;
+      return transform;
+    });
+  };
+  PlacementCache cache;
+  cache.begin(registry, 0.0);
+  FramePlacer fresh(stamped(10.0), 0.0, Freshness{0.5, 10.0});
+  cache.store(0, "arm", fresh.lookup("arm").fixed_from_frame, core::Ellipse{});
+  cache.begin(registry, 0.0);
+  FramePlacer still_fresh(stamped(10.0), 0.0, Freshness{0.5, 10.25});
+  EXPECT_NE(cache.reuse(0, still_fresh), nullptr);
+  cache.begin(registry, 0.0);
+  FramePlacer stale(stamped(10.0), 0.0, Freshness{0.5, 11.0});
+  EXPECT_EQ(cache.reuse(0, stale), nullptr) << "the same pose, but too old now";
+}
+
+TEST(PlacementCache, OnlyACompletePlacementOfThisRegistryIsRecycled) {
+  EllipseRegistry registry({circle("hand", "arm", 0.0, 0.0, 0.1)},
+                           {circle("rock", "map", 1.0, 0.0, 0.2)});
+  PlacementCache cache;
+  cache.begin(registry, 0.0);
+  core::Scene stranger;
+  stranger.push_back("hand", core::EllipseRole::Link, core::Ellipse{});
+  stranger.push_back("rock", core::EllipseRole::Obstacle, core::Ellipse{});
+  cache.recycle(std::move(stranger));
+  EXPECT_TRUE(cache.takeRecycled().empty()) << "the right size, but not seen produced";
+  core::Scene placed;
+  placed.push_back("hand", core::EllipseRole::Link, core::Ellipse{});
+  placed.push_back("rock", core::EllipseRole::Obstacle, core::Ellipse{});
+  cache.produced(placed);
+  cache.recycle(std::move(placed));
+  cache.begin(registry, 0.0);
+  const core::Scene recycled = cache.takeRecycled();
+  ASSERT_EQ(recycled.size(), 2u);
+  EXPECT_EQ(recycled.name(1), "rock");
+  EXPECT_TRUE(cache.takeRecycled().empty()) << "taken once";
 }
 
 }  // namespace
