@@ -1,7 +1,8 @@
-// The velocity gate's application layer: gateOnScene() (the
-// scene moved into the robot frame, the obstacles pre-filtered, the answer put back into the fixed
-// frame) against core::gateTwist() on the whole scene built by hand in the robot frame, and the
-// monitor's rules (disabled, silence, incomplete data, obstacles on moving frames).
+// The velocity gate's application layer: gateOnScene() (the scene moved into the robot frame, the
+// obstacles pre-filtered, the answer put back into the fixed frame) against core::gateTwist() on
+// the whole scene built by hand in the robot frame, and the monitor's rules (disabled, silence,
+// incomplete data, obstacles on moving frames). (Its settings and command rules:
+// test_gate_config.cpp, test_velocity_command.cpp.)
 #include <gtest/gtest.h>
 
 #include <cmath>

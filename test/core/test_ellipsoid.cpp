@@ -42,14 +42,13 @@ Eigen::Isometry3d randomPose(RandomSource& random, double reach) {
 
 struct ShadowRecord {
   int shadows{0};
-  double worst_outside{-1.0};   // largest (form - 1) of a projected surface point, > 0 would fail
-  double worst_slack{0.0};      // largest 1 - form of the support points: how far from touching
+  double worst_outside{-1.0};  // largest (form - 1) of a projected surface point, > 0 would fail
+  double worst_slack{0.0};    // largest 1 - form of the support points: how far from touching
   double worst_own_slack{0.0};  // ... less what the rounding of the centre to a double costs
   ~ShadowRecord() {
-    std::printf(
-        "[ record   ] shadows: %d, worst surface-sample form - 1 = %.3g, worst support "
-        "slack = %.3g (%.3g beyond the centre's rounding)\n",
-        shadows, worst_outside, worst_slack, worst_own_slack);
+    std::printf("[ record   ] shadows: %d, worst surface-sample form - 1 = %.3g, worst support "
+                "slack = %.3g (%.3g beyond the centre's rounding)\n",
+                shadows, worst_outside, worst_slack, worst_own_slack);
   }
 };
 
@@ -61,12 +60,13 @@ void expectExactShadow(const Ellipsoid& e, const Eigen::Isometry3d& pose, Random
   const ProjectionResult shadow = shadowOnPlane(e, pose, "e");
   ASSERT_TRUE(shadow.ok()) << shadow.error;
   ++record.shadows;
-  const ellipse_collision::test::ShadowAgreement agreement = ellipse_collision::test::compareShadow(
-      shadow.ellipse, ellipse_collision::test::placeInQuad(e, pose), random);
+  const ellipse_collision::test::ShadowAgreement agreement =
+      ellipse_collision::test::compareShadow(shadow.ellipse,
+                                             ellipse_collision::test::placeInQuad(e, pose), random);
   record.worst_outside = std::max(record.worst_outside, agreement.worst_outside);
   record.worst_slack = std::max(record.worst_slack, agreement.worst_slack);
-  record.worst_own_slack =
-      std::max(record.worst_own_slack, agreement.worst_slack - (agreement.allowed_slack - 1e-9));
+  record.worst_own_slack = std::max(record.worst_own_slack,
+                                    agreement.worst_slack - (agreement.allowed_slack - 1e-9));
   ASSERT_LE(agreement.worst_outside, 0.0) << "a surface sample outside the shadow";
   ASSERT_LE(agreement.worst_support_outside, 0.0) << "a support point outside the shadow";
   ASSERT_LE(agreement.worst_slack, agreement.allowed_slack)
@@ -145,9 +145,9 @@ TEST(EllipsoidShadow, NeedleTooThinToCertifyIsRefusedAndOneJustBelowContainsItsS
   Ellipsoid needle;
   needle.radii = Vec3(1e9, 1e-9, 1e-9);
   const ProjectionResult refused = shadowOnPlane(needle, Eigen::Isometry3d::Identity(), "needle");
-  EXPECT_EQ(
-      refused.error.rfind("ellipsoid 'needle': its shadow is too thin to certify (axis ratio ", 0),
-      0u)
+  EXPECT_EQ(refused.error.rfind("ellipsoid 'needle': its shadow is too thin to certify (axis ratio ",
+                                0),
+            0u)
       << refused.error;
   // At an axis ratio of 1e16 it is certified, grown by at most a few percent, and still holds
   // every projected surface sample (the support slack is the growth, not 1e-9).
