@@ -28,6 +28,17 @@ ellipse_collision_add_gtest(test_core LIBRARIES ellipse_collision_core quadmath 
   test/core/test_pair_line_parser.cpp
   test/core/test_motion_line_parser.cpp
   test/core/test_unique_names.cpp
+  test/core/test_number_format.cpp
+  test/core/test_number_fields.cpp
+  test/core/test_gate_action.cpp
+  test/core/test_free_space.cpp
+  test/core/test_path_motion.cpp
+  test/core/test_overlap.cpp
+  test/core/test_relative_shape.cpp
+  test/core/test_rotating_pair.cpp
+  test/core/test_rotating_separation.cpp
+  test/core/test_rotating_step_bounds.cpp
+  test/core/test_enclosing_ellipsoid.cpp
   test/core/test_ellipse_polygon.cpp
   test/support/contact_scale_oracle.cpp)
 # The early-out stages are internal to overlap(): their test reads src/core's detail headers.
@@ -37,7 +48,13 @@ ellipse_collision_add_gtest(test_scene_core LIBRARIES ellipse_collision_core SOU
   test/core/test_scene_check.cpp
   test/core/test_scene_broadphase.cpp
   test/core/test_scene_clearance.cpp
-  test/core/test_median_partition.cpp)
+  test/core/test_median_partition.cpp
+  test/core/test_scene.cpp
+  test/core/test_scene_entry_ref.cpp
+  test/core/test_scene_nearest.cpp
+  test/core/test_indexed_obstacles.cpp
+  test/core/test_pair_culling.cpp
+  test/core/test_pair_collector.cpp)
 # src/core for scene_check_detail.h: the scene tests force each culling kernel of the narrow phase.
 target_include_directories(test_scene_core PRIVATE ${PROJECT_SOURCE_DIR}/src/core)
 ellipse_collision_add_gtest(test_distance LIBRARIES ellipse_collision_core quadmath SOURCES
@@ -98,8 +115,8 @@ ellipse_collision_add_gtest(test_velocity_gate LIBRARIES ellipse_collision_core 
   test/support/grazing_passes.cpp)
 target_include_directories(test_velocity_gate PRIVATE ${PROJECT_SOURCE_DIR}/src/core)
 
-# Ellipsoids: the shadow against projected surface samples, the minimum-volume fit against
-# closed forms and their affine images, in quad precision.
+# Ellipsoids: the shadow against projected surface samples and the link ellipsoids of URDF shapes
+# in quad precision (the minimum-volume fit is in test_core: test_enclosing_ellipsoid.cpp).
 ellipse_collision_add_gtest(test_ellipsoid LIBRARIES ellipse_collision_core quadmath SOURCES
   test/core/test_ellipsoid.cpp
   test/core/test_shape_hull.cpp)
@@ -120,7 +137,20 @@ target_compile_options(test_check_ellipses PRIVATE ${ELLIPSE_COLLISION_WARNINGS}
 # ---- application layer (test/app): no ROS library, transforms from a table --------------------
 ellipse_collision_add_gtest(test_app LIBRARIES ellipse_collision_app quadmath SOURCES
   test/app/test_ellipse_registry.cpp
-  test/app/test_field_validation.cpp
+  test/app/test_ellipse_spec.cpp
+  test/app/test_field_error.cpp
+  test/app/test_gate_config.cpp
+  test/app/test_velocity_command.cpp
+  test/app/test_transform_lookup.cpp
+  test/app/test_placement_cache.cpp
+  test/app/test_tunable_settings.cpp
+  test/app/test_scan_name_keeper.cpp
+  test/app/test_scan_cut_memory.cpp
+  test/app/test_obstacle_persistence.cpp
+  test/app/test_frame_placer.cpp
+  test/app/test_standing_obstacles.cpp
+  test/app/test_sensor_obstacle_series.cpp
+  test/app/test_stored_placement.cpp
   test/app/test_collision_check.cpp
   test/app/test_collision_monitor.cpp
   test/app/test_velocity_gate.cpp
@@ -146,7 +176,9 @@ ellipse_collision_add_gtest(test_ros_units LIBRARIES ellipse_collision_ros SOURC
   test/ros/test_conversions.cpp
   test/ros/test_node_config.cpp
   test/ros/test_collision_markers.cpp
-  test/ros/test_scan_obstacles_units.cpp)
+  test/ros/test_scan_obstacles_units.cpp
+  test/ros/test_gate_markers.cpp
+  test/ros/test_tf_lookup.cpp)
 
 # URDF links to ellipses (test/fixtures/), fit_link_ellipses' YAML read back by the node's parser.
 ellipse_collision_add_gtest(test_urdf_links LIBRARIES ellipse_collision_ros SOURCES

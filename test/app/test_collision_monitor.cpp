@@ -291,16 +291,6 @@ TEST(CollisionMonitor, RetunedSettingsPassTheStartUpRulesAndTakeEffectAtTheNextC
   EXPECT_EQ(monitor.settings().rate_hz, 2.0);
 }
 
-TEST(TunableSettings, TheRangeRuleIsTheOneTheStartUpUses) {
-  EXPECT_FALSE(findOutsideSettingRange("rate", 0.0, kMinRateHz, kMaxRateHz, true));
-  EXPECT_EQ(findOutsideSettingRange("rate", 1e-4, kMinRateHz, kMaxRateHz, true)->expected,
-            "0 or a number within [0.001, 1000]");
-  EXPECT_EQ(findOutsideSettingRange("rate", -1.0, kMinRateHz, kMaxRateHz, true)->expected,
-            "a finite number >= 0");
-  EXPECT_EQ(findNegativeSetting("warning_distance", INFINITY)->actual, "inf");
-  EXPECT_FALSE(findInvalidTunable(TunableSettings{}));
-}
-
 TEST(CollisionMonitor, ATimeJumpBackIsPassedOnAndExpiredObstaclesDropped) {
   MonitorSettings settings = mapSettings();
   settings.obstacle_timeout_s = 0.5;

@@ -327,46 +327,6 @@ TEST_F(StoreDirectory, LoadUsesEachFileOfThisLaunchAndSaysWhyAnotherIsLeftOut) {
   EXPECT_NE(corrupt.notes[0].text.find("is corrupt"), std::string::npos);
 }
 
-TEST_F(StoreDirectory, PersistenceWritesTheRecordOrTheWholeStoreCountingFromTheLoadedRevision) {
-  EllipseRegistry live({spec("arm", "map", 0.0)}, {});
-  ObstaclePersistence persistence(path_, "launch", 7);
-  ASSERT_TRUE(persistence.enabled());
-  ASSERT_EQ(live.addObstacles({spec("crate", "map", 1.0)}, "o"), "");
-  ASSERT_EQ(persistence.afterServiceCall(live, false), "");
-  StoredObstacles record, store;
-  ASSERT_TRUE(test::readStoredFile(serviceRecordPath(path_), record));
-  EXPECT_FALSE(test::readStoredFile(path_, store)) << "a service-only call leaves the store alone";
-  EXPECT_EQ(record.session, "launch");
-  EXPECT_EQ(record.service_revision, 8u);
-  ASSERT_EQ(record.service.size(), 1u);
-  EXPECT_EQ(record.service[0].name, "crate");
-
-  ASSERT_EQ(live.replaceTopicObstacles({spec("rock", "map", 2.0)}, "e", 5.0), "");
-  persistence.topicChanged();
-  EXPECT_FALSE(test::readStoredFile(path_, store)) << "a topic message waits for the periodic write";
-  persistence.writeIfBehind(live);
-  persistence.flush();
-  ASSERT_TRUE(test::readStoredFile(path_, store));
-  EXPECT_EQ(store.service_revision, 8u);
-  ASSERT_EQ(store.topic.size(), 1u);
-  EXPECT_EQ(store.topic[0].name, "rock");
-
-  ASSERT_EQ(live.removeObstacles({"rock"}, "n"), "");
-  ASSERT_EQ(persistence.afterServiceCall(live, true), "");
-  ASSERT_TRUE(test::readStoredFile(path_, store)) << "removing a topic obstacle writes the whole store";
-  EXPECT_EQ(store.service_revision, 9u);
-  EXPECT_TRUE(store.topic.empty());
-  EXPECT_EQ(store.service.size(), 1u);
-
-  ObstaclePersistence off("", "launch", 3);
-  EXPECT_FALSE(off.enabled());
-  EXPECT_EQ(off.afterServiceCall(live, true), "");
-  EXPECT_EQ(off.serviceRevision(), 4u);
-  off.topicChanged();
-  off.writeIfBehind(live);
-  EXPECT_EQ(off.lastError(), "");
-}
-
 /// The node's way of keeping the store (app::ObstaclePersistence, as CollisionNode uses it),
 /// against a live registry: service calls that change only service obstacles write the record,
 /// one that removes a topic obstacle writes the whole store, topic messages write the whole store

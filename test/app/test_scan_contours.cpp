@@ -20,7 +20,6 @@
 #include <string>
 #include <vector>
 
-#include "ellipse_collision/app/scan_name_keeper.h"
 #include "ellipse_collision/app/scan_obstacles.h"
 #include "ellipse_collision/app/sensor_obstacle_series.h"
 #include "ellipse_collision/core/scan_contours.h"
@@ -525,52 +524,6 @@ TEST(ScanContinuity, WhereTheSensorMovesTheScanIsSplitAfresh) {
     EXPECT_LE(kept, alone * 5 / 4) << "speed " << speed;
     EXPECT_LE(most_kept, most_alone * 3 / 2) << "speed " << speed;
   }
-}
-
-TEST(ScanNameKeeper, ASplitKeepsTheNameWhereMostBeamsStayAndWrapsRoundTheScanStart) {
-  EXPECT_EQ(sharedKeys({100, 150}, {120, 200}, 720), 31u);
-  EXPECT_EQ(sharedKeys({700, 20}, {0, 10}, 720), 11u);   // across the scan's start
-  EXPECT_EQ(sharedKeys({700, 20}, {710, 5}, 720), 16u);  // both across it
-  EXPECT_EQ(sharedKeys({100, 150}, {151, 200}, 720), 0u);
-
-  const auto obstacles = [](std::vector<std::pair<std::string, KeySpan>> named) {
-    SensorObstacles o;
-    o.key_ring = 720;
-    for (const auto& [name, span] : named) {
-      EllipseSpec spec;
-      spec.name = name;
-      spec.frame_id = "laser";
-      o.ellipses.push_back(spec);
-      o.spans.push_back(span);
-    }
-    return o;
-  };
-  ScanNameKeeper keeper;
-  SensorObstacles first = obstacles({{"scan_100", {100, 150}}, {"scan_700", {700, 20}}});
-  keeper.rename(first);
-  EXPECT_EQ(first.ellipses[0].name, "scan_100");
-  // The stretch 100-150 is split, the scan-start contour's first beam moves to 702.
-  SensorObstacles second = obstacles(
-      {{"scan_100", {100, 119}}, {"scan_120", {120, 150}}, {"scan_702", {702, 21}}});
-  keeper.rename(second);
-  EXPECT_EQ(second.ellipses[0].name, "scan_100_2");  // its first-beam name is held by 120-150
-  EXPECT_EQ(second.ellipses[1].name, "scan_100");    // most of the old stretch's beams
-  EXPECT_EQ(second.ellipses[2].name, "scan_700");
-  EXPECT_EQ(keeper.namesDropped(), 0u);
-  // Far from anything it was: a new name; the old ones are gone.
-  SensorObstacles third = obstacles({{"scan_300", {300, 310}}});
-  keeper.rename(third);
-  EXPECT_EQ(third.ellipses[0].name, "scan_300");
-  EXPECT_EQ(keeper.namesDropped(), 3u);
-  // Another beam count is another sensor: no name is carried over.
-  SensorObstacles other = obstacles({{"scan_300", {301, 310}}});
-  other.key_ring = 360;
-  keeper.rename(other);
-  EXPECT_EQ(other.ellipses[0].name, "scan_300");
-  other = obstacles({{"scan_5", {0, 30}}});
-  other.key_ring = 360;
-  keeper.rename(other);
-  EXPECT_EQ(other.ellipses[0].name, "scan_5");  // 301-310 shares nothing with 0-30
 }
 
 TEST(CloudContours, RoomCloudOf100000PointsKeepsEveryGuarantee) {

@@ -1,7 +1,8 @@
-// The velocity gate's application layer: its settings and command rules, gateOnScene() (the
-// scene moved into the robot frame, the obstacles pre-filtered, the answer put back into the fixed
-// frame) against core::gateTwist() on the whole scene built by hand in the robot frame, and the
-// monitor's rules (disabled, silence, incomplete data, obstacles on moving frames).
+// The velocity gate's application layer: gateOnScene() (the scene moved into the robot frame, the
+// obstacles pre-filtered, the answer put back into the fixed frame) against core::gateTwist() on
+// the whole scene built by hand in the robot frame, and the monitor's rules (disabled, silence,
+// incomplete data, obstacles on moving frames). (Its settings and command rules:
+// test_gate_config.cpp, test_velocity_command.cpp.)
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -18,52 +19,6 @@ namespace ellipse_collision::app {
 namespace {
 
 using test::circle;
-
-TEST(GateSettings, DefaultsAreValidAndEachRangeIsRefusedNamingTheKey) {
-  EXPECT_FALSE(findInvalidGateSetting(GateConfig()));
-  const auto refused = [](void (*change)(GateConfig&)) {
-    GateConfig config;
-    change(config);
-    const auto invalid = findInvalidGateSetting(config);
-    return invalid ? invalid->key + " = " + invalid->actual : std::string("accepted");
-  };
-  EXPECT_EQ(refused([](GateConfig& c) { c.timing.horizon = 0.0; }), "gate/horizon = 0");
-  EXPECT_EQ(refused([](GateConfig& c) { c.timing.horizon = NAN; }), "gate/horizon = nan");
-  EXPECT_EQ(refused([](GateConfig& c) { c.timing.time_before_collision = 4.0; }),
-            "gate/time_before_collision = 4");
-  EXPECT_EQ(refused([](GateConfig& c) { c.timing.stop_time = 2.0; }), "gate/stop_time = 2");
-  EXPECT_EQ(refused([](GateConfig& c) { c.timing.margin = -0.1; }), "gate/margin = -0.1");
-  EXPECT_EQ(refused([](GateConfig& c) { c.timing.resolution = 0.0; }), "gate/resolution = 0");
-  EXPECT_EQ(refused([](GateConfig& c) { c.cmd_vel_timeout_s = INFINITY; }),
-            "gate/cmd_vel_timeout = inf");
-  EXPECT_EQ(refused([](GateConfig& c) { c.max_linear_speed = 0.0; }), "gate/max_linear_speed = 0");
-  EXPECT_EQ(refused([](GateConfig& c) { c.max_angular_speed = 21.0; }),
-            "gate/max_angular_speed = 21");
-  EXPECT_EQ(refused([](GateConfig& c) { c.robot_frame = "/base_link"; }),
-            "gate/robot_frame = '/base_link'");
-  EXPECT_EQ(refused([](GateConfig& c) { c.robot_frame = ""; }), "gate/robot_frame = ''");
-}
-
-TEST(GateCommandRule, NonFiniteOrAbsurdComponentsAreNamed) {
-  const GateConfig config;  // 5 m/s, 5 rad/s
-  VelocityCommand command;
-  EXPECT_FALSE(findInvalidCommand(command, config));
-  command.linear.x() = NAN;
-  auto invalid = findInvalidCommand(command, config);
-  ASSERT_TRUE(invalid);
-  EXPECT_EQ(describeFieldError("cmd_vel", *invalid),
-            "cmd_vel.linear.x = nan: expected a number within [-5, 5]");
-  command.linear.x() = 5.0;
-  command.angular.y() = -INFINITY;
-  invalid = findInvalidCommand(command, config);
-  ASSERT_TRUE(invalid);
-  EXPECT_EQ(invalid->key, "angular.y");
-  command.angular.y() = 0.0;
-  command.linear.z() = 5.5;
-  invalid = findInvalidCommand(command, config);
-  ASSERT_TRUE(invalid);
-  EXPECT_EQ(invalid->key, "linear.z");
-}
 
 /// A scene placed in the fixed frame: `links` and `obstacles` (in that order, as a check places
 /// them).

@@ -524,37 +524,5 @@ TEST(SceneBroadphase, FiftyLinksAmongTenThousandObstaclesTestFewPairs) {
   }
 }
 
-TEST(SceneBroadphase, IndexedObstaclesRefuseBadEntriesAndTheCheckSaysSo) {
-  const Ellipse bad{{0.0, 0.0}, -1.0, 1.0, 0.0};
-  const IndexedObstacles refused({{"crate", EllipseRole::Obstacle, {{1, 0}, 1, 1, 0}},
-                                  {"rock", EllipseRole::Obstacle, bad}});
-  EXPECT_EQ(refused.error().rfind("obstacles[1] ('rock'): radius_x", 0), 0u) << refused.error();
-  EXPECT_TRUE(refused.obstacles().empty());
-  EXPECT_EQ(refused.batch().size(), 0u);  // the crate before the rock kept nothing either
-  const std::vector<NamedEllipse> arm = {{"arm", EllipseRole::Link, {{0, 0}, 1, 1, 0}}};
-  SceneCheckResult result = checkMoversAgainst(arm, refused, SceneRules{});
-  EXPECT_EQ(result.error.rfind("obstacles refused: obstacles[1] ('rock')", 0), 0u) << result.error;
-
-  const IndexedObstacles link_among_obstacles({{"arm2", EllipseRole::Link, {{0, 0}, 1, 1, 0}}});
-  EXPECT_EQ(link_among_obstacles.error(), "obstacles[0] ('arm2'): role must be Obstacle");
-
-  const IndexedObstacles crate({{"crate", EllipseRole::Obstacle, {{1, 0}, 1, 1, 0}}});
-  ASSERT_TRUE(crate.error().empty());
-  result = checkMoversAgainst({{"crate2", EllipseRole::Obstacle, {{0, 0}, 1, 1, 0}}}, crate,
-                              SceneRules{});
-  EXPECT_EQ(result.error, "movers[0] ('crate2') is an obstacle");
-  result = checkMoversAgainst({{"arm", EllipseRole::Link, bad}}, crate, SceneRules{});
-  EXPECT_EQ(result.error.rfind("movers[0] ('arm'): radius_x", 0), 0u) << result.error;
-  SceneRules negative;
-  negative.warning_distance = -1.0;
-  EXPECT_NE(checkMoversAgainst(arm, crate, negative).error.find("warning_distance"),
-            std::string::npos);
-  // And a good one answers: the arm meets the crate.
-  result = checkMoversAgainst(arm, crate, SceneRules{});
-  ASSERT_TRUE(result.ok()) << result.error;
-  ASSERT_EQ(result.collisions.size(), 1u);
-  EXPECT_EQ(result.collisions[0].name_b, "crate");
-}
-
 }  // namespace
 }  // namespace ellipse_collision::core

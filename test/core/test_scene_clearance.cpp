@@ -1,5 +1,5 @@
-// The clearance pass of checkScene() (warning pairs) and nearestTo(), against a brute force that
-// calls distance() on every pair the rules allow, and against circles worked out by hand.
+// The clearance pass of checkScene() (warning pairs), and nearestTo() on random scenes, against a
+// brute force that calls distance() on every pair the rules allow, and circles worked out by hand.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -381,60 +381,6 @@ TEST(NearestTo, MatchesBruteForceOverDistanceOnRandomScenes) {
   EXPECT_GT(found, 2000);
   EXPECT_GT(colliding, 200);
   EXPECT_GT(found - colliding, 1000);
-}
-
-TEST(NearestTo, TwoCirclesGiveTheHandComputedDistanceWithTheAskedEllipseFirst) {
-  // box (an obstacle) is asked about: it comes first although a pair names the link first.
-  const std::vector<NamedEllipse> scene = {circle("arm", EllipseRole::Link, 0.0, 0.0, 1.0),
-                                           circle("far", EllipseRole::Link, 10.0, 0.0, 1.0),
-                                           circle("box", EllipseRole::Obstacle, 3.0, 0.0, 0.5)};
-  const NearestResult r = nearestTo(scene, SceneRules{}, "box");
-  ASSERT_TRUE(r.ok()) << r.error;
-  ASSERT_TRUE(r.found);
-  EXPECT_EQ(r.nearest.name_a, "box");
-  EXPECT_EQ(r.nearest.name_b, "arm");
-  EXPECT_NEAR(r.nearest.distance, 1.5, 1e-12);
-  EXPECT_NEAR(r.nearest.point_a.x(), 2.5, 1e-12);
-  EXPECT_NEAR(r.nearest.point_b.x(), 1.0, 1e-12);
-  // The link's nearest partner: links pair with each other too (far is 8 m away, box 1.5 m).
-  const NearestResult arm = nearestTo(scene, SceneRules{}, "arm");
-  EXPECT_EQ(arm.nearest.name_b, "box");
-}
-
-TEST(NearestTo, CollidingPartnerOfSmallestContactScaleWinsAtDistanceZero) {
-  // deep: centres 0.5 m apart (scale 0.25); shallow: 1.5 m apart (scale 0.75); near: 0.1 m away.
-  const std::vector<NamedEllipse> scene = {circle("arm", EllipseRole::Link, 0.0, 0.0, 1.0),
-                                           circle("shallow", EllipseRole::Obstacle, 1.5, 0.0, 1.0),
-                                           circle("deep", EllipseRole::Obstacle, 0.0, 0.5, 1.0),
-                                           circle("near", EllipseRole::Obstacle, -2.1, 0.0, 1.0)};
-  const NearestResult r = nearestTo(scene, SceneRules{}, "arm");
-  ASSERT_TRUE(r.found);
-  EXPECT_EQ(r.nearest.name_b, "deep");
-  EXPECT_EQ(r.nearest.distance, 0.0);
-}
-
-TEST(NearestTo, FollowsThePairRules) {
-  const std::vector<NamedEllipse> scene = {circle("o1", EllipseRole::Obstacle, 0.0, 0.0, 0.5),
-                                           circle("o2", EllipseRole::Obstacle, 1.5, 0.0, 0.5),
-                                           circle("l1", EllipseRole::Link, 4.0, 0.0, 0.5),
-                                           circle("l2", EllipseRole::Link, 5.5, 0.0, 0.5)};
-  SceneRules rules;
-  EXPECT_EQ(nearestTo(scene, rules, "o1").nearest.name_b, "l1");  // never obstacle-obstacle
-  EXPECT_EQ(nearestTo(scene, rules, "l2").nearest.name_b, "l1");
-  rules.self_collision = false;
-  EXPECT_EQ(nearestTo(scene, rules, "l2").nearest.name_b, "o2");
-  rules.allowed.add("l2", "o2");
-  EXPECT_EQ(nearestTo(scene, rules, "l2").nearest.name_b, "o1");
-  rules.allowed.add("o1", "l2");
-  EXPECT_FALSE(nearestTo(scene, rules, "l2").found);
-  EXPECT_TRUE(nearestTo(scene, rules, "l2").ok());
-}
-
-TEST(NearestTo, UnknownNameIsRefused) {
-  const NearestResult r =
-      nearestTo({circle("arm", EllipseRole::Link, 0.0, 0.0, 1.0)}, SceneRules{}, "ghost");
-  EXPECT_FALSE(r.ok());
-  EXPECT_NE(r.error.find("'ghost'"), std::string::npos) << r.error;
 }
 
 }  // namespace

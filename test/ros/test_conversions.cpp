@@ -1,5 +1,5 @@
 // Message <-> application/core conversions, field by field; no ROS master needed. (The field
-// rules themselves are tested in test/app/test_field_validation.cpp.)
+// rules themselves are tested in test/app/test_ellipse_spec.cpp.)
 #include <gtest/gtest.h>
 
 #include <cmath>

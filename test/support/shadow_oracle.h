@@ -37,6 +37,23 @@ inline QMat3 quadRotation(const Eigen::Quaterniond& q) {
   return r;
 }
 
+/// |diag(r)^-1 R^T (p - c)|^2 of `e` at `p` in quad: <= 1 inside the ellipsoid.
+inline quad ellipsoidForm(const core::Ellipsoid& e, const Eigen::Vector3d& p) {
+  const QMat3 r = quadRotation(e.orientation);
+  QVec3 d;
+  for (int i = 0; i < 3; ++i) d[i] = static_cast<quad>(p[i]) - e.center[i];
+  const QVec3 y = r.transpose() * d;
+  quad sum = 0;
+  for (int i = 0; i < 3; ++i) sum += (y[i] / e.radii[i]) * (y[i] / e.radii[i]);
+  return sum;
+}
+
+/// A rotation drawn uniformly (a normalised quaternion of normal components).
+inline Eigen::Quaterniond randomOrientation(RandomSource& random) {
+  Eigen::Quaterniond q(random.normal(), random.normal(), random.normal(), random.normal());
+  return q.normalized();
+}
+
 /// The placed ellipsoid {centre + map u : |u| <= 1} in the fixed frame, in quad.
 struct PlacedEllipsoid {
   QVec3 centre;
