@@ -17,7 +17,14 @@ std::optional<FieldError> parseOnIncomplete(const std::string& text, OnIncomplet
 }
 
 FieldError gateFieldError(const core::GateSettingViolation& v, const std::string& prefix) {
-  FieldError e = *findOutsideRange(prefix + v.field, v.value, v.min, v.max, v.min_excluded);
+  // A violation lies outside its range; should one ever be made inside it, the range still reads.
+  FieldError e = findOutsideRange(prefix + v.field, v.value, v.min, v.max, v.min_excluded)
+                     .value_or(FieldError{prefix + v.field,
+                                          std::string("a number within ") +
+                                              (v.min_excluded ? "(" : "[") +
+                                              core::formatNumber(v.min) + ", " +
+                                              core::formatNumber(v.max) + "]",
+                                          core::formatNumber(v.value)});
   if (v.max_field) e.expected += " (at most " + prefix + v.max_field + ")";
   return e;
 }
