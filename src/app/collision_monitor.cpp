@@ -281,15 +281,16 @@ GateView CollisionMonitor::gateView(const CheckOutcome& outcome, double now_s,
   }
   // Obstacles move by their own velocity only: one attached to a moving frame (a scan in the
   // sensor's frame) is where that frame puts it now and does not travel with the robot.
+  // Listed by index, the moving ones only: a list of every entry cost a tenth of a command at
+  // 100,000 obstacles.
   const core::Scene& placed = outcome.placed;
-  view.obstacle_motions.resize(placed.size());
   const std::set<std::string>& moving = registry_.movingNames();
   for (std::size_t i = 0; i < placed.size() && !moving.empty(); ++i) {
     if (placed.role(i) != core::EllipseRole::Obstacle || !moving.count(placed.name(i))) continue;
     const EllipseSpec& spec = registry_.entries().at(placed.name(i)).spec;
     const auto frame = outcome.frames.find(spec.frame_id);
     if (frame != outcome.frames.end()) {
-      view.obstacle_motions[i] = ownMotion(spec, frame->second.fixed_from_frame);
+      view.obstacle_motions.push_back({i, ownMotion(spec, frame->second.fixed_from_frame)});
     }
   }
   return view;
