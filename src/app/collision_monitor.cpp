@@ -1,5 +1,6 @@
 #include "ellipse_collision/app/collision_monitor.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <iterator>
@@ -285,13 +286,28 @@ GateView CollisionMonitor::gateView(const CheckOutcome& outcome, double now_s,
   // 100,000 obstacles.
   const core::Scene& placed = outcome.placed;
   const std::set<std::string>& moving = registry_.movingNames();
-  for (std::size_t i = 0; i < placed.size() && !moving.empty(); ++i) {
-    if (placed.role(i) != core::EllipseRole::Obstacle || !moving.count(placed.name(i))) continue;
+  if (moving.empty()) return view;
+  const auto add = [&](std::size_t i) {
     const EllipseSpec& spec = registry_.entries().at(placed.name(i)).spec;
     const auto frame = outcome.frames.find(spec.frame_id);
     if (frame != outcome.frames.end()) {
       view.obstacle_motions.push_back({i, ownMotion(spec, frame->second.fixed_from_frame)});
     }
+  };
+  // A check that placed every stored ellipse placed them in the cache's order, whose moving
+  // positions are kept per registry revision; otherwise every placed name is looked up.
+  const auto& order = placement_cache_.placingOrder();
+  const auto& positions = placement_cache_.ownMotionPositions();
+  const bool in_order = placed.size() == order.size() &&
+                        std::all_of(positions.begin(), positions.end(), [&](std::size_t p) {
+                          return placed.name(p) == order[p].entry->first;
+                        });
+  if (in_order) {
+    for (const std::size_t p : positions) add(p);
+    return view;
+  }
+  for (std::size_t i = 0; i < placed.size(); ++i) {
+    if (placed.role(i) == core::EllipseRole::Obstacle && moving.count(placed.name(i))) add(i);
   }
   return view;
 }
