@@ -138,6 +138,7 @@ const CheckOutcome& CollisionMonitor::fullCheck(double now_s, const TransformLoo
   if (!outcome.error.empty()) {
     // Never publish a failed check as "clear": the state keeps the last good one.
     state_.failure = outcome.error;
+    outcome.standing.reset();  // nothing is gated on a failed check: free its grid now
     failed_check_ = std::move(outcome);
     return failed_check_;
   }
