@@ -171,12 +171,12 @@ CheckOutcome runCheck(const CheckRequest& request, const EllipseRegistry& regist
          scene.role(first_obstacle) != core::EllipseRole::Obstacle) {
     ++first_obstacle;
   }
-  const core::IndexedObstacles* standing =
-      cache ? cache->standingObstacles().update(stored.reused_obstacles == stored.obstacles,
-                                                scene, first_obstacle)
-            : nullptr;
+  if (cache) {
+    outcome.standing = cache->standingObstacles().update(
+        stored.reused_obstacles == stored.obstacles, scene, first_obstacle);
+  }
   core::SceneCheckResult result =
-      checkPlacedScene(scene, first_obstacle, standing, request, settings);
+      checkPlacedScene(scene, first_obstacle, outcome.standing.get(), request, settings);
   if (!result.ok()) {
     // Requests are validated before they get here, so this is a bug: say so.
     outcome.error_kind = ErrorKind::Internal;

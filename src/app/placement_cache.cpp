@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cstring>
+#include <set>
+#include <string>
 
 namespace ellipse_collision::app {
 namespace {
@@ -41,8 +43,15 @@ void PlacementCache::begin(const EllipseRegistry& registry, double global_paddin
       ++index;
     }
   }
-  for (const OrderedEntry& entry : order_) {
-    obstacle_count_ += entry.role == core::EllipseRole::Obstacle;
+  own_motion_positions_.clear();
+  const std::set<std::string>& moving = registry.movingNames();
+  for (std::size_t position = 0; position < order_.size(); ++position) {
+    const OrderedEntry& entry = order_[position];
+    if (entry.role != core::EllipseRole::Obstacle) continue;
+    ++obstacle_count_;
+    if (!moving.empty() && moving.count(entry.entry->first)) {
+      own_motion_positions_.push_back(position);
+    }
   }
 }
 

@@ -5,8 +5,8 @@
 
 namespace ellipse_collision::app {
 
-const core::IndexedObstacles* StandingObstacles::update(bool unchanged, const core::Scene& scene,
-                                                       std::size_t first_obstacle) {
+std::shared_ptr<const core::IndexedObstacles> StandingObstacles::update(
+    bool unchanged, const core::Scene& scene, std::size_t first_obstacle) {
   if (!unchanged) {
     standing_checks_ = 0;
     index_.reset();
@@ -17,14 +17,15 @@ const core::IndexedObstacles* StandingObstacles::update(bool unchanged, const co
     std::vector<core::NamedEllipse> obstacles;
     obstacles.reserve(scene.size() - first_obstacle);
     for (std::size_t k = first_obstacle; k < scene.size(); ++k) obstacles.push_back(scene.entry(k));
-    index_.emplace(std::move(obstacles));
+    auto index = std::make_shared<const core::IndexedObstacles>(std::move(obstacles));
     // The registry validated them, so a refusal would be a bug: stream, and try again later.
-    if (!index_->error().empty()) {
-      index_.reset();
+    if (index->error().empty()) {
+      index_ = std::move(index);
+    } else {
       standing_checks_ = 0;
     }
   }
-  return index_ ? &*index_ : nullptr;
+  return index_;
 }
 
 }  // namespace ellipse_collision::app

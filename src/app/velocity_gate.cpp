@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <utility>
 
 #include "ellipse_collision/core/number_format.h"
@@ -48,16 +49,24 @@ GateDecision stoppedDecision(GateAction action, const VelocityCommand& input, st
 }
 
 GateDecision gateOnScene(const VelocityCommand& command, const core::Scene& placed,
-                         const std::vector<core::Motion>& obstacle_motions, const PlanarPose& robot,
+                         const std::vector<PlacedMotion>& moving, const PlanarPose& robot,
                          const core::AllowedPairs& allowed, const GateConfig& config,
-                         const core::BaseState& base) {
+                         const core::BaseState& base, const core::IndexedObstacles* standing) {
+  if (standing && standing->obstacles().size() > placed.size()) {
+    return stoppedDecision(GateAction::Stop, command,
+                           "stopped: the command could not be judged: the obstacles' grid is not "
+                           "the scene's");
+  }
   const PlaneTransform frame(robot);
   const core::Twist twist{command.linear.x(), command.linear.y(), command.angular.z()};
   const double horizon = config.timing.horizon;
   core::PathScene scene;
   scene.allowed = allowed;
+  // With the grid, the scene's obstacles are its last entries: only links come before them.
+  const std::size_t first_gridded =
+      standing ? placed.size() - standing->obstacles().size() : placed.size();
   double reach = 0.0;  // every link stays within this of the robot frame's origin at t = 0
-  for (std::size_t i = 0; i < placed.size(); ++i) {
+  for (std::size_t i = 0; i < first_gridded; ++i) {
     if (placed.role(i) == core::EllipseRole::Obstacle) continue;
     core::NamedEllipse link = placed.entry(i);
     link.ellipse = frame.toRobot(link.ellipse);
@@ -69,14 +78,36 @@ GateDecision gateOnScene(const VelocityCommand& command, const core::Scene& plac
   // most |v| horizon (an arc is no longer than its chord's path), a link point at most
   // |v| horizon + reach from the origin at t = 0.
   reach += std::hypot(twist.vx, twist.vy) * horizon + config.timing.margin;
-  for (std::size_t i = 0; i < placed.size(); ++i) {
-    if (placed.role(i) != core::EllipseRole::Obstacle) continue;
+  const core::Motion still;
+  auto next_moving = moving.begin();
+  const auto motionOf = [&](std::size_t i) -> const core::Motion& {
+    while (next_moving != moving.end() && next_moving->index < i) ++next_moving;
+    return next_moving != moving.end() && next_moving->index == i ? next_moving->motion : still;
+  };
+  // Each candidate in increasing index, the order of a scan of every entry.
+  const auto consider = [&](std::size_t i) {
+    if (placed.role(i) != core::EllipseRole::Obstacle) return;
     const core::Ellipse& e = placed.ellipse(i);
-    const core::Motion& motion = obstacle_motions[i];
-    const double sweep = motion.velocity.norm() * horizon;
-    if ((e.center - frame.origin).norm() > reach + core::boundingRadius(e) + sweep) continue;
+    const core::Motion& motion = motionOf(i);
+    if (!core::mayComeWithin(e, motion.velocity.norm() * horizon, frame.origin, reach)) return;
     scene.obstacles.push_back({placed.name(i), core::EllipseRole::Obstacle, frame.toRobot(e)});
     scene.obstacle_motions.push_back(frame.toRobot(motion));
+  };
+  if (!standing) {
+    for (std::size_t i = 0; i < placed.size(); ++i) consider(i);
+  } else {
+    // The grid finds those that stand within reach; the moving ones, whose sweep its query
+    // leaves out, are added and tested with it.
+    std::vector<std::size_t> candidates;
+    standing->within(frame.origin, reach, &candidates);
+    for (std::size_t& k : candidates) k += first_gridded;
+    const auto gridded_end = static_cast<std::ptrdiff_t>(candidates.size());
+    for (const PlacedMotion& m : moving) {
+      if (m.index >= first_gridded && m.index < placed.size()) candidates.push_back(m.index);
+    }
+    std::inplace_merge(candidates.begin(), candidates.begin() + gridded_end, candidates.end());
+    candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+    for (const std::size_t i : candidates) consider(i);
   }
   const core::GateResult result = core::gateTwist(scene, twist, config.timing, base);
   if (!result.ok()) {
@@ -191,8 +222,9 @@ GateDecision VelocityGate::decide(const VelocityCommand& command, const GateView
   PlanarPose planar;
   planar.position = pose.translation().head<2>();
   planar.yaw = std::atan2(pose.linear()(1, 0), pose.linear()(0, 0));
-  GateDecision decision = gateOnScene(command, outcome.placed, view.obstacle_motions, planar,
-                                      *view.allowed, config_, baseAt(view.freshness.reference_s));
+  GateDecision decision =
+      gateOnScene(command, outcome.placed, view.obstacle_motions, planar, *view.allowed, config_,
+                  baseAt(view.freshness.reference_s), outcome.standing.get());
   holdScale(decision, view);
   if (!missing.empty()) {
     decision.reason +=
@@ -211,7 +243,8 @@ void VelocityGate::holdScale(GateDecision& decision, const GateView& view) {
     return;
   }
   bool world_moves = false;
-  for (const core::Motion& m : view.obstacle_motions) {
+  for (const PlacedMotion& placed : view.obstacle_motions) {
+    const core::Motion& m = placed.motion;
     world_moves |= m.velocity.x() != 0.0 || m.velocity.y() != 0.0 || m.angular_velocity != 0.0;
   }
   const VelocityCommand& input = decision.input;

@@ -1,5 +1,6 @@
 #include "ellipse_collision/core/indexed_obstacles.h"
 
+#include <algorithm>
 #include <utility>
 
 #include "scene_entry.h"
@@ -40,6 +41,18 @@ IndexedObstacles::IndexedObstacles() : grid_(std::vector<BoundingBox>{}) {}
 IndexedObstacles::IndexedObstacles(std::vector<NamedEllipse> obstacles)
     : obstacles_(std::move(obstacles)), grid_(obstacleBoxes(obstacles_, &batch_, &error_)) {
   if (!error_.empty()) obstacles_.clear();
+}
+
+void IndexedObstacles::within(const Eigen::Vector2d& point, double reach,
+                              std::vector<std::size_t>* indices) const {
+  // The box about the disc, widened like the obstacles' own boxes (far beyond the rounding of the
+  // exact test below), so that every obstacle the test keeps has a box that overlaps it.
+  const double half = std::max(reach, 0.0);
+  grid_.overlapping(detail::boxAround(point, half, half), indices);
+  const auto far = [&](std::size_t k) {
+    return !mayComeWithin(obstacles_[k].ellipse, 0.0, point, reach);
+  };
+  indices->erase(std::remove_if(indices->begin(), indices->end(), far), indices->end());
 }
 
 }  // namespace ellipse_collision::core

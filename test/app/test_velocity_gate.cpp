@@ -40,6 +40,34 @@ core::Ellipse inRobotFrame(const core::Ellipse& e, const PlanarPose& pose) {
   return out;
 }
 
+/// Whether two decisions are the same bit for bit: action, scale, output, contact, limiting
+/// pair, outline, braking figures and reason.
+void expectSameDecision(const GateDecision& a, const GateDecision& b, const std::string& label) {
+  SCOPED_TRACE(label);
+  EXPECT_EQ(a.action, b.action);
+  EXPECT_EQ(a.scale, b.scale);
+  EXPECT_EQ(a.output.linear, b.output.linear);
+  EXPECT_EQ(a.output.angular, b.output.angular);
+  EXPECT_EQ(a.contact_predicted, b.contact_predicted);
+  EXPECT_EQ(a.time_to_contact_s, b.time_to_contact_s);
+  EXPECT_EQ(a.link, b.link);
+  EXPECT_EQ(a.obstacle, b.obstacle);
+  EXPECT_EQ(a.contact_point, b.contact_point);
+  EXPECT_EQ(a.obstacle_ellipse.center, b.obstacle_ellipse.center);
+  EXPECT_EQ(a.obstacle_ellipse.angle, b.obstacle_ellipse.angle);
+  ASSERT_EQ(a.outline.size(), b.outline.size());
+  for (std::size_t i = 0; i < a.outline.size(); ++i) {
+    EXPECT_EQ(a.outline[i].name, b.outline[i].name);
+    EXPECT_EQ(a.outline[i].ellipse.center, b.outline[i].ellipse.center);
+    EXPECT_EQ(a.outline[i].ellipse.angle, b.outline[i].ellipse.angle);
+  }
+  EXPECT_EQ(a.braking_distance_m, b.braking_distance_m);
+  EXPECT_EQ(a.free_distance_m, b.free_distance_m);
+  EXPECT_EQ(a.unavoidable, b.unavoidable);
+  EXPECT_EQ(a.impact_speed, b.impact_speed);
+  EXPECT_EQ(a.reason, b.reason);
+}
+
 TEST(GateOnScene, MatchesTheCoreOnTheWholeSceneSeenFromTheRobot) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> unit(-1.0, 1.0), size(0.05, 0.4);
@@ -50,7 +78,7 @@ TEST(GateOnScene, MatchesTheCoreOnTheWholeSceneSeenFromTheRobot) {
   for (int trial = 0; trial < 300; ++trial) {
     const PlanarPose pose{{5.0 * unit(rng), 5.0 * unit(rng)}, 3.1 * unit(rng)};
     std::vector<core::NamedEllipse> links, obstacles;
-    std::vector<core::Motion> motions;  // per placed entry, links first
+    std::vector<PlacedMotion> moving;  // by placed index, links first
     core::PathScene by_hand;
     for (int i = 0; i < 3; ++i) {
       // Links given in the robot frame, placed into the fixed frame for the check.
@@ -65,7 +93,6 @@ TEST(GateOnScene, MatchesTheCoreOnTheWholeSceneSeenFromTheRobot) {
       links.push_back({"link_" + std::to_string(i), core::EllipseRole::Link, placed});
       by_hand.links.push_back(
           {links.back().name, core::EllipseRole::Link, inRobotFrame(placed, pose)});
-      motions.emplace_back();
     }
     for (int i = 0; i < 40; ++i) {
       const core::Ellipse e{pose.position + Eigen::Vector2d(8.0 * unit(rng), 8.0 * unit(rng)),
@@ -73,7 +100,7 @@ TEST(GateOnScene, MatchesTheCoreOnTheWholeSceneSeenFromTheRobot) {
       obstacles.push_back({"obstacle_" + std::to_string(i), core::EllipseRole::Obstacle, e});
       core::Motion motion;
       if (i % 4 == 0) motion.velocity = {0.5 * unit(rng), 0.5 * unit(rng)};
-      motions.push_back(motion);
+      if (i % 4 == 0) moving.push_back({links.size() + obstacles.size() - 1, motion});
       core::Motion turned = motion;
       const double c = std::cos(pose.yaw), s = std::sin(pose.yaw);
       turned.velocity = {c * motion.velocity.x() + s * motion.velocity.y(),
@@ -86,8 +113,21 @@ TEST(GateOnScene, MatchesTheCoreOnTheWholeSceneSeenFromTheRobot) {
     command.linear.x() = 1.5 * unit(rng);
     command.linear.y() = 0.3 * unit(rng);
     command.angular.z() = 0.8 * unit(rng);
-    const GateDecision decision = gateOnScene(command, placedScene(links, obstacles), motions, pose,
-                                              core::AllowedPairs(), config);
+    const core::Scene placed = placedScene(links, obstacles);
+    const GateDecision decision =
+        gateOnScene(command, placed, moving, pose, core::AllowedPairs(), config);
+    // The obstacles' grid gives the scan's answer, for the ideal base and with the braking rule.
+    const core::IndexedObstacles grid(obstacles);
+    expectSameDecision(
+        gateOnScene(command, placed, moving, pose, core::AllowedPairs(), config, {}, &grid),
+        decision, "trial " + std::to_string(trial) + " through the grid");
+    GateConfig braking = config;
+    braking.base = {0.1, 0.8, 2.0};
+    const core::BaseState base{braking.base, {0.4, 0.0, 0.2}, 0.05};
+    expectSameDecision(
+        gateOnScene(command, placed, moving, pose, core::AllowedPairs(), braking, base, &grid),
+        gateOnScene(command, placed, moving, pose, core::AllowedPairs(), braking, base),
+        "trial " + std::to_string(trial) + " braking, through the grid");
     const core::GateResult expected = core::gateTwist(
         by_hand, {command.linear.x(), command.linear.y(), command.angular.z()}, config.timing);
     ASSERT_TRUE(expected.ok()) << expected.error;
@@ -127,7 +167,7 @@ TEST(GateOnScene, TheOutlineIsTheRobotAtTheContactInTheFixedFrame) {
       gateOnScene(command,
                   placedScene({{"body", core::EllipseRole::Link, link}},
                               {{"post", core::EllipseRole::Obstacle, post}}),
-                  {core::Motion(), core::Motion()}, pose, core::AllowedPairs(), config);
+                  {}, pose, core::AllowedPairs(), config);
   EXPECT_EQ(decision.action, GateAction::Pass) << decision.reason;
   ASSERT_TRUE(decision.contact_predicted);
   EXPECT_NEAR(decision.time_to_contact_s, 1.5, 1e-9);
@@ -273,6 +313,107 @@ TEST(MonitorGate, AnObstacleOnTheRobotsOwnFrameStandsAndAnOwnVelocityCounts) {
       with_standing.gateCommand(forward(2.0), 1.0, frames.latest(), frames.at()).scale;
   EXPECT_LT(moving_scale, standing_scale - 0.2)
       << "moving " << moving_scale << ", standing " << standing_scale;
+}
+
+TEST(MonitorGate, TheKeptGridAnswersAsTheScanAcrossObstacleChanges) {
+  // A robot driving and turning among 400 obstacles in map, one walking toward it and 20 on a
+  // parked cart. Every command is judged by the monitor, which looks the obstacles near the robot
+  // up in the grid it keeps while they stand, and by gateOnScene() scanning the very scene the
+  // monitor placed: the same decision bit for bit, while a box is put ahead and taken away
+  // (service), the topic obstacles are replaced and cleared, and the cart drives in front of the
+  // robot. Each change shows in the very next decision: a grid kept from before it would miss
+  // the box.
+  std::vector<EllipseSpec> obstacles;
+  for (int i = 0; i < 400; ++i) {
+    const double x = -10.0 + (i % 20), y = -10.0 + (i / 20) + 0.3 * (i % 3);
+    if (std::hypot(x, y) > 4.0)
+      obstacles.push_back(circle("rock" + std::to_string(i), "map", x, y, 0.1 + 0.02 * (i % 7)));
+  }
+  EllipseSpec walker = circle("walker", "map", 4.0, 0.4, 0.2);
+  walker.vx = -0.3;
+  obstacles.push_back(walker);
+  for (int i = 0; i < 20; ++i) {
+    obstacles.push_back(
+        circle("crate" + std::to_string(i), "cart", 0.1 * (i % 5), 0.15 * (i / 5) - 0.3, 0.08));
+  }
+  CollisionMonitor monitor(
+      gateSettings(),
+      {circle("body", "base_link", 0, 0, 0.3), circle("nose", "base_link", 0.4, 0, 0.1)}, obstacles,
+      {}, {});
+  Eigen::Isometry3d base = Eigen::Isometry3d::Identity();
+  Eigen::Isometry3d cart = Eigen::Isometry3d::Identity();
+  cart.translation() << 30.0, 30.0, 0.0;
+  const TransformLookup latest = [&](const std::string& frame) {
+    FrameTransform t;
+    t.ok = frame == "map" || frame == "base_link" || frame == "cart";
+    if (frame == "base_link") t.fixed_from_frame = base;
+    if (frame == "cart") t.fixed_from_frame = cart;
+    if (!t.ok) t.error = "frame '" + frame + "' does not exist";
+    return t;
+  };
+  const TransformAtLookup at = [&](const std::string& frame, double) { return latest(frame); };
+  VelocityCommand command = forward(1.0);
+  command.angular.z() = 0.2;
+  std::size_t through_grid = 0, slowed = 0;
+  for (int k = 0; k < 160; ++k) {
+    const double now = 1.0 + 0.05 * k;
+    base = Eigen::Translation3d(0.01 * k, 0.005 * k, 0.0) *
+           Eigen::AngleAxisd(0.01 * k, Eigen::Vector3d::UnitZ());
+    const Eigen::Vector3d ahead = base * Eigen::Vector3d(1.2, 0.0, 0.0);
+    const Eigen::Vector3d further = base * Eigen::Vector3d(1.6, 0.0, 0.0);
+    if (k == 40) {
+      ASSERT_TRUE(monitor.addObstacles({circle("box", "map", ahead.x(), ahead.y(), 0.2)}, latest)
+                      .success());
+    }
+    if (k == 80) {
+      ASSERT_TRUE(monitor.removeObstacles({"box"}).success());
+    }
+    if (k == 100) {
+      ASSERT_EQ(monitor.replaceTopicObstacles(
+                    {circle("scan0", "map", further.x(), further.y(), 0.15)}, now, latest),
+                "");
+    }
+    if (k == 110) {
+      ASSERT_EQ(monitor.replaceTopicObstacles({}, now, latest), "");
+    }
+    if (k == 120) cart.translation() << further.x(), further.y(), 0.0;
+    const GateDecision decision = monitor.gateCommand(command, now, latest, at);
+
+    const CheckOutcome& checked = monitor.state().outcome;
+    through_grid += checked.standing != nullptr;
+    PlanarPose pose;  // as the monitor reads the robot frame
+    pose.position = base.translation().head<2>();
+    pose.yaw = std::atan2(base.linear()(1, 0), base.linear()(0, 0));
+    std::vector<PlacedMotion> moving;
+    for (std::size_t i = 0; i < checked.placed.size(); ++i) {
+      if (checked.placed.name(i) == "walker") moving.push_back({i, {{-0.3, 0.0}, 0.0}});
+    }
+    const GateDecision scanned = gateOnScene(command, checked.placed, moving, pose,
+                                             core::AllowedPairs(), monitor.gate().config());
+    expectSameDecision(decision, scanned, "command " + std::to_string(k));
+    slowed += decision.action != GateAction::Pass;
+    if (k == 40) {
+      EXPECT_EQ(decision.obstacle, "box");
+    }
+    if (k == 79) {
+      EXPECT_NE(checked.standing, nullptr) << "gridded again, with the box";
+    }
+    if (k == 80) {
+      EXPECT_NE(decision.obstacle, "box");
+    }
+    if (k == 100) {
+      EXPECT_EQ(decision.obstacle, "scan0");
+    }
+    if (k == 110) {
+      EXPECT_NE(decision.obstacle, "scan0");
+    }
+    if (k == 120) {
+      EXPECT_EQ(decision.obstacle.rfind("crate", 0), 0u) << decision.obstacle;
+    }
+  }
+  // The grid served most commands (it is built once the obstacles stood for a while).
+  EXPECT_GT(through_grid, 60u);
+  EXPECT_GT(slowed, 30u) << "the comparison must see slowed and stopped commands";
 }
 
 }  // namespace

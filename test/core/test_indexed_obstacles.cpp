@@ -3,6 +3,7 @@
 // brute force over every wanted pair (test/support/brute_force_scene.h) with the same bits.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 #include <set>
 #include <string>
@@ -119,6 +120,48 @@ TEST(IndexedObstacles, MoversAgainstTheIndexAnswerAsTheBruteForce) {
   }
   EXPECT_GT(collisions, 40u);
   EXPECT_GT(warnings, 40u);
+}
+
+TEST(IndexedObstacles, WithinGivesTheScansObstaclesEvenOnTheBoundary) {
+  // The velocity gate's cull through the grid: the same obstacles, in the same order, as a scan
+  // of every obstacle with mayComeWithin(), for obstacles from pebbles to a few that span many
+  // cells, points inside and outside the floor, reaches from 0 to beyond the floor, and reaches
+  // that put an obstacle on the boundary of the test (up to rounding).
+  std::mt19937 rng(41);
+  std::uniform_real_distribution<double> coordinate(-50.0, 50.0), small(0.02, 0.5),
+      angle(-3.0, 3.0);
+  std::vector<NamedEllipse> obstacles;
+  for (int i = 0; i < 3000; ++i) {
+    const double r = i % 500 == 0 ? 15.0 : small(rng);
+    obstacles.push_back({"o" + std::to_string(i),
+                         EllipseRole::Obstacle,
+                         {{coordinate(rng), coordinate(rng)}, r, small(rng), angle(rng)}});
+  }
+  const IndexedObstacles index(obstacles);
+  ASSERT_TRUE(index.error().empty()) << index.error();
+  std::size_t found = 0, on_boundary = 0;
+  std::vector<std::size_t> within;
+  for (int trial = 0; trial < 600; ++trial) {
+    const Eigen::Vector2d point(1.3 * coordinate(rng), 1.3 * coordinate(rng));
+    double reach = trial % 3 == 0 ? 0.0 : std::pow(10.0, angle(rng) / 1.5);
+    if (trial % 5 == 1) {
+      // The reach at which obstacle k sits on the boundary of the test (up to rounding), and
+      // one ulp below it.
+      const Ellipse& e = obstacles[static_cast<std::size_t>(trial) % obstacles.size()].ellipse;
+      reach = (e.center - point).norm() - boundingRadius(e);
+      if (trial % 10 == 6) reach = std::nextafter(reach, -1.0);
+    }
+    std::vector<std::size_t> scanned;
+    for (std::size_t k = 0; k < obstacles.size(); ++k) {
+      if (mayComeWithin(obstacles[k].ellipse, 0.0, point, reach)) scanned.push_back(k);
+    }
+    index.within(point, reach, &within);
+    EXPECT_EQ(within, scanned) << "trial " << trial << ", reach " << reach;
+    found += scanned.size();
+    on_boundary += trial % 5 == 1 && !scanned.empty();
+  }
+  EXPECT_GT(found, 2000u) << "the trials must find obstacles";
+  EXPECT_GT(on_boundary, 50u);
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <map>
+#include <memory>
 #include <optional>
 #include <set>
 #include <string>
@@ -12,6 +13,7 @@
 #include "ellipse_collision/app/placement_cache.h"
 #include "ellipse_collision/app/transform_lookup.h"
 #include "ellipse_collision/core/contact_prediction.h"
+#include "ellipse_collision/core/indexed_obstacles.h"
 #include "ellipse_collision/core/scene_check.h"
 
 namespace ellipse_collision::app {
@@ -51,6 +53,11 @@ struct CheckOutcome {
   bool complete{false};
   /// The transform each frame of this check had, looked up once (the prediction reuses them).
   std::map<std::string, FrameTransform> frames;
+  /// The grid of `placed`'s obstacles (its entries from the first obstacle on) that the check
+  /// looked its pairs up in, kept across checks while the obstacles stand still
+  /// (StandingObstacles); null when the check streamed them. Built from exactly these
+  /// obstacles, so the gate may find the ones near the robot there.
+  std::shared_ptr<const core::IndexedObstacles> standing;
   /// Pairs apart now that touch within the prediction horizon (predictAfterCheck()), soonest first.
   std::vector<core::PredictedContact> predicted;
   /// Why a velocity could not be estimated or a pair not predicted (logged, in /diagnostics).

@@ -77,6 +77,10 @@ class PlacementCache {
                      std::size_t* reused_obstacles);
   /// Obstacles among placingOrder().
   std::size_t obstacleCount() const { return obstacle_count_; }
+  /// Positions in placingOrder() of the obstacles with a velocity of their own
+  /// (registry.movingNames()), increasing; found once per registry revision: looking every
+  /// placed name up on each gated command cost milliseconds at 100,000 obstacles.
+  const std::vector<std::size_t>& ownMotionPositions() const { return own_motion_positions_; }
   /// Checks refilled frame by frame (for tests and benchmarks).
   std::size_t frameRefills() const { return frame_refills_; }
 
@@ -130,6 +134,7 @@ class PlacementCache {
   std::size_t refilled_checks_{0};
   std::size_t frame_refills_{0};
   std::size_t obstacle_count_{0};
+  std::vector<std::size_t> own_motion_positions_;
   bool by_frame_{false};  ///< frames' positions are complete (byFrameReady())
 };
 

@@ -1,7 +1,7 @@
 #pragma once
 
 #include <cstddef>
-#include <optional>
+#include <memory>
 #include <vector>
 
 #include "ellipse_collision/core/indexed_obstacles.h"
@@ -20,18 +20,20 @@ class StandingObstacles {
 
   /// After one check's placement: `unchanged` says whether its obstacles are exactly the ones
   /// of the previous check (same registry, every obstacle reused bit for bit); this check's
-  /// placed obstacles are the entries of `scene` from `first_obstacle` on. Returns the grid to
-  /// check the movers against, or nullptr to stream the obstacles.
-  const core::IndexedObstacles* update(bool unchanged, const core::Scene& scene,
-                                       std::size_t first_obstacle);
+  /// placed obstacles are the entries of `scene` from `first_obstacle` on. Returns the grid of
+  /// exactly those obstacles to check the movers against, or nullptr to stream the obstacles.
+  /// Shared: a check's outcome keeps the grid of its own obstacles (CheckOutcome::standing) even
+  /// after a later change drops it here.
+  std::shared_ptr<const core::IndexedObstacles> update(bool unchanged, const core::Scene& scene,
+                                                       std::size_t first_obstacle);
 
   /// Checks in a row whose obstacles stood still (for tests and diagnostics).
   std::size_t standingChecks() const { return standing_checks_; }
-  bool indexed() const { return index_.has_value(); }
+  bool indexed() const { return index_ != nullptr; }
 
  private:
   std::size_t standing_checks_{0};
-  std::optional<core::IndexedObstacles> index_;
+  std::shared_ptr<const core::IndexedObstacles> index_;
 };
 
 }  // namespace ellipse_collision::app

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cstddef>
 #include <cstdint>
 #include <deque>
 #include <limits>
@@ -14,6 +15,7 @@
 #include "ellipse_collision/app/transform_lookup.h"
 #include "ellipse_collision/app/velocity_command.h"
 #include "ellipse_collision/core/gate_action.h"
+#include "ellipse_collision/core/indexed_obstacles.h"
 #include "ellipse_collision/core/scene_check.h"
 
 namespace ellipse_collision::app {
@@ -60,15 +62,25 @@ struct PlanarPose {
   double yaw{0.0};
 };
 
+/// An obstacle of a placed scene that moves by its own velocity: its index in the scene and its
+/// motion in the fixed frame.
+struct PlacedMotion {
+  std::size_t index{0};
+  core::Motion motion;
+};
+
 /// The gate on a placed scene: `placed` (links and obstacles in the fixed frame) moved into the
-/// robot frame at `robot` (links rigidly with it, obstacles by `obstacle_motions`, one per placed
-/// entry, zero for links, in the fixed frame), then core::gateTwist() on the command's planar part
-/// (linear.x, linear.y, angular.z) and its answer put back into the fixed frame. A core error
-/// stops (an internal failure never passes).
+/// robot frame at `robot` (links rigidly with it, obstacles by `moving`, by increasing index; the
+/// others stand still), then core::gateTwist() on the command's planar part (linear.x, linear.y,
+/// angular.z) and its answer put back into the fixed frame. A core error stops (an internal
+/// failure never passes). `standing`, when given, is the grid of exactly `placed`'s obstacles,
+/// its last entries (CheckOutcome::standing): the obstacles near the robot are looked up there
+/// instead of scanning all of them, with the same answer bit for bit.
 GateDecision gateOnScene(const VelocityCommand& command, const core::Scene& placed,
-                         const std::vector<core::Motion>& obstacle_motions, const PlanarPose& robot,
+                         const std::vector<PlacedMotion>& moving, const PlanarPose& robot,
                          const core::AllowedPairs& allowed, const GateConfig& config,
-                         const core::BaseState& base = {});
+                         const core::BaseState& base = {},
+                         const core::IndexedObstacles* standing = nullptr);
 
 /// What the gate judges a command on, gathered by the monitor from the full check it ran.
 struct GateView {
@@ -78,7 +90,9 @@ struct GateView {
   Freshness freshness;  ///< max_transform_age and now, for the robot frame
   /// Obstacle sources whose data is gone ("obstacles from ~obstacles dropped, ..."): incomplete.
   std::vector<std::string> silent_sources;
-  std::vector<core::Motion> obstacle_motions;  ///< one per placed entry, in the fixed frame
+  /// The placed obstacles that move by their own velocity, by increasing index; the others
+  /// stand still.
+  std::vector<PlacedMotion> obstacle_motions;
   const core::AllowedPairs* allowed{nullptr};
   /// Changes whenever the stored obstacles change; with no obstacle moving, the same revision is
   /// the same world (the no-stop-and-go rule).

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <Eigen/Core>
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -9,6 +11,14 @@
 #include "ellipse_collision/core/scene_check.h"
 
 namespace ellipse_collision::core {
+
+/// Whether `e`, moved by at most `sweep` [m], can come within `reach` [m] of `point`: its
+/// bounding circle widened by the sweep meets the disc of radius `reach` about the point. The
+/// velocity gate's cull of the obstacles no link can touch within its horizon.
+inline bool mayComeWithin(const Ellipse& e, double sweep, const Eigen::Vector2d& point,
+                          double reach) {
+  return !((e.center - point).norm() > reach + boundingRadius(e) + sweep);
+}
 
 /// Obstacles validated and gridded once, for a caller whose obstacles stay put from one check to
 /// the next while its links move (obstacles in the map, a robot driving through them): each check
@@ -35,6 +45,11 @@ class IndexedObstacles {
   const EllipseBatch& batch() const { return batch_; }
   /// Empty unless the obstacles were refused.
   const std::string& error() const { return error_; }
+
+  /// Replaces `indices` with those k, increasing, whose obstacle can come within `reach` [m] of
+  /// `point` (mayComeWithin() with no sweep): the very obstacles a scan of all of them keeps,
+  /// found through the grid in time proportional to the obstacles near the point.
+  void within(const Eigen::Vector2d& point, double reach, std::vector<std::size_t>* indices) const;
 
  private:
   std::vector<NamedEllipse> obstacles_;
