@@ -62,6 +62,7 @@ set(ELLIPSE_COLLISION_APP_SOURCES
   src/app/joint_chain.cpp
   src/app/link_fitting.cpp
   src/app/marker_layout.cpp
+  src/app/obstacle_source.cpp
   src/app/obstacle_store.cpp
   src/app/obstacle_persistence.cpp
   src/app/obstacle_store_writer.cpp
@@ -69,6 +70,7 @@ set(ELLIPSE_COLLISION_APP_SOURCES
   src/app/scan_name_keeper.cpp
   src/app/scan_obstacles.cpp
   src/app/sensor_obstacle_series.cpp
+  src/app/source_freshness.cpp
   src/app/scan_cut_memory.cpp
   src/app/frame_placer.cpp
   src/app/placement_cache.cpp

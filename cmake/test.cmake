@@ -125,6 +125,7 @@ ellipse_collision_add_gtest(test_app LIBRARIES ellipse_collision_app quadmath SO
   test/app/test_collision_monitor.cpp
   test/app/test_velocity_gate.cpp
   test/app/test_gate_marker_layout.cpp
+  test/app/test_obstacle_sources.cpp
   test/app/test_obstacle_store.cpp
   test/app/test_obstacle_store_writer.cpp
   test/app/test_check_health.cpp

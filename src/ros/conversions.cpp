@@ -114,6 +114,7 @@ void toMsg(const app::CheckOutcome& outcome, CheckCollisions::Response& response
   std::vector<std::string> notes;
   if (!outcome.skipped.empty()) notes.push_back("skipped " + app::joinText(outcome.skipped, "; "));
   if (!outcome.nearest_problem.empty()) notes.push_back(outcome.nearest_problem);
+  notes.insert(notes.end(), outcome.silent_sources.begin(), outcome.silent_sources.end());
   response.message = app::joinText(notes, "; ");
   response.collisions = toMsg(outcome.collisions);
   response.in_collision = !response.collisions.empty();

@@ -1,0 +1,50 @@
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "ellipse_collision/app/field_error.h"
+#include "ellipse_collision/app/scan_obstacles.h"
+
+namespace ellipse_collision::app {
+
+/// What a source's messages are: ellipses as they are (ellipse_collision/EllipseArray), or a
+/// laser scan (sensor_msgs/LaserScan) turned into ellipses by the scan_obstacles pipeline.
+enum class SourceType { Ellipses, Scan };
+
+/// "ellipses" or "scan", as the `type` key spells them.
+const char* toString(SourceType type);
+/// The type `text` names, or a FieldError of key `key`.
+std::optional<FieldError> parseSourceType(const std::string& text, const std::string& key,
+                                          SourceType* type);
+
+/// One entry of the node's `sources`: a stream of obstacles whose messages replace only its own
+/// obstacles, with its own freshness watchdog.
+struct SourceSpec {
+  std::string name;  ///< [A-Za-z0-9_]+; its obstacles are named "<name>/<obstacle name>"
+  SourceType type{SourceType::Ellipses};
+  std::string topic;  ///< resolved in the node's namespace ("~x": private)
+  /// Silent for longer than this [s] makes answers incomplete and the gate INCOMPLETE;
+  /// 0 = no watchdog.
+  double timeout_s{0.0};
+  ScanObstacleSettings scan;  ///< the pipeline's settings (type scan only)
+};
+
+/// The default source every node has: ~obstacles, no watchdog (obstacle_timeout drops its
+/// obstacles instead), obstacle names as they come. Listed sources may not reuse its name or
+/// topic.
+inline constexpr const char* kDefaultSourceName = "obstacles";
+inline constexpr double kMaxSourceTimeoutS = 3600.0;  ///< timeout within [0, kMaxSourceTimeoutS]
+
+/// The first violation of the source list's rules, its key naming the entry ("sources[1].topic"):
+/// name non-empty of [A-Za-z0-9_] and used once (kDefaultSourceName included); topic non-empty
+/// and used once ("obstacles" and "~obstacles" are the default source's); timeout finite within
+/// [0, kMaxSourceTimeoutS]; a scan source's settings pass findInvalidSetting().
+std::optional<FieldError> findInvalidSources(const std::vector<SourceSpec>& sources);
+
+/// The name an obstacle of source `source` is stored under: "<source>/<obstacle>", so that two
+/// sources (two scanners both naming their ellipses scan_0, ...) never claim the same name.
+std::string sourceObstacleName(const std::string& source, const std::string& obstacle);
+
+}  // namespace ellipse_collision::app
