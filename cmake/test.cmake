@@ -193,6 +193,8 @@ ellipse_collision_add_rostest(test_state_publishing test/ros/state_publishing.te
   test/ros/test_state_publishing.cpp)
 ellipse_collision_add_rostest(test_stale_data test/ros/stale_data.test
   test/ros/test_stale_data.cpp)
+# Several obstacle sources: two scanners in one node, one falls silent.
+ellipse_collision_add_rostest(test_sources test/ros/sources.test test/ros/test_sources.cpp)
 ellipse_collision_add_rostest(test_time_jump test/ros/time_jump.test
   test/ros/test_time_jump.cpp)
 ellipse_collision_add_rostest(test_respawn test/ros/respawn.test

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -332,6 +333,90 @@ app::GateConfig readGate(const XmlRpcValue& value) {
   return gate;
 }
 
+/// scan_obstacles' keys, in a node's private namespace or in a scan source's entry.
+const std::vector<std::string> kScanKeys = {"cluster_distance",
+                                            "min_cluster_points",
+                                            "min_radius",
+                                            "range_noise_sigma",
+                                            "free_space_tolerance",
+                                            "z_min",
+                                            "z_max",
+                                            "name_prefix"};
+
+/// The scan keys `root` holds into `settings` (types only: the ranges are findInvalidSetting()'s).
+/// `where(key)` names the place in messages, `prefix` + key the key.
+void readScanSettings(const XmlRpcValue& root,
+                      const std::function<std::string(const std::string&)>& where,
+                      app::ScanObstacleSettings* settings, const std::string& prefix = "") {
+  for (const auto& [key, field] :
+       {std::pair<const char*, double*>{"cluster_distance", &settings->cluster_distance},
+        {"min_radius", &settings->min_radius},
+        {"range_noise_sigma", &settings->range_noise_sigma},
+        {"free_space_tolerance", &settings->free_space_tolerance},
+        {"z_min", &settings->z_min},
+        {"z_max", &settings->z_max}}) {
+    if (root.hasMember(key)) *field = readNumber(root[key], where(key), prefix + key);
+  }
+  if (root.hasMember("min_cluster_points")) {
+    XmlRpcValue value = root["min_cluster_points"];
+    if (value.getType() != XmlRpcValue::TypeInt) {
+      fail(where("min_cluster_points"), prefix + "min_cluster_points", "an integer",
+           describeValue(value));
+    }
+    settings->min_cluster_points = static_cast<int&>(value);
+  }
+  if (root.hasMember("name_prefix")) {
+    settings->name_prefix =
+        readString(root["name_prefix"], where("name_prefix"), prefix + "name_prefix");
+  }
+}
+
+/// `sources`: a list of {name, type, topic, timeout, <scan keys for type scan>}; types and
+/// required keys here, every value rule in app::findInvalidSources().
+std::vector<app::SourceSpec> readSources(const XmlRpcValue& list) {
+  const std::string where = "parameter ~sources";
+  if (list.getType() != XmlRpcValue::TypeArray) {
+    fail(where, "sources", "a list of {name, type, topic, timeout, ...}", describeValue(list));
+  }
+  static const std::vector<std::string> kSourceKeys = {"name", "type", "topic", "timeout"};
+  std::vector<std::string> scan_source_keys = kSourceKeys;
+  scan_source_keys.insert(scan_source_keys.end(), kScanKeys.begin(), kScanKeys.end());
+  std::vector<app::SourceSpec> sources;
+  for (int i = 0; i < list.size(); ++i) {
+    const std::string entry = app::entryName("sources", i);
+    const XmlRpcValue& value = list[i];
+    if (value.getType() != XmlRpcValue::TypeStruct) {
+      fail(where, entry, "a dict {name, type, topic, timeout, ...}", describeValue(value));
+    }
+    for (const char* required : {"name", "type", "topic"}) {
+      if (!value.hasMember(required)) {
+        fail(where, entry + "." + required, "a value (required)", "nothing");
+      }
+    }
+    app::SourceSpec source;
+    source.name = readString(value["name"], where, entry + ".name");
+    const std::string type = readString(value["type"], where, entry + ".type");
+    failOn(app::parseSourceType(type, entry + ".type", &source.type), where);
+    source.topic = readString(value["topic"], where, entry + ".topic");
+    if (value.hasMember("timeout")) {
+      source.timeout_s = readNumber(value["timeout"], where, entry + ".timeout");
+    }
+    const std::vector<std::string>& keys =
+        source.type == app::SourceType::Scan ? scan_source_keys : kSourceKeys;
+    if (const auto key = unknownKey(value, keys)) {
+      fail(where, entry + "." + *key,
+           "one of " + app::joinText(keys, ", ") + " (type " + type + ")", "an unknown key");
+    }
+    if (source.type == app::SourceType::Scan) {
+      readScanSettings(
+          value, [&](const std::string&) { return where; }, &source.scan, entry + ".");
+    }
+    sources.push_back(std::move(source));
+  }
+  failOn(app::findInvalidSources(sources), where);
+  return sources;
+}
+
 }  // namespace
 
 std::string describeConfigError(const std::string& where, const app::FieldError& error) {
@@ -353,12 +438,27 @@ NodeConfig parseNodeConfig(const XmlRpcValue& params, const UrdfLinkFitter& fit_
   }
 
   // Every key the node reads, in the order of config/ellipse_collision.yaml's documentation.
-  static const std::vector<std::string> kKnownKeys = {
-      "fixed_frame",      "rate",              "tf_timeout",        "padding",
-      "links",            "links_from_urdf",   "obstacles",         "allowed_pairs",
-      "self_collision",   "warning_distance",  "max_transform_age", "obstacle_timeout",
-      "max_obstacles",    "max_name_length",   "obstacle_store",    "obstacle_store_period",
-      "robot_frame",      "prediction_horizon", "marker_refresh_period", "gate"};
+  static const std::vector<std::string> kKnownKeys = {"fixed_frame",
+                                                      "rate",
+                                                      "tf_timeout",
+                                                      "padding",
+                                                      "links",
+                                                      "links_from_urdf",
+                                                      "obstacles",
+                                                      "allowed_pairs",
+                                                      "self_collision",
+                                                      "warning_distance",
+                                                      "max_transform_age",
+                                                      "obstacle_timeout",
+                                                      "max_obstacles",
+                                                      "max_name_length",
+                                                      "obstacle_store",
+                                                      "obstacle_store_period",
+                                                      "robot_frame",
+                                                      "prediction_horizon",
+                                                      "marker_refresh_period",
+                                                      "gate",
+                                                      "sources"};
   if (root.getType() == XmlRpcValue::TypeStruct) {
     if (const auto key = unknownKey(root, kKnownKeys)) {
       throw ConfigError("parameter ~" + *key + ": unknown key (expected one of " +
@@ -421,6 +521,7 @@ NodeConfig parseNodeConfig(const XmlRpcValue& params, const UrdfLinkFitter& fit_
     config.marker_refresh_period_s = readSetting(root, "marker_refresh_period");
   }
   if (has("gate")) config.monitor.gate = readGate(root["gate"]);
+  if (has("sources")) config.monitor.sources = readSources(root["sources"]);
   if (!has("links") && !has("links_from_urdf")) {
     throw ConfigError(
         "parameter ~links, key 'links': expected a list of ellipses (required unless "
@@ -501,34 +602,13 @@ app::ScanObstacleSettings parseScanObstacleSettings(const XmlRpcValue& params) {
     throw ConfigError("private namespace: expected a dict of parameters, got " +
                       describeValue(root));
   }
-  static const std::vector<std::string> kScanKeys = {
-      "cluster_distance",     "min_cluster_points", "min_radius", "range_noise_sigma",
-      "free_space_tolerance", "z_min",              "z_max",      "name_prefix"};
   if (const auto key = unknownKey(root, kScanKeys)) {
     throw ConfigError("parameter ~" + *key + ": unknown key (expected one of " +
                       app::joinText(kScanKeys, ", ") + ")");
   }
   app::ScanObstacleSettings settings;
-  for (const auto& [key, field] :
-       {std::pair<const char*, double*>{"cluster_distance", &settings.cluster_distance},
-        {"min_radius", &settings.min_radius},
-        {"range_noise_sigma", &settings.range_noise_sigma},
-        {"free_space_tolerance", &settings.free_space_tolerance},
-        {"z_min", &settings.z_min},
-        {"z_max", &settings.z_max}}) {
-    if (root.hasMember(key)) *field = readNumber(root[key], std::string("parameter ~") + key, key);
-  }
-  if (root.hasMember("min_cluster_points")) {
-    XmlRpcValue value = root["min_cluster_points"];
-    if (value.getType() != XmlRpcValue::TypeInt) {
-      fail("parameter ~min_cluster_points", "min_cluster_points", "an integer",
-           describeValue(value));
-    }
-    settings.min_cluster_points = static_cast<int&>(value);
-  }
-  if (root.hasMember("name_prefix")) {
-    settings.name_prefix = readString(root["name_prefix"], "parameter ~name_prefix", "name_prefix");
-  }
+  readScanSettings(
+      root, [](const std::string& key) { return "parameter ~" + key; }, &settings);
   if (const auto invalid = app::findInvalidSetting(settings)) {
     fail("parameter ~" + invalid->key, invalid->key, invalid->expected, invalid->actual);
   }
