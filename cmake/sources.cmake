@@ -74,6 +74,7 @@ set(ELLIPSE_COLLISION_APP_SOURCES
   src/app/scan_cut_memory.cpp
   src/app/frame_placer.cpp
   src/app/placement_cache.cpp
+  src/app/range_obstacle.cpp
   src/app/standing_obstacles.cpp
   src/app/stored_placement.cpp
   src/app/transform_lookup.cpp

@@ -133,6 +133,7 @@ ellipse_collision_add_gtest(test_app LIBRARIES ellipse_collision_app quadmath SO
   test/app/test_link_fitting.cpp
   test/app/test_marker_layout.cpp
   test/app/test_path_request.cpp
+  test/app/test_range_obstacle.cpp
   test/app/test_ellipsoid_links.cpp
   test/app/test_ellipsoid_obstacles.cpp)
 

@@ -286,6 +286,10 @@ std::string CollisionMonitor::replaceSourceObstacles(std::size_t source,
   return error;
 }
 
+void CollisionMonitor::sourceMessageRefused(std::size_t source, const std::string& why) {
+  if (source < source_errors_.size()) source_errors_[source] = why;
+}
+
 GateDecision CollisionMonitor::gateCommand(const VelocityCommand& command, double now_s,
                                            const TransformLookup& latest,
                                            const TransformAtLookup& at) {

@@ -17,17 +17,30 @@ bool isSourceName(const std::string& name) {
 
 }  // namespace
 
-const char* toString(SourceType type) { return type == SourceType::Scan ? "scan" : "ellipses"; }
+const char* toString(SourceType type) {
+  switch (type) {
+    case SourceType::Scan:
+      return "scan";
+    case SourceType::Cloud:
+      return "cloud";
+    case SourceType::Range:
+      return "range";
+    case SourceType::Ellipses:
+      break;
+  }
+  return "ellipses";
+}
 
 std::optional<FieldError> parseSourceType(const std::string& text, const std::string& key,
                                           SourceType* type) {
-  for (const SourceType candidate : {SourceType::Ellipses, SourceType::Scan}) {
+  for (const SourceType candidate :
+       {SourceType::Ellipses, SourceType::Scan, SourceType::Cloud, SourceType::Range}) {
     if (text == toString(candidate)) {
       *type = candidate;
       return std::nullopt;
     }
   }
-  return FieldError{key, "'ellipses' or 'scan'", "'" + text + "'"};
+  return FieldError{key, "'ellipses', 'scan', 'cloud' or 'range'", "'" + text + "'"};
 }
 
 std::optional<FieldError> findInvalidSources(const std::vector<SourceSpec>& sources) {
@@ -57,7 +70,7 @@ std::optional<FieldError> findInvalidSources(const std::vector<SourceSpec>& sour
             findOutsideRange(entry + ".timeout", source.timeout_s, 0.0, kMaxSourceTimeoutS)) {
       return invalid;
     }
-    if (source.type == SourceType::Scan) {
+    if (source.type != SourceType::Ellipses) {
       if (auto invalid = findInvalidSetting(source.scan)) {
         invalid->key = entry + "." + invalid->key;
         return invalid;

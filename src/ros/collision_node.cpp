@@ -369,12 +369,23 @@ void CollisionNode::subscribeSources() {
     const bool is_private = source.topic.front() == '~';
     ros::NodeHandle& handle = is_private ? private_nh_ : nh_;
     const std::string topic = is_private ? source.topic.substr(1) : source.topic;
-    if (source.type == app::SourceType::Scan) {
+    if (source.type == app::SourceType::Scan || source.type == app::SourceType::Cloud) {
       source_series_[index] = std::make_unique<app::SensorObstacleSeries>(source.scan);
+    }
+    if (source.type == app::SourceType::Scan) {
       source_subs_.push_back(handle.subscribe<sensor_msgs::LaserScan>(
           topic, 1, [this, index](const sensor_msgs::LaserScan::ConstPtr& msg) {
             onSourceScan(index, msg);
           }));
+    } else if (source.type == app::SourceType::Cloud) {
+      source_subs_.push_back(handle.subscribe<sensor_msgs::PointCloud2>(
+          topic, 1, [this, index](const sensor_msgs::PointCloud2::ConstPtr& msg) {
+            onSourceCloud(index, msg);
+          }));
+    } else if (source.type == app::SourceType::Range) {
+      source_subs_.push_back(handle.subscribe<sensor_msgs::Range>(
+          topic, 10,
+          [this, index](const sensor_msgs::Range::ConstPtr& msg) { onSourceRange(index, msg); }));
     } else {
       source_subs_.push_back(handle.subscribe<EllipseArray>(
           topic, 10,
@@ -395,13 +406,49 @@ void CollisionNode::onSourceEllipses(std::size_t source, const EllipseArray::Con
 
 void CollisionNode::onSourceScan(std::size_t source, const sensor_msgs::LaserScan::ConstPtr& msg) {
   // The same pipeline as scan_obstacles, its cuts and names kept per source.
-  const app::SensorObstacles obstacles = scanObstacles(*msg, *source_series_[source]);
+  replaceSensorObstacles(source, scanObstacles(*msg, *source_series_[source]), msg->header.stamp);
+}
+
+void CollisionNode::onSourceCloud(std::size_t source,
+                                  const sensor_msgs::PointCloud2::ConstPtr& msg) {
+  std::vector<Eigen::Vector3f> points;
+  try {
+    points = cloudPoints(*msg);
+  } catch (const std::runtime_error& error) {
+    refuseSourceMessage(source, std::string("a cloud without x, y, z: ") + error.what());
+    return;
+  }
+  replaceSensorObstacles(source, source_series_[source]->cloud(points, msg->header.frame_id),
+                         msg->header.stamp);
+}
+
+void CollisionNode::onSourceRange(std::size_t source, const sensor_msgs::Range::ConstPtr& msg) {
+  app::SensorObstacles obstacles;
+  const std::optional<app::FieldError> invalid = app::rangeObstacles(
+      fromMsg(*msg), config_.monitor.sources[source - 1].scan.min_radius, &obstacles);
+  if (invalid) {
+    refuseSourceMessage(source, app::describeFieldError("sensor_msgs/Range", *invalid));
+    return;
+  }
+  replaceSourceObstacles(source, obstacles.ellipses, msg->header.stamp);
+}
+
+void CollisionNode::replaceSensorObstacles(std::size_t source,
+                                           const app::SensorObstacles& obstacles,
+                                           const ros::Time& stamp) {
   if (!obstacles.skipped.empty()) {
     ROS_WARN_STREAM_THROTTLE(5.0, "ellipse_collision: source '"
                                       << config_.monitor.sources[source - 1].name << "' skipped "
                                       << app::joinText(obstacles.skipped, "; "));
   }
-  replaceSourceObstacles(source, obstacles.ellipses, msg->header.stamp);
+  replaceSourceObstacles(source, obstacles.ellipses, stamp);
+}
+
+void CollisionNode::refuseSourceMessage(std::size_t source, const std::string& why) {
+  monitor_->sourceMessageRefused(source, why);
+  ROS_WARN_STREAM_THROTTLE(5.0, "ellipse_collision: refused a message of source '"
+                                    << config_.monitor.sources[source - 1].name
+                                    << "', its previous obstacles kept: " << why);
 }
 
 void CollisionNode::replaceSourceObstacles(std::size_t source,

@@ -186,6 +186,16 @@ app::VelocityCommand fromMsg(const geometry_msgs::Twist& msg) {
   return command;
 }
 
+app::RangeReading fromMsg(const sensor_msgs::Range& msg) {
+  app::RangeReading reading;
+  reading.range = msg.range;
+  reading.min_range = msg.min_range;
+  reading.max_range = msg.max_range;
+  reading.field_of_view = msg.field_of_view;
+  reading.frame_id = msg.header.frame_id;
+  return reading;
+}
+
 geometry_msgs::Twist toMsg(const app::VelocityCommand& command) {
   geometry_msgs::Twist msg;
   msg.linear.x = command.linear.x();

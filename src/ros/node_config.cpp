@@ -371,8 +371,9 @@ void readScanSettings(const XmlRpcValue& root,
   }
 }
 
-/// `sources`: a list of {name, type, topic, timeout, <scan keys for type scan>}; types and
-/// required keys here, every value rule in app::findInvalidSources().
+/// `sources`: a list of {name, type, topic, timeout, <scan keys for types scan and cloud,
+/// min_radius for range>}; types and required keys here, every value rule in
+/// app::findInvalidSources().
 std::vector<app::SourceSpec> readSources(const XmlRpcValue& list) {
   const std::string where = "parameter ~sources";
   if (list.getType() != XmlRpcValue::TypeArray) {
@@ -381,6 +382,8 @@ std::vector<app::SourceSpec> readSources(const XmlRpcValue& list) {
   static const std::vector<std::string> kSourceKeys = {"name", "type", "topic", "timeout"};
   std::vector<std::string> scan_source_keys = kSourceKeys;
   scan_source_keys.insert(scan_source_keys.end(), kScanKeys.begin(), kScanKeys.end());
+  std::vector<std::string> range_source_keys = kSourceKeys;
+  range_source_keys.push_back("min_radius");
   std::vector<app::SourceSpec> sources;
   for (int i = 0; i < list.size(); ++i) {
     const std::string entry = app::entryName("sources", i);
@@ -401,13 +404,15 @@ std::vector<app::SourceSpec> readSources(const XmlRpcValue& list) {
     if (value.hasMember("timeout")) {
       source.timeout_s = readNumber(value["timeout"], where, entry + ".timeout");
     }
-    const std::vector<std::string>& keys =
-        source.type == app::SourceType::Scan ? scan_source_keys : kSourceKeys;
+    const std::vector<std::string>& keys = source.type == app::SourceType::Ellipses ? kSourceKeys
+                                           : source.type == app::SourceType::Range
+                                               ? range_source_keys
+                                               : scan_source_keys;
     if (const auto key = unknownKey(value, keys)) {
       fail(where, entry + "." + *key,
            "one of " + app::joinText(keys, ", ") + " (type " + type + ")", "an unknown key");
     }
-    if (source.type == app::SourceType::Scan) {
+    if (source.type != app::SourceType::Ellipses) {
       readScanSettings(
           value, [&](const std::string&) { return where; }, &source.scan, entry + ".");
     }

@@ -75,10 +75,19 @@ TEST(SourceList, EachViolationNamesTheEntryTheKeyAndTheValue) {
             }),
             "")
       << "scan settings are not an ellipses source's";
+  for (const SourceType type : {SourceType::Cloud, SourceType::Range}) {
+    SourceSpec spec = front;
+    spec.type = type;
+    spec.scan.min_radius = 0.0;
+    EXPECT_EQ(refusal({spec}), "sources[0].min_radius = 0") << toString(type);
+  }
 
   SourceType type = SourceType::Ellipses;
-  EXPECT_FALSE(parseSourceType("scan", "sources[0].type", &type));
-  EXPECT_EQ(type, SourceType::Scan);
+  for (const SourceType each :
+       {SourceType::Ellipses, SourceType::Scan, SourceType::Cloud, SourceType::Range}) {
+    EXPECT_FALSE(parseSourceType(toString(each), "sources[0].type", &type));
+    EXPECT_EQ(type, each);
+  }
   const auto unknown = parseSourceType("sonar", "sources[0].type", &type);
   ASSERT_TRUE(unknown);
   EXPECT_EQ(unknown->key, "sources[0].type");

@@ -518,8 +518,9 @@ TEST(NodeConfig, BadSourcesStopTheNodeNamingEntryKeyAndValue) {
   EXPECT_CONTAINS(with([](XmlRpcValue& s) { s[1]["topic"] = "front/scan"; }),
                   "key 'sources[1].topic'");
   EXPECT_CONTAINS(with([](XmlRpcValue& s) { s[0]["topic"] = ""; }), "key 'sources[0].topic'");
-  EXPECT_CONTAINS(with([](XmlRpcValue& s) { s[0]["type"] = "sonar"; }),
-                  "key 'sources[0].type': expected 'ellipses' or 'scan', got 'sonar'");
+  EXPECT_CONTAINS(
+      with([](XmlRpcValue& s) { s[0]["type"] = "sonar"; }),
+      "key 'sources[0].type': expected 'ellipses', 'scan', 'cloud' or 'range', got 'sonar'");
   EXPECT_CONTAINS(with([](XmlRpcValue& s) { s[0]["timeout"] = std::nan(""); }),
                   "key 'sources[0].timeout'");
   EXPECT_CONTAINS(with([](XmlRpcValue& s) { s[0]["timeout"] = -1.0; }), "key 'sources[0].timeout'");

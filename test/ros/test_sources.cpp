@@ -2,11 +2,16 @@
 // obstacles are named by its source and replaced by its own scans only; when the rear scanner
 // stops, the next ~check_collisions answer is incomplete and the gate INCOMPLETE, both naming it,
 // while the front scanner's obstacles keep being replaced and the rear's stay; /diagnostics shows
-// each source's rate, age and obstacle count.
+// each source's rate, age and obstacle count. A range source's reading covers the cone's arc and a
+// reading at max_range is free; a cloud source's points in its z band become obstacles.
 #include <diagnostic_msgs/DiagnosticArray.h>
 #include <geometry_msgs/Twist.h>
 #include <sensor_msgs/LaserScan.h>
+#include <sensor_msgs/PointCloud2.h>
+#include <sensor_msgs/Range.h>
+#include <sensor_msgs/point_cloud2_iterator.h>
 
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <map>
@@ -173,6 +178,103 @@ TEST_F(Sources, ASilentScannerMakesAnswersAndTheGateIncompleteNamingIt) {
       },
       5.0))
       << r.message;
+}
+
+/// A cloud in base_link: `points` (x, y, z) [m] as float32 x, y, z fields.
+sensor_msgs::PointCloud2 cloudOf(const std::vector<std::array<float, 3>>& points) {
+  sensor_msgs::PointCloud2 cloud;
+  cloud.header.frame_id = "base_link";
+  cloud.header.stamp = ros::Time::now();
+  sensor_msgs::PointCloud2Modifier modifier(cloud);
+  modifier.setPointCloud2FieldsByString(1, "xyz");
+  modifier.resize(points.size());
+  sensor_msgs::PointCloud2Iterator<float> x(cloud, "x"), y(cloud, "y"), z(cloud, "z");
+  for (const auto& p : points) {
+    *x = p[0];
+    *y = p[1];
+    *z = p[2];
+    ++x, ++y, ++z;
+  }
+  return cloud;
+}
+
+TEST_F(Sources, ARangeReadingCoversItsArcAndACloudItsPointsInTheBand) {
+  ros::Publisher sonar = nh_.advertise<sensor_msgs::Range>("/sonar/range", 5);
+  ros::Publisher depth = nh_.advertise<sensor_msgs::PointCloud2>("/depth/points", 5);
+  ASSERT_TRUE(waitUntil(
+      [&] { return sonar.getNumSubscribers() > 0 && depth.getNumSubscribers() > 0; }, 30.0));
+  Recorder<diagnostic_msgs::DiagnosticArray> diagnostics(nh_, "/diagnostics");
+  sensor_msgs::Range reading;
+  reading.header.frame_id = "base_link";
+  reading.radiation_type = sensor_msgs::Range::ULTRASOUND;
+  reading.field_of_view = 0.4f;
+  reading.min_range = 0.02f;
+  reading.max_range = 4.0f;
+  const auto probes = [&] {
+    return check({}, {ellipseMsg("probe_ahead", "base_link", 1.0, 0.0, 0.05, 0.05),
+                      ellipseMsg("probe_arc_end", "base_link", 1.0 * std::cos(0.2),
+                                 1.0 * std::sin(0.2), 0.01, 0.01),
+                      ellipseMsg("probe_right", "base_link", 0.0, -2.0, 0.1, 0.1),
+                      ellipseMsg("probe_left", "base_link", 0.0, 2.0, 0.1, 0.1)});
+  };
+
+  // Something 1 m ahead: one obstacle over the cone's arc, to its ends.
+  CheckCollisions::Response r;
+  ASSERT_TRUE(waitUntil(
+      [&] {
+        reading.header.stamp = ros::Time::now();
+        reading.range = 1.0f;
+        sonar.publish(reading);
+        r = probes();
+        return r.success && !touchedBy(r, "probe_ahead").empty();
+      },
+      10.0))
+      << r.message;
+  EXPECT_EQ(touchedBy(r, "probe_ahead"), std::vector<std::string>{"sonar/range"});
+  EXPECT_EQ(touchedBy(r, "probe_arc_end"), std::vector<std::string>{"sonar/range"});
+  // Nothing within max_range: free.
+  ASSERT_TRUE(waitUntil(
+      [&] {
+        reading.header.stamp = ros::Time::now();
+        reading.range = 4.0f;
+        sonar.publish(reading);
+        r = probes();
+        return r.success && touchedBy(r, "probe_ahead").empty();
+      },
+      10.0))
+      << "a reading at max_range is free";
+
+  // A wall segment 2 m to the right at 0.5 m height, a shelf 2 m to the left at 3 m (above z_max).
+  std::vector<std::array<float, 3>> points;
+  for (int i = -10; i <= 10; ++i) {
+    points.push_back({0.02f * static_cast<float>(i), -2.0f, 0.5f});
+    points.push_back({0.02f * static_cast<float>(i), 2.0f, 3.0f});
+  }
+  ASSERT_TRUE(waitUntil(
+      [&] {
+        depth.publish(cloudOf(points));
+        r = probes();
+        return r.success && !touchedBy(r, "probe_right").empty();
+      },
+      10.0))
+      << r.message;
+  EXPECT_TRUE(allStartWith(touchedBy(r, "probe_right"), "depth/"));
+  EXPECT_TRUE(touchedBy(r, "probe_left").empty()) << "points above z_max are not obstacles";
+
+  // A cloud without y and z is refused, its source named; the last obstacles stay.
+  sensor_msgs::PointCloud2 bad;
+  bad.header.frame_id = "base_link";
+  sensor_msgs::PointCloud2Modifier(bad).setPointCloud2Fields(1, "x", 1,
+                                                             sensor_msgs::PointField::FLOAT32);
+  depth.publish(bad);
+  EXPECT_TRUE(diagnostics.waitForLatest(
+      [](const diagnostic_msgs::DiagnosticArray& a) {
+        return !a.status.empty() &&
+               a.status[0].message.find("last message refused: source 'depth'") !=
+                   std::string::npos;
+      },
+      5.0));
+  EXPECT_TRUE(allStartWith(touchedBy(probes(), "probe_right"), "depth/"));
 }
 
 }  // namespace

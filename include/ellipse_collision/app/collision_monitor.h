@@ -166,6 +166,10 @@ class CollisionMonitor {
   /// ~obstacles within obstacle_store_period. Returns "" or why refused.
   std::string replaceSourceObstacles(std::size_t source, std::vector<EllipseSpec> specs,
                                      double stamp_s, double now_s, const TransformLookup& lookup);
+  /// A message of source `source` that could not be turned into obstacles (a cloud without x, y,
+  /// z; a broken range reading): `why` is reported for the source, and it does not count as
+  /// fresh.
+  void sourceMessageRefused(std::size_t source, const std::string& why);
   /// One ~obstacles message: replaceSourceObstacles() of source 0, received at its stamp.
   std::string replaceTopicObstacles(const std::vector<EllipseSpec>& specs, double stamp_s,
                                     const TransformLookup& lookup) {

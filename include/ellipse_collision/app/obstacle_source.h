@@ -9,11 +9,12 @@
 
 namespace ellipse_collision::app {
 
-/// What a source's messages are: ellipses as they are (ellipse_collision/EllipseArray), or a
-/// laser scan (sensor_msgs/LaserScan) turned into ellipses by the scan_obstacles pipeline.
-enum class SourceType { Ellipses, Scan };
+/// What a source's messages are: ellipses as they are (ellipse_collision/EllipseArray); a laser
+/// scan (sensor_msgs/LaserScan) or a point cloud (sensor_msgs/PointCloud2) turned into ellipses
+/// by the scan_obstacles pipeline; a sonar or IR reading (sensor_msgs/Range, rangeObstacles()).
+enum class SourceType { Ellipses, Scan, Cloud, Range };
 
-/// "ellipses" or "scan", as the `type` key spells them.
+/// "ellipses", "scan", "cloud" or "range", as the `type` key spells them.
 const char* toString(SourceType type);
 /// The type `text` names, or a FieldError of key `key`.
 std::optional<FieldError> parseSourceType(const std::string& text, const std::string& key,
@@ -28,7 +29,8 @@ struct SourceSpec {
   /// Silent for longer than this [s] makes answers incomplete and the gate INCOMPLETE;
   /// 0 = no watchdog.
   double timeout_s{0.0};
-  ScanObstacleSettings scan;  ///< the pipeline's settings (type scan only)
+  /// The pipeline's settings (types scan and cloud; range uses min_radius alone).
+  ScanObstacleSettings scan;
 };
 
 /// The default source every node has: ~obstacles, no watchdog (obstacle_timeout drops its
@@ -40,7 +42,7 @@ inline constexpr double kMaxSourceTimeoutS = 3600.0;  ///< timeout within [0, kM
 /// The first violation of the source list's rules, its key naming the entry ("sources[1].topic"):
 /// name non-empty of [A-Za-z0-9_] and used once (kDefaultSourceName included); topic non-empty
 /// and used once ("obstacles" and "~obstacles" are the default source's); timeout finite within
-/// [0, kMaxSourceTimeoutS]; a scan source's settings pass findInvalidSetting().
+/// [0, kMaxSourceTimeoutS]; a scan, cloud or range source's settings pass findInvalidSetting().
 std::optional<FieldError> findInvalidSources(const std::vector<SourceSpec>& sources);
 
 /// The name an obstacle of source `source` is stored under: "<source>/<obstacle>", so that two

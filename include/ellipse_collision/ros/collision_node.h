@@ -5,6 +5,8 @@
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
 #include <sensor_msgs/LaserScan.h>
+#include <sensor_msgs/PointCloud2.h>
+#include <sensor_msgs/Range.h>
 #include <std_srvs/SetBool.h>
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_listener.h>
@@ -65,6 +67,13 @@ class CollisionNode {
   /// from its pipeline) handed to the monitor; a refusal is logged, naming the source.
   void onSourceEllipses(std::size_t source, const EllipseArray::ConstPtr& msg);
   void onSourceScan(std::size_t source, const sensor_msgs::LaserScan::ConstPtr& msg);
+  void onSourceCloud(std::size_t source, const sensor_msgs::PointCloud2::ConstPtr& msg);
+  void onSourceRange(std::size_t source, const sensor_msgs::Range::ConstPtr& msg);
+  /// The scan pipeline's obstacles of one message of `source` (skipped clusters logged), handed on.
+  void replaceSensorObstacles(std::size_t source, const app::SensorObstacles& obstacles,
+                              const ros::Time& stamp);
+  /// A message of `source` that could not be converted: logged and reported for the source.
+  void refuseSourceMessage(std::size_t source, const std::string& why);
   void replaceSourceObstacles(std::size_t source, const std::vector<app::EllipseSpec>& specs,
                               const ros::Time& stamp);
   bool onCheckCollisions(CheckCollisions::Request& request, CheckCollisions::Response& response);
@@ -106,8 +115,8 @@ class CollisionNode {
   ros::Publisher diagnostics_pub_;
   ros::Subscriber obstacles_sub_;
   std::vector<ros::Subscriber> source_subs_;  ///< one per listed source
-  /// A scan source's pipeline state (cuts and names kept from scan to scan), by source index;
-  /// null for other sources.
+  /// A scan or cloud source's pipeline state (cuts and names kept from message to message), by
+  /// source index; null for other sources.
   std::vector<std::unique_ptr<app::SensorObstacleSeries>> source_series_;
   ros::ServiceServer check_service_;
   ros::ServiceServer add_service_;
