@@ -63,6 +63,7 @@ set(ELLIPSE_COLLISION_APP_SOURCES
   src/app/joint_chain.cpp
   src/app/link_fitting.cpp
   src/app/marker_layout.cpp
+  src/app/obstacle_source.cpp
   src/app/obstacle_store.cpp
   src/app/obstacle_persistence.cpp
   src/app/obstacle_store_writer.cpp
@@ -71,9 +72,11 @@ set(ELLIPSE_COLLISION_APP_SOURCES
   src/app/scan_name_keeper.cpp
   src/app/scan_obstacles.cpp
   src/app/sensor_obstacle_series.cpp
+  src/app/source_freshness.cpp
   src/app/scan_cut_memory.cpp
   src/app/frame_placer.cpp
   src/app/placement_cache.cpp
+  src/app/range_obstacle.cpp
   src/app/standing_obstacles.cpp
   src/app/stored_placement.cpp
   src/app/transform_lookup.cpp

@@ -155,6 +155,7 @@ ellipse_collision_add_gtest(test_app LIBRARIES ellipse_collision_app quadmath SO
   test/app/test_collision_monitor.cpp
   test/app/test_velocity_gate.cpp
   test/app/test_gate_marker_layout.cpp
+  test/app/test_obstacle_sources.cpp
   test/app/test_obstacle_store.cpp
   test/app/test_obstacle_store_writer.cpp
   test/app/test_check_health.cpp
@@ -162,6 +163,7 @@ ellipse_collision_add_gtest(test_app LIBRARIES ellipse_collision_app quadmath SO
   test/app/test_link_fitting.cpp
   test/app/test_marker_layout.cpp
   test/app/test_path_request.cpp
+  test/app/test_range_obstacle.cpp
   test/app/test_ellipsoid_links.cpp
   test/app/test_ellipsoid_obstacles.cpp
   test/app/test_obstacle_tracker.cpp
@@ -226,6 +228,8 @@ ellipse_collision_add_rostest(test_state_publishing test/ros/state_publishing.te
   test/ros/test_state_publishing.cpp)
 ellipse_collision_add_rostest(test_stale_data test/ros/stale_data.test
   test/ros/test_stale_data.cpp)
+# Several obstacle sources: two scanners in one node, one falls silent.
+ellipse_collision_add_rostest(test_sources test/ros/sources.test test/ros/test_sources.cpp)
 ellipse_collision_add_rostest(test_time_jump test/ros/time_jump.test
   test/ros/test_time_jump.cpp)
 ellipse_collision_add_rostest(test_respawn test/ros/respawn.test

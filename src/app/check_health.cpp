@@ -34,13 +34,19 @@ CheckHealth assessCheckHealth(const CheckHealthInputs& inputs) {
   if (!inputs.obstacles_error.empty()) {
     problems.push_back("last ~obstacles message refused: " + inputs.obstacles_error);
   }
+  for (const std::string& refused : inputs.source_errors) {
+    problems.push_back("last message refused: " + refused);
+  }
+  const bool silent = outcome && !outcome->silent_sources.empty();
+  if (silent) problems.push_back(joinText(outcome->silent_sources, "; "));
   if (!inputs.check_failure.empty()) problems.push_back("last check failed: " + inputs.check_failure);
   if (!inputs.store_error.empty()) problems.push_back("obstacle store: " + inputs.store_error);
 
   const bool only_waiting = !outcome && problems.size() == 1;
-  health.level = !inputs.check_failure.empty() || missing_too_long ? CheckHealth::Level::Error
-                 : problems.empty() || only_waiting                ? CheckHealth::Level::Ok
-                                                                   : CheckHealth::Level::Warn;
+  health.level = !inputs.check_failure.empty() || missing_too_long || silent
+                     ? CheckHealth::Level::Error
+                 : problems.empty() || only_waiting ? CheckHealth::Level::Ok
+                                                    : CheckHealth::Level::Warn;
   if (!problems.empty()) {
     health.message = joinText(problems, "; ");
   } else if (!outcome->collisions.empty()) {

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <iterator>
 #include <set>
+#include <stdexcept>
 #include <utility>
 
 #include "ellipse_collision/app/contact_prediction.h"
@@ -28,6 +29,16 @@ std::string findInvalidStored(const StoredObstacles& stored, double global_paddi
   return {};
 }
 
+/// ~obstacles (no watchdog), then the listed sources; throws on a list that breaks the rules.
+std::vector<SourceFreshness::Source> freshnessSources(const std::vector<SourceSpec>& sources) {
+  if (const auto invalid = findInvalidSources(sources)) {
+    throw std::invalid_argument(describeFieldError(invalid->key, *invalid));
+  }
+  std::vector<SourceFreshness::Source> all{{kDefaultSourceName, 0.0}};
+  for (const SourceSpec& source : sources) all.push_back({source.name, source.timeout_s});
+  return all;
+}
+
 }  // namespace
 
 CollisionMonitor::CollisionMonitor(MonitorSettings settings, const std::vector<EllipseSpec>& links,
@@ -36,6 +47,8 @@ CollisionMonitor::CollisionMonitor(MonitorSettings settings, const std::vector<E
     : settings_(std::move(settings)),
       hooks_(std::move(hooks)),
       registry_(links, obstacles, limits),
+      source_errors_(settings_.sources.size() + 1),
+      freshness_(freshnessSources(settings_.sources)),
       gate_(settings_.gate) {
   std::string refusal;
   const std::uint64_t service_revision = restore(store, refusal);
@@ -142,6 +155,7 @@ const CheckOutcome& CollisionMonitor::fullCheck(double now_s, const TransformLoo
     failed_check_ = std::move(outcome);
     return failed_check_;
   }
+  markSilentSources(outcome, now_s);
   predict(outcome, request, at, now_s);  // times from the state's stamp
   state_.failure.clear();
   state_.duration_s =
@@ -189,9 +203,15 @@ const CheckOutcome& CollisionMonitor::serviceCheck(const CheckRequest& request, 
   const double reference_s = stamp_s == 0.0 ? now_s : stamp_s;
   partial_check_ = runCheck(request, registry_, settings_.check, lookup, reference_s);
   if (partial_check_.error.empty()) {
+    markSilentSources(partial_check_, now_s);
     predict(partial_check_, request, at, stamp_s == 0.0 ? now_s : stamp_s);
   }
   return partial_check_;
+}
+
+void CollisionMonitor::markSilentSources(CheckOutcome& outcome, double now_s) const {
+  outcome.silent_sources = freshness_.silent(now_s);
+  if (!outcome.silent_sources.empty()) outcome.complete = false;
 }
 
 void CollisionMonitor::predict(CheckOutcome& outcome, const CheckRequest& request,
@@ -241,19 +261,35 @@ ChangeAnswer CollisionMonitor::durableAnswer(const std::string& done, std::size_
   return {ErrorKind::None, done + " " + std::to_string(count) + " obstacle(s)"};
 }
 
-std::string CollisionMonitor::replaceTopicObstacles(const std::vector<EllipseSpec>& specs,
-                                                    double stamp_s,
-                                                    const TransformLookup& lookup) {
-  std::string error = validateAttached(specs, "ellipses", settings_.check, lookup);
+std::string CollisionMonitor::replaceSourceObstacles(std::size_t source,
+                                                     std::vector<EllipseSpec> specs, double stamp_s,
+                                                     double now_s, const TransformLookup& lookup) {
+  if (source >= freshness_.size()) {
+    return "source " + std::to_string(source) + ": expected a source index below " +
+           std::to_string(freshness_.size());
+  }
+  std::string field = "ellipses";
+  if (source > 0) {
+    const std::string& name = settings_.sources[source - 1].name;
+    field = "source '" + name + "' ellipses";
+    for (EllipseSpec& spec : specs) spec.name = sourceObstacleName(name, spec.name);
+  }
+  std::string error = validateAttached(specs, field, settings_.check, lookup);
+  if (error.empty()) error = registry_.replaceTopicObstacles(specs, field, stamp_s, source);
   if (error.empty()) {
-    error = registry_.replaceTopicObstacles(specs, "ellipses", stamp_s);
-    if (error.empty()) {
+    freshness_.received(source, now_s, specs.size());
+    if (source == 0) {
+      // Only ~obstacles is expired by obstacle_timeout and kept in the store.
       topic_obstacles_expired_ = false;
       topicObstaclesChanged();
     }
   }
-  last_obstacles_error_ = error;
+  source_errors_[source] = error;
   return error;
+}
+
+void CollisionMonitor::sourceMessageRefused(std::size_t source, const std::string& why) {
+  if (source < source_errors_.size()) source_errors_[source] = why;
 }
 
 GateDecision CollisionMonitor::gateCommand(const VelocityCommand& command, double now_s,
@@ -276,6 +312,7 @@ GateView CollisionMonitor::gateView(const CheckOutcome& outcome, double now_s,
   const std::string& robot_frame = gate_.config().robot_frame;
   const auto known = outcome.frames.find(robot_frame);
   view.robot = known != outcome.frames.end() ? known->second : latest(robot_frame);
+  view.silent_sources = outcome.silent_sources;
   if (topic_obstacles_expired_) {
     view.silent_sources.push_back(
         "obstacles from ~obstacles dropped, older than obstacle_timeout " +
@@ -321,7 +358,13 @@ CollisionMonitor::Health CollisionMonitor::health(double now_s) const {
   for (const auto& [frame, since] : missing_since_) {
     inputs.missing_for_s.emplace_back(frame, now_s - since);
   }
-  inputs.obstacles_error = last_obstacles_error_;
+  inputs.obstacles_error = source_errors_[0];
+  for (std::size_t i = 1; i < source_errors_.size(); ++i) {
+    if (!source_errors_[i].empty()) {
+      inputs.source_errors.push_back("source '" + settings_.sources[i - 1].name +
+                                     "': " + source_errors_[i]);
+    }
+  }
   inputs.store_error = persistence_->lastError();
   report.health = assessCheckHealth(inputs);
 
@@ -348,6 +391,17 @@ CollisionMonitor::Health CollisionMonitor::health(double now_s) const {
                                                 : core::formatNumber(outcome.predicted.front().time));
   values.emplace_back("predicted contacts", std::to_string(outcome.predicted.size()));
   values.emplace_back("prediction notes", joinText(outcome.prediction_notes, "; "));
+  values.emplace_back("silent sources", joinText(outcome.silent_sources, "; "));
+  for (const SourceFreshness::Stats& source : freshness_.stats(now_s)) {
+    const std::string key = "source '" + source.name + "' ";
+    values.emplace_back(key + "rate [Hz]",
+                        core::formatNumber(std::round(source.rate_hz * 10) / 10));
+    values.emplace_back(key + "age [s]",
+                        source.age_s < 0.0
+                            ? std::string("no message yet")
+                            : core::formatNumber(std::round(source.age_s * 100) / 100));
+    values.emplace_back(key + "obstacles", std::to_string(source.obstacles));
+  }
   for (auto& value : gate_.healthValues()) values.push_back(std::move(value));
   return report;
 }

@@ -61,16 +61,26 @@ EllipseRegistry::EllipseRegistry(const std::vector<EllipseSpec>& links,
   for (const EllipseSpec& spec : obstacles) add(spec, EllipseSource::ConfiguredObstacle);
 }
 
+void EllipseRegistry::countTopic(std::size_t topic_source, int change) {
+  if (topic_source >= topic_counts_.size()) topic_counts_.resize(topic_source + 1, 0);
+  topic_counts_[topic_source] += static_cast<std::size_t>(change);  // -1 wraps back exactly
+}
+
 EllipseRegistry::Entries::iterator EllipseRegistry::put(const EllipseSpec& spec,
-                                                        EllipseSource source) {
-  const auto [it, inserted] = entries_.try_emplace(spec.name, StoredEllipse{spec, source});
+                                                        EllipseSource source,
+                                                        std::size_t topic_source) {
+  const StoredEllipse stored{spec, source,
+                             source == EllipseSource::TopicObstacle ? topic_source : 0};
+  const auto [it, inserted] = entries_.try_emplace(spec.name, stored);
   if (!inserted) {
     --counts_[static_cast<std::size_t>(it->second.source)];
     if (it->second.source == EllipseSource::ServiceObstacle) service_names_.erase(spec.name);
-    it->second = StoredEllipse{spec, source};
+    if (it->second.source == EllipseSource::TopicObstacle) countTopic(it->second.topic_source, -1);
+    it->second = stored;
   }
   ++counts_[static_cast<std::size_t>(source)];
   if (source == EllipseSource::ServiceObstacle) service_names_.insert(spec.name);
+  if (source == EllipseSource::TopicObstacle) countTopic(stored.topic_source, +1);
   trackOwnMotion(*it);
   return it;
 }
@@ -87,6 +97,7 @@ void EllipseRegistry::trackOwnMotion(const Entries::value_type& entry) {
 EllipseRegistry::Entries::iterator EllipseRegistry::erase(Entries::iterator it) {
   --counts_[static_cast<std::size_t>(it->second.source)];
   if (it->second.source == EllipseSource::ServiceObstacle) service_names_.erase(it->first);
+  if (it->second.source == EllipseSource::TopicObstacle) countTopic(it->second.topic_source, -1);
   if (!moving_names_.empty()) moving_names_.erase(it->first);
   return entries_.erase(it);
 }
@@ -160,18 +171,24 @@ std::string EllipseRegistry::removeObstacles(const std::vector<std::string>& nam
 }
 
 std::string EllipseRegistry::replaceTopicObstacles(const std::vector<EllipseSpec>& obstacles,
-                                                   const std::string& field, double stamp_s) {
+                                                   const std::string& field, double stamp_s,
+                                                   std::size_t topic_source) {
   std::string error = checkSpecNames(obstacles, field);
   if (!error.empty()) return error;
-  error = checkLimits(obstacles, field, count(EllipseSource::ServiceObstacle) + obstacles.size());
+  // The other sources' topic obstacles stay: they count towards the limit.
+  const std::size_t others = count(EllipseSource::TopicObstacle) - topicCount(topic_source);
+  error = checkLimits(obstacles, field,
+                      count(EllipseSource::ServiceObstacle) + others + obstacles.size());
   if (!error.empty()) return error;
   // One lookup per name, kept for the update below: a stream mostly repeats its names, and
   // those entries are rewritten in place. Erasing every topic obstacle and inserting them again
   // cost 30 ms per message of 100,000 (a node per name, the name copied, the tree rebalanced).
   std::vector<Entries::iterator> found(obstacles.size());
   std::size_t staying = 0;
-  const std::vector<Entries::iterator>& last_order = topic_order_.entries;
-  const bool same_order_known = revision_ == topic_order_.revision;
+  if (topic_source >= topic_orders_.size()) topic_orders_.resize(topic_source + 1);
+  TopicOrder& topic_order = topic_orders_[topic_source];
+  const std::vector<Entries::iterator>& last_order = topic_order.entries;
+  const bool same_order_known = revision_ == topic_order.revision;
   for (std::size_t i = 0; i < obstacles.size(); ++i) {
     const std::string& name = obstacles[i].name;
     found[i] = same_order_known && i < last_order.size() && last_order[i]->first == name
@@ -182,9 +199,13 @@ std::string EllipseRegistry::replaceTopicObstacles(const std::vector<EllipseSpec
       return entryName(field, i) + ".name = '" + obstacles[i].name +
              "': expected a name not used outside the topic, got " + describe(found[i]->second.source);
     }
+    if (found[i]->second.topic_source != topic_source) {
+      return entryName(field, i) + ".name = '" + obstacles[i].name +
+             "': expected a name not used outside the topic, got an obstacle of another source";
+    }
     ++staying;
   }
-  if (staying < count(EllipseSource::TopicObstacle)) {
+  if (staying < topicCount(topic_source)) {
     // Topic obstacles this message does not name go. Erasing other entries leaves found[] valid.
     std::unordered_set<const StoredEllipse*> named;
     named.reserve(staying);
@@ -192,23 +213,23 @@ std::string EllipseRegistry::replaceTopicObstacles(const std::vector<EllipseSpec
       if (it != entries_.end()) named.insert(&it->second);
     }
     for (auto it = entries_.begin(); it != entries_.end();) {
-      const bool goes =
-          it->second.source == EllipseSource::TopicObstacle && !named.count(&it->second);
+      const bool goes = it->second.source == EllipseSource::TopicObstacle &&
+                        it->second.topic_source == topic_source && !named.count(&it->second);
       it = goes ? erase(it) : std::next(it);
     }
   }
   for (std::size_t i = 0; i < obstacles.size(); ++i) {
     if (found[i] == entries_.end()) {
-      found[i] = put(obstacles[i], EllipseSource::TopicObstacle);
+      found[i] = put(obstacles[i], EllipseSource::TopicObstacle, topic_source);
     } else {
       found[i]->second.spec = obstacles[i];  // a topic obstacle already: the counts stay
       trackOwnMotion(*found[i]);
     }
   }
-  topic_stamp_s_ = stamp_s;
+  if (topic_source == 0) topic_stamp_s_ = stamp_s;
   ++revision_;
-  topic_order_.entries = std::move(found);
-  topic_order_.revision = revision_;
+  topic_order.entries = std::move(found);
+  topic_order.revision = revision_;
   return {};
 }
 
@@ -216,7 +237,9 @@ StoredObstacles EllipseRegistry::runtimeObstacles() const {
   StoredObstacles stored;
   for (const auto& named : entries_) {
     if (named.second.source == EllipseSource::ServiceObstacle) stored.service.push_back(named.second.spec);
-    if (named.second.source == EllipseSource::TopicObstacle) stored.topic.push_back(named.second.spec);
+    if (named.second.source == EllipseSource::TopicObstacle && named.second.topic_source == 0) {
+      stored.topic.push_back(named.second.spec);
+    }
   }
   stored.topic_stamp_s = topic_stamp_s_;
   return stored;
@@ -239,6 +262,7 @@ bool EllipseRegistry::anyTopicObstacle(const std::vector<std::string>& names) co
 std::string EllipseRegistry::restore(const StoredObstacles& stored) {
   const Entries before = entries_;
   const std::array<std::size_t, 4> counts_before = counts_;
+  const std::vector<std::size_t> topic_counts_before = topic_counts_;
   const std::set<std::string> service_names_before = service_names_;
   const double stamp_before = topic_stamp_s_;
   std::string error = addObstacles(stored.service, "service obstacles");
@@ -246,6 +270,7 @@ std::string EllipseRegistry::restore(const StoredObstacles& stored) {
   if (!error.empty()) {
     entries_ = before;
     counts_ = counts_before;
+    topic_counts_ = topic_counts_before;
     service_names_ = service_names_before;
     topic_stamp_s_ = stamp_before;
     ++revision_;
@@ -254,10 +279,10 @@ std::string EllipseRegistry::restore(const StoredObstacles& stored) {
 }
 
 std::size_t EllipseRegistry::dropExpiredTopicObstacles(double now_s, double timeout_s) {
-  if (timeout_s <= 0.0 || now_s - topic_stamp_s_ <= timeout_s) return 0;
+  if (timeout_s <= 0.0 || now_s - topic_stamp_s_ <= timeout_s || topicCount(0) == 0) return 0;
   std::size_t dropped = 0;
   for (auto it = entries_.begin(); it != entries_.end();) {
-    if (it->second.source == EllipseSource::TopicObstacle) {
+    if (it->second.source == EllipseSource::TopicObstacle && it->second.topic_source == 0) {
       it = erase(it);
       ++dropped;
       ++revision_;

@@ -208,7 +208,7 @@ GateDecision VelocityGate::decide(const VelocityCommand& command, const GateView
   if (!outcome.stale_frames.empty()) {
     missing.push_back("frames stale: " + joinText(outcome.stale_frames, ", "));
   }
-  if (!outcome.complete && missing.empty()) {
+  if (!outcome.skipped.empty() && missing.empty()) {
     missing.push_back("skipped: " + joinText(outcome.skipped, "; "));
   }
   missing.insert(missing.end(), view.silent_sources.begin(), view.silent_sources.end());

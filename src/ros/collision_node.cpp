@@ -7,6 +7,7 @@
 
 #include "ellipse_collision/core/number_format.h"
 #include "ellipse_collision/ros/conversions.h"
+#include "ellipse_collision/ros/scan_obstacles.h"
 #include "ellipse_collision/ros/tf_lookup.h"
 #include "ellipse_collision/ros/urdf_links.h"
 
@@ -110,6 +111,7 @@ CollisionNode::CollisionNode(const ros::NodeHandle& nh, const ros::NodeHandle& p
       private_nh_.advertiseService("remove_obstacles", &CollisionNode::onRemoveObstacles, this);
   path_service_ = private_nh_.advertiseService("check_path", &CollisionNode::onCheckPath, this);
   obstacles_sub_ = private_nh_.subscribe("obstacles", 10, &CollisionNode::onObstacles, this);
+  subscribeSources();
 
   // The velocity gate: always advertised (it can be enabled at run time), off by default.
   cmd_vel_pub_ = private_nh_.advertise<geometry_msgs::Twist>("cmd_vel_out", 1);
@@ -354,14 +356,128 @@ void CollisionNode::onMarkerSubscriber(const ros::SingleSubscriberPublisher& sub
 }
 
 void CollisionNode::onObstacles(const EllipseArray::ConstPtr& msg) {
-  const std::string error = monitor_->replaceTopicObstacles(
-      fromMsg(*msg), msg->header.stamp.toSec(),
-      lookup(ros::Time(0), ros::Duration(config_.tf_timeout_s)));
-  if (!error.empty()) {
-    ROS_WARN_STREAM_THROTTLE(
-        5.0,
-        "ellipse_collision: refused ~obstacles message, previous topic obstacles kept: " << error);
+  replaceSourceObstacles(0, fromMsg(*msg), msg->header.stamp);
+}
+
+void CollisionNode::subscribeSources() {
+  const std::vector<app::SourceSpec>& sources = config_.monitor.sources;
+  source_series_.resize(sources.size() + 1);
+  for (std::size_t i = 0; i < sources.size(); ++i) {
+    const app::SourceSpec& source = sources[i];
+    const std::size_t index = i + 1;
+    // "~x" is private, anything else resolves in the node's namespace.
+    const bool is_private = source.topic.front() == '~';
+    ros::NodeHandle& handle = is_private ? private_nh_ : nh_;
+    const std::string topic = is_private ? source.topic.substr(1) : source.topic;
+    if (source.type == app::SourceType::Scan || source.type == app::SourceType::Cloud) {
+      source_series_[index] =
+          std::make_unique<app::SensorObstacleSeries>(source.scan, source.tracking);
+    }
+    if (source.type == app::SourceType::Scan) {
+      source_subs_.push_back(handle.subscribe<sensor_msgs::LaserScan>(
+          topic, 1, [this, index](const sensor_msgs::LaserScan::ConstPtr& msg) {
+            onSourceScan(index, msg);
+          }));
+    } else if (source.type == app::SourceType::Cloud) {
+      source_subs_.push_back(handle.subscribe<sensor_msgs::PointCloud2>(
+          topic, 1, [this, index](const sensor_msgs::PointCloud2::ConstPtr& msg) {
+            onSourceCloud(index, msg);
+          }));
+    } else if (source.type == app::SourceType::Range) {
+      source_subs_.push_back(handle.subscribe<sensor_msgs::Range>(
+          topic, 10,
+          [this, index](const sensor_msgs::Range::ConstPtr& msg) { onSourceRange(index, msg); }));
+    } else {
+      source_subs_.push_back(handle.subscribe<EllipseArray>(
+          topic, 10,
+          [this, index](const EllipseArray::ConstPtr& msg) { onSourceEllipses(index, msg); }));
+    }
+    ROS_INFO_STREAM("ellipse_collision: source '"
+                    << source.name << "' (" << app::toString(source.type) << ") on "
+                    << source_subs_.back().getTopic() << ", "
+                    << (source.timeout_s > 0.0
+                            ? "silent after " + core::formatNumber(source.timeout_s) + " s"
+                            : std::string("no watchdog")));
   }
+}
+
+void CollisionNode::onSourceEllipses(std::size_t source, const EllipseArray::ConstPtr& msg) {
+  replaceSourceObstacles(source, fromMsg(*msg), msg->header.stamp);
+}
+
+void CollisionNode::onSourceScan(std::size_t source, const sensor_msgs::LaserScan::ConstPtr& msg) {
+  // The same pipeline as scan_obstacles, its cuts, names and tracks kept per source.
+  app::SensorObstacles obstacles = scanObstacles(*msg, *source_series_[source]);
+  trackSource(source, obstacles, msg->header, false);
+  replaceSensorObstacles(source, obstacles, msg->header.stamp);
+}
+
+void CollisionNode::onSourceCloud(std::size_t source,
+                                  const sensor_msgs::PointCloud2::ConstPtr& msg) {
+  std::vector<Eigen::Vector3f> points;
+  try {
+    points = cloudPoints(*msg);
+  } catch (const std::runtime_error& error) {
+    refuseSourceMessage(source, std::string("a cloud without x, y, z: ") + error.what());
+    return;
+  }
+  app::SensorObstacles obstacles = source_series_[source]->cloud(points, msg->header.frame_id);
+  trackSource(source, obstacles, msg->header, true);
+  replaceSensorObstacles(source, obstacles, msg->header.stamp);
+}
+
+void CollisionNode::trackSource(std::size_t source, app::SensorObstacles& obstacles,
+                                const std_msgs::Header& header, bool cloud) {
+  const std::string error =
+      trackSensorObstacles(tf_buffer_, *source_series_[source], obstacles, header, cloud);
+  if (!error.empty()) {
+    ROS_WARN_STREAM_THROTTLE(5.0, "ellipse_collision: source '"
+                                      << config_.monitor.sources[source - 1].name
+                                      << "': " << error);
+  }
+}
+
+void CollisionNode::onSourceRange(std::size_t source, const sensor_msgs::Range::ConstPtr& msg) {
+  app::SensorObstacles obstacles;
+  const std::optional<app::FieldError> invalid = app::rangeObstacles(
+      fromMsg(*msg), config_.monitor.sources[source - 1].scan.min_radius, &obstacles);
+  if (invalid) {
+    refuseSourceMessage(source, app::describeFieldError("sensor_msgs/Range", *invalid));
+    return;
+  }
+  replaceSourceObstacles(source, obstacles.ellipses, msg->header.stamp);
+}
+
+void CollisionNode::replaceSensorObstacles(std::size_t source,
+                                           const app::SensorObstacles& obstacles,
+                                           const ros::Time& stamp) {
+  if (!obstacles.skipped.empty()) {
+    ROS_WARN_STREAM_THROTTLE(5.0, "ellipse_collision: source '"
+                                      << config_.monitor.sources[source - 1].name << "' skipped "
+                                      << app::joinText(obstacles.skipped, "; "));
+  }
+  replaceSourceObstacles(source, obstacles.ellipses, stamp);
+}
+
+void CollisionNode::refuseSourceMessage(std::size_t source, const std::string& why) {
+  monitor_->sourceMessageRefused(source, why);
+  ROS_WARN_STREAM_THROTTLE(5.0, "ellipse_collision: refused a message of source '"
+                                    << config_.monitor.sources[source - 1].name
+                                    << "', its previous obstacles kept: " << why);
+}
+
+void CollisionNode::replaceSourceObstacles(std::size_t source,
+                                           const std::vector<app::EllipseSpec>& specs,
+                                           const ros::Time& stamp) {
+  const std::string error =
+      monitor_->replaceSourceObstacles(source, specs, stamp.toSec(), ros::Time::now().toSec(),
+                                       lookup(ros::Time(0), ros::Duration(config_.tf_timeout_s)));
+  if (error.empty()) return;
+  const std::string what =
+      source == 0 ? std::string("~obstacles message")
+                  : "message of source '" + config_.monitor.sources[source - 1].name + "'";
+  ROS_WARN_STREAM_THROTTLE(
+      5.0, "ellipse_collision: refused " << what << ", its previous obstacles kept: " << error);
 }
 
 bool CollisionNode::onCheckCollisions(CheckCollisions::Request& request,

@@ -114,6 +114,7 @@ void toMsg(const app::CheckOutcome& outcome, CheckCollisions::Response& response
   std::vector<std::string> notes;
   if (!outcome.skipped.empty()) notes.push_back("skipped " + app::joinText(outcome.skipped, "; "));
   if (!outcome.nearest_problem.empty()) notes.push_back(outcome.nearest_problem);
+  notes.insert(notes.end(), outcome.silent_sources.begin(), outcome.silent_sources.end());
   response.message = app::joinText(notes, "; ");
   response.collisions = toMsg(outcome.collisions);
   response.in_collision = !response.collisions.empty();
@@ -183,6 +184,16 @@ app::VelocityCommand fromMsg(const geometry_msgs::Twist& msg) {
   command.linear << msg.linear.x, msg.linear.y, msg.linear.z;
   command.angular << msg.angular.x, msg.angular.y, msg.angular.z;
   return command;
+}
+
+app::RangeReading fromMsg(const sensor_msgs::Range& msg) {
+  app::RangeReading reading;
+  reading.range = msg.range;
+  reading.min_range = msg.min_range;
+  reading.max_range = msg.max_range;
+  reading.field_of_view = msg.field_of_view;
+  reading.frame_id = msg.header.frame_id;
+  return reading;
 }
 
 geometry_msgs::Twist toMsg(const app::VelocityCommand& command) {

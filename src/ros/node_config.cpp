@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -332,6 +333,142 @@ app::GateConfig readGate(const XmlRpcValue& value) {
   return gate;
 }
 
+/// scan_obstacles' keys, in a node's private namespace or in a scan source's entry.
+const std::vector<std::string> kScanKeys = {"cluster_distance",
+                                            "min_cluster_points",
+                                            "min_radius",
+                                            "range_noise_sigma",
+                                            "free_space_tolerance",
+                                            "z_min",
+                                            "z_max",
+                                            "name_prefix"};
+
+/// The scan keys `root` holds into `settings` (types only: the ranges are findInvalidSetting()'s).
+/// `where(key)` names the place in messages, `prefix` + key the key.
+void readScanSettings(const XmlRpcValue& root,
+                      const std::function<std::string(const std::string&)>& where,
+                      app::ScanObstacleSettings* settings, const std::string& prefix = "") {
+  for (const auto& [key, field] :
+       {std::pair<const char*, double*>{"cluster_distance", &settings->cluster_distance},
+        {"min_radius", &settings->min_radius},
+        {"range_noise_sigma", &settings->range_noise_sigma},
+        {"free_space_tolerance", &settings->free_space_tolerance},
+        {"z_min", &settings->z_min},
+        {"z_max", &settings->z_max}}) {
+    if (root.hasMember(key)) *field = readNumber(root[key], where(key), prefix + key);
+  }
+  if (root.hasMember("min_cluster_points")) {
+    XmlRpcValue value = root["min_cluster_points"];
+    if (value.getType() != XmlRpcValue::TypeInt) {
+      fail(where("min_cluster_points"), prefix + "min_cluster_points", "an integer",
+           describeValue(value));
+    }
+    settings->min_cluster_points = static_cast<int&>(value);
+  }
+  if (root.hasMember("name_prefix")) {
+    settings->name_prefix =
+        readString(root["name_prefix"], where("name_prefix"), prefix + "name_prefix");
+  }
+}
+
+/// A `tracking` dict into `settings` (types only: the ranges are findInvalidSetting()'s); keys
+/// read as `prefix` + "tracking/" + key, `where(that)` names the place.
+void readTracking(const XmlRpcValue& root,
+                  const std::function<std::string(const std::string&)>& where,
+                  const std::string& prefix, app::TrackingSettings* settings) {
+  const std::string base = prefix + "tracking";
+  if (root.getType() != XmlRpcValue::TypeStruct)
+    fail(where(base), base, "a dict", describeValue(root));
+  static const std::vector<std::string> kKeys = {"enabled",       "fixed_frame",   "max_speed",
+                                                 "max_size",      "confirm_count", "min_speed",
+                                                 "position_sigma"};
+  if (const auto unknown = unknownKey(root, kKeys)) {
+    const std::string key = base + "/" + *unknown;
+    fail(where(key), key, "one of " + app::joinText(kKeys, ", "), "an unknown key");
+  }
+  const auto key = [&](const char* k) { return base + "/" + k; };
+  if (root.hasMember("enabled")) {
+    settings->enabled = readBool(root["enabled"], where(key("enabled")), key("enabled"));
+  }
+  if (root.hasMember("fixed_frame")) {
+    settings->fixed_frame =
+        readString(root["fixed_frame"], where(key("fixed_frame")), key("fixed_frame"));
+  }
+  for (const auto& [name, field] :
+       {std::pair<const char*, double*>{"max_speed", &settings->max_speed},
+        {"max_size", &settings->max_size},
+        {"min_speed", &settings->min_speed},
+        {"position_sigma", &settings->position_sigma}}) {
+    if (root.hasMember(name)) *field = readNumber(root[name], where(key(name)), key(name));
+  }
+  if (root.hasMember("confirm_count")) {
+    XmlRpcValue value = root["confirm_count"];
+    if (value.getType() != XmlRpcValue::TypeInt) {
+      fail(where(key("confirm_count")), key("confirm_count"), "an integer", describeValue(value));
+    }
+    settings->confirm_count = static_cast<int&>(value);
+  }
+}
+
+/// `sources`: a list of {name, type, topic, timeout, <scan keys for types scan and cloud,
+/// min_radius for range>}; types and required keys here, every value rule in
+/// app::findInvalidSources().
+std::vector<app::SourceSpec> readSources(const XmlRpcValue& list, const std::string& fixed_frame) {
+  const std::string where = "parameter ~sources";
+  if (list.getType() != XmlRpcValue::TypeArray) {
+    fail(where, "sources", "a list of {name, type, topic, timeout, ...}", describeValue(list));
+  }
+  static const std::vector<std::string> kSourceKeys = {"name", "type", "topic", "timeout"};
+  std::vector<std::string> scan_source_keys = kSourceKeys;
+  scan_source_keys.insert(scan_source_keys.end(), kScanKeys.begin(), kScanKeys.end());
+  scan_source_keys.push_back("tracking");
+  std::vector<std::string> range_source_keys = kSourceKeys;
+  range_source_keys.push_back("min_radius");
+  std::vector<app::SourceSpec> sources;
+  for (int i = 0; i < list.size(); ++i) {
+    const std::string entry = app::entryName("sources", i);
+    const XmlRpcValue& value = list[i];
+    if (value.getType() != XmlRpcValue::TypeStruct) {
+      fail(where, entry, "a dict {name, type, topic, timeout, ...}", describeValue(value));
+    }
+    for (const char* required : {"name", "type", "topic"}) {
+      if (!value.hasMember(required)) {
+        fail(where, entry + "." + required, "a value (required)", "nothing");
+      }
+    }
+    app::SourceSpec source;
+    source.name = readString(value["name"], where, entry + ".name");
+    const std::string type = readString(value["type"], where, entry + ".type");
+    failOn(app::parseSourceType(type, entry + ".type", &source.type), where);
+    source.topic = readString(value["topic"], where, entry + ".topic");
+    if (value.hasMember("timeout")) {
+      source.timeout_s = readNumber(value["timeout"], where, entry + ".timeout");
+    }
+    const std::vector<std::string>& keys = source.type == app::SourceType::Ellipses ? kSourceKeys
+                                           : source.type == app::SourceType::Range
+                                               ? range_source_keys
+                                               : scan_source_keys;
+    if (const auto key = unknownKey(value, keys)) {
+      fail(where, entry + "." + *key,
+           "one of " + app::joinText(keys, ", ") + " (type " + type + ")", "an unknown key");
+    }
+    if (source.type != app::SourceType::Ellipses) {
+      readScanSettings(
+          value, [&](const std::string&) { return where; }, &source.scan, entry + ".");
+    }
+    // Tracks live in the node's fixed frame unless the source says otherwise.
+    source.tracking.fixed_frame = fixed_frame;
+    if (value.hasMember("tracking")) {
+      readTracking(
+          value["tracking"], [&](const std::string&) { return where; }, entry + ".",
+          &source.tracking);
+    }
+    sources.push_back(std::move(source));
+  }
+  failOn(app::findInvalidSources(sources), where);
+  return sources;
+}
+
 }  // namespace
 
 std::string describeConfigError(const std::string& where, const app::FieldError& error) {
@@ -353,12 +490,27 @@ NodeConfig parseNodeConfig(const XmlRpcValue& params, const UrdfLinkFitter& fit_
   }
 
   // Every key the node reads, in the order of config/ellipse_collision.yaml's documentation.
-  static const std::vector<std::string> kKnownKeys = {
-      "fixed_frame",      "rate",              "tf_timeout",        "padding",
-      "links",            "links_from_urdf",   "obstacles",         "allowed_pairs",
-      "self_collision",   "warning_distance",  "max_transform_age", "obstacle_timeout",
-      "max_obstacles",    "max_name_length",   "obstacle_store",    "obstacle_store_period",
-      "robot_frame",      "prediction_horizon", "marker_refresh_period", "gate"};
+  static const std::vector<std::string> kKnownKeys = {"fixed_frame",
+                                                      "rate",
+                                                      "tf_timeout",
+                                                      "padding",
+                                                      "links",
+                                                      "links_from_urdf",
+                                                      "obstacles",
+                                                      "allowed_pairs",
+                                                      "self_collision",
+                                                      "warning_distance",
+                                                      "max_transform_age",
+                                                      "obstacle_timeout",
+                                                      "max_obstacles",
+                                                      "max_name_length",
+                                                      "obstacle_store",
+                                                      "obstacle_store_period",
+                                                      "robot_frame",
+                                                      "prediction_horizon",
+                                                      "marker_refresh_period",
+                                                      "gate",
+                                                      "sources"};
   if (root.getType() == XmlRpcValue::TypeStruct) {
     if (const auto key = unknownKey(root, kKnownKeys)) {
       throw ConfigError("parameter ~" + *key + ": unknown key (expected one of " +
@@ -421,6 +573,9 @@ NodeConfig parseNodeConfig(const XmlRpcValue& params, const UrdfLinkFitter& fit_
     config.marker_refresh_period_s = readSetting(root, "marker_refresh_period");
   }
   if (has("gate")) config.monitor.gate = readGate(root["gate"]);
+  if (has("sources")) {
+    config.monitor.sources = readSources(root["sources"], config.monitor.check.fixed_frame);
+  }
   if (!has("links") && !has("links_from_urdf")) {
     throw ConfigError(
         "parameter ~links, key 'links': expected a list of ellipses (required unless "
@@ -501,40 +656,15 @@ app::ScanObstacleSettings parseScanObstacleSettings(const XmlRpcValue& params) {
     throw ConfigError("private namespace: expected a dict of parameters, got " +
                       describeValue(root));
   }
-  static const std::vector<std::string> kScanKeys = {"cluster_distance",
-                                                     "min_cluster_points",
-                                                     "min_radius",
-                                                     "range_noise_sigma",
-                                                     "free_space_tolerance",
-                                                     "z_min",
-                                                     "z_max",
-                                                     "name_prefix",
-                                                     "tracking"};
-  if (const auto key = unknownKey(root, kScanKeys)) {
+  std::vector<std::string> keys = kScanKeys;
+  keys.push_back("tracking");
+  if (const auto key = unknownKey(root, keys)) {
     throw ConfigError("parameter ~" + *key + ": unknown key (expected one of " +
-                      app::joinText(kScanKeys, ", ") + ")");
+                      app::joinText(keys, ", ") + ")");
   }
   app::ScanObstacleSettings settings;
-  for (const auto& [key, field] :
-       {std::pair<const char*, double*>{"cluster_distance", &settings.cluster_distance},
-        {"min_radius", &settings.min_radius},
-        {"range_noise_sigma", &settings.range_noise_sigma},
-        {"free_space_tolerance", &settings.free_space_tolerance},
-        {"z_min", &settings.z_min},
-        {"z_max", &settings.z_max}}) {
-    if (root.hasMember(key)) *field = readNumber(root[key], std::string("parameter ~") + key, key);
-  }
-  if (root.hasMember("min_cluster_points")) {
-    XmlRpcValue value = root["min_cluster_points"];
-    if (value.getType() != XmlRpcValue::TypeInt) {
-      fail("parameter ~min_cluster_points", "min_cluster_points", "an integer",
-           describeValue(value));
-    }
-    settings.min_cluster_points = static_cast<int&>(value);
-  }
-  if (root.hasMember("name_prefix")) {
-    settings.name_prefix = readString(root["name_prefix"], "parameter ~name_prefix", "name_prefix");
-  }
+  readScanSettings(
+      root, [](const std::string& key) { return "parameter ~" + key; }, &settings);
   if (const auto invalid = app::findInvalidSetting(settings)) {
     fail("parameter ~" + invalid->key, invalid->key, invalid->expected, invalid->actual);
   }
@@ -552,40 +682,9 @@ app::TrackingSettings parseTrackingSettings(const XmlRpcValue& params) {
   if (params.getType() != XmlRpcValue::TypeStruct || !params.hasMember("tracking")) {
     return settings;
   }
-  XmlRpcValue root = params["tracking"];
-  if (root.getType() != XmlRpcValue::TypeStruct) {
-    fail("parameter ~tracking", "tracking", "a dict", describeValue(root));
-  }
-  static const std::vector<std::string> kKeys = {"enabled",       "fixed_frame",   "max_speed",
-                                                 "max_size",      "confirm_count", "min_speed",
-                                                 "position_sigma"};
-  if (const auto key = unknownKey(root, kKeys)) {
-    throw ConfigError("parameter ~tracking/" + *key + ": unknown key (expected one of " +
-                      app::joinText(kKeys, ", ") + ")");
-  }
-  if (root.hasMember("enabled")) {
-    settings.enabled = readBool(root["enabled"], "parameter ~tracking/enabled", "tracking/enabled");
-  }
-  if (root.hasMember("fixed_frame")) {
-    settings.fixed_frame =
-        readString(root["fixed_frame"], "parameter ~tracking/fixed_frame", "tracking/fixed_frame");
-  }
-  for (const auto& [key, field] :
-       {std::pair<const char*, double*>{"max_speed", &settings.max_speed},
-        {"max_size", &settings.max_size},
-        {"min_speed", &settings.min_speed},
-        {"position_sigma", &settings.position_sigma}}) {
-    const std::string name = std::string("tracking/") + key;
-    if (root.hasMember(key)) *field = readNumber(root[key], "parameter ~" + name, name);
-  }
-  if (root.hasMember("confirm_count")) {
-    XmlRpcValue value = root["confirm_count"];
-    if (value.getType() != XmlRpcValue::TypeInt) {
-      fail("parameter ~tracking/confirm_count", "tracking/confirm_count", "an integer",
-           describeValue(value));
-    }
-    settings.confirm_count = static_cast<int&>(value);
-  }
+  readTracking(
+      params["tracking"], [](const std::string& key) { return "parameter ~" + key; }, "",
+      &settings);
   if (const auto invalid = app::findInvalidSetting(settings)) {
     fail("parameter ~" + invalid->key, invalid->key, invalid->expected, invalid->actual);
   }

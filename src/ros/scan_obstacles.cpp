@@ -36,6 +36,30 @@ app::SensorObstacles scanObstacles(const sensor_msgs::LaserScan& scan,
                             scan.range_max, scan.header.frame_id, settings);
 }
 
+std::string trackSensorObstacles(const tf2_ros::Buffer& tf, app::SensorObstacleSeries& series,
+                                 app::SensorObstacles& obstacles, const std_msgs::Header& header,
+                                 bool cloud) {
+  if (!series.tracking().enabled) return "";
+  Eigen::Isometry3d fixed_from_sensor;
+  std::string error;
+  // The sensor's pose at the message's stamp: its own motion taken out of the centroids.
+  if (!lookupTransformSafe(tf, series.tracking().fixed_frame, header.frame_id, header.stamp,
+                           ros::Duration(0.05), fixed_from_sensor, &error)) {
+    for (app::EllipseSpec& e : obstacles.ellipses) e.vx = e.vy = e.angular_velocity = 0.0;
+    return "no velocities (every obstacle stands): " + error;
+  }
+  const Eigen::Vector3d x_axis = fixed_from_sensor.linear().col(0);
+  const core::PathPose sensor{fixed_from_sensor.translation().x(),
+                              fixed_from_sensor.translation().y(),
+                              std::atan2(x_axis.y(), x_axis.x()), 0.0};
+  if (cloud) {
+    series.trackCloud(header.stamp.toSec(), sensor, obstacles);
+  } else {
+    series.trackScan(header.stamp.toSec(), sensor, obstacles);
+  }
+  return "";
+}
+
 app::SensorObstacles scanObstacles(const sensor_msgs::LaserScan& scan,
                                    app::SensorObstacleSeries& series) {
   return series.scan(scan.ranges, scan.angle_min, scan.angle_increment, scan.range_min,
@@ -72,26 +96,8 @@ void ScanObstaclesNode::onScan(const sensor_msgs::LaserScan::ConstPtr& scan) {
 
 void ScanObstaclesNode::track(app::SensorObstacles& obstacles, const std_msgs::Header& header,
                               bool cloud) {
-  if (!series_.tracking().enabled) return;
-  Eigen::Isometry3d fixed_from_sensor;
-  std::string error;
-  // The sensor's pose at the message's stamp: its own motion taken out of the centroids.
-  if (!lookupTransformSafe(tf_buffer_, series_.tracking().fixed_frame, header.frame_id,
-                           header.stamp, ros::Duration(0.05), fixed_from_sensor, &error)) {
-    ROS_WARN_STREAM_THROTTLE(5.0,
-                             "scan_obstacles: no velocities (every obstacle stands): " << error);
-    for (app::EllipseSpec& e : obstacles.ellipses) e.vx = e.vy = e.angular_velocity = 0.0;
-    return;
-  }
-  const Eigen::Vector3d x_axis = fixed_from_sensor.linear().col(0);
-  const core::PathPose sensor{fixed_from_sensor.translation().x(),
-                              fixed_from_sensor.translation().y(),
-                              std::atan2(x_axis.y(), x_axis.x()), 0.0};
-  if (cloud) {
-    series_.trackCloud(header.stamp.toSec(), sensor, obstacles);
-  } else {
-    series_.trackScan(header.stamp.toSec(), sensor, obstacles);
-  }
+  const std::string error = trackSensorObstacles(tf_buffer_, series_, obstacles, header, cloud);
+  if (!error.empty()) ROS_WARN_STREAM_THROTTLE(5.0, "scan_obstacles: " << error);
 }
 
 void ScanObstaclesNode::onCloud(const sensor_msgs::PointCloud2::ConstPtr& cloud) {

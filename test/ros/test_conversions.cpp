@@ -192,5 +192,25 @@ TEST(Conversions, NearPairSurvivesTheRoundTripThroughTheClearanceMessage) {
   EXPECT_EQ(msgs[1].point_b.y, 4.0);
 }
 
+TEST(Conversions, ARangeMessageKeepsEveryFieldNonFiniteOnesIncluded) {
+  sensor_msgs::Range msg;
+  msg.header.frame_id = "sonar_left";
+  msg.range = 1.25f;
+  msg.min_range = 0.02f;
+  msg.max_range = 4.0f;
+  msg.field_of_view = 0.5f;
+  app::RangeReading reading = fromMsg(msg);
+  EXPECT_EQ(reading.frame_id, "sonar_left");
+  EXPECT_EQ(reading.range, 1.25);
+  EXPECT_EQ(reading.min_range, static_cast<double>(0.02f));
+  EXPECT_EQ(reading.max_range, 4.0);
+  EXPECT_EQ(reading.field_of_view, 0.5);
+  msg.range = -std::numeric_limits<float>::infinity();
+  msg.field_of_view = std::numeric_limits<float>::quiet_NaN();
+  reading = fromMsg(msg);
+  EXPECT_EQ(reading.range, -kInf);
+  EXPECT_TRUE(std::isnan(reading.field_of_view));
+}
+
 }  // namespace
 }  // namespace ellipse_collision

@@ -472,5 +472,97 @@ TEST(NodeConfig, TheGateIsOffByDefaultAndItsKeysAreReadAndRangeChecked) {
   EXPECT_NE(errorOf(q).find("expected a dict of gate parameters"), std::string::npos) << errorOf(q);
 }
 
+XmlRpcValue sourceEntry(const std::string& name, const std::string& type,
+                        const std::string& topic) {
+  XmlRpcValue e;
+  e["name"] = name;
+  e["type"] = type;
+  e["topic"] = topic;
+  return e;
+}
+
+TEST(NodeConfig, SourcesAreReadWithTheirScanSettings) {
+  XmlRpcValue p = validParams();
+  EXPECT_TRUE(parseNodeConfig(p).monitor.sources.empty()) << "only ~obstacles by default";
+  p["sources"][0] = sourceEntry("front_scan", "scan", "front/scan");
+  p["sources"][0]["timeout"] = 0.5;
+  p["sources"][0]["range_noise_sigma"] = 0.02;
+  p["sources"][0]["min_cluster_points"] = 3;
+  p["sources"][1] = sourceEntry("people", "ellipses", "~people");
+  const NodeConfig config = parseNodeConfig(p);
+  ASSERT_EQ(config.monitor.sources.size(), 2u);
+  const app::SourceSpec& front = config.monitor.sources[0];
+  EXPECT_EQ(front.name, "front_scan");
+  EXPECT_EQ(front.type, app::SourceType::Scan);
+  EXPECT_EQ(front.topic, "front/scan");
+  EXPECT_EQ(front.timeout_s, 0.5);
+  EXPECT_EQ(front.scan.range_noise_sigma, 0.02);
+  EXPECT_EQ(front.scan.min_cluster_points, 3);
+  EXPECT_EQ(front.scan.min_radius, app::ScanObstacleSettings().min_radius);
+  EXPECT_EQ(config.monitor.sources[1].type, app::SourceType::Ellipses);
+  EXPECT_EQ(config.monitor.sources[1].timeout_s, 0.0) << "no watchdog by default";
+  // Tracked by default, in the node's fixed frame; a source may say otherwise.
+  EXPECT_TRUE(front.tracking.enabled);
+  EXPECT_EQ(front.tracking.fixed_frame, config.monitor.check.fixed_frame);
+  p["sources"][0]["tracking"]["fixed_frame"] = "odom";
+  p["sources"][0]["tracking"]["confirm_count"] = 5;
+  const NodeConfig tracked = parseNodeConfig(p);
+  EXPECT_EQ(tracked.monitor.sources[0].tracking.fixed_frame, "odom");
+  EXPECT_EQ(tracked.monitor.sources[0].tracking.confirm_count, 5);
+}
+
+TEST(NodeConfig, BadSourcesStopTheNodeNamingEntryKeyAndValue) {
+  const auto with = [](void (*change)(XmlRpcValue&)) {
+    XmlRpcValue p = validParams();
+    p["sources"][0] = sourceEntry("front_scan", "scan", "front/scan");
+    p["sources"][1] = sourceEntry("rear_scan", "scan", "rear/scan");
+    change(p["sources"]);
+    return errorOf(p);
+  };
+  EXPECT_EQ(with([](XmlRpcValue&) {}), "");
+  EXPECT_CONTAINS(with([](XmlRpcValue& s) { s[1]["name"] = "front_scan"; }),
+                  "key 'sources[1].name': expected a name used by no other source, got "
+                  "'front_scan', the name of sources[0]");
+  EXPECT_CONTAINS(with([](XmlRpcValue& s) { s[1]["topic"] = "front/scan"; }),
+                  "key 'sources[1].topic'");
+  EXPECT_CONTAINS(with([](XmlRpcValue& s) { s[0]["topic"] = ""; }), "key 'sources[0].topic'");
+  EXPECT_CONTAINS(
+      with([](XmlRpcValue& s) { s[0]["type"] = "sonar"; }),
+      "key 'sources[0].type': expected 'ellipses', 'scan', 'cloud' or 'range', got 'sonar'");
+  EXPECT_CONTAINS(with([](XmlRpcValue& s) { s[0]["timeout"] = std::nan(""); }),
+                  "key 'sources[0].timeout'");
+  EXPECT_CONTAINS(with([](XmlRpcValue& s) { s[0]["timeout"] = -1.0; }), "key 'sources[0].timeout'");
+  EXPECT_CONTAINS(with([](XmlRpcValue& s) { s[0]["timeout"] = "soon"; }),
+                  "key 'sources[0].timeout': expected a number");
+  EXPECT_CONTAINS(with([](XmlRpcValue& s) { s[0]["min_radius"] = -1.0; }),
+                  "key 'sources[0].min_radius'");
+  EXPECT_CONTAINS(with([](XmlRpcValue& s) { s[1]["colour"] = "red"; }), "key 'sources[1].colour'");
+  EXPECT_CONTAINS(with([](XmlRpcValue& s) {
+                    s[1]["type"] = "ellipses";
+                    s[1]["min_radius"] = 0.1;
+                  }),
+                  "key 'sources[1].min_radius'")
+      << "scan settings belong to scan sources";
+  EXPECT_CONTAINS(with([](XmlRpcValue& s) { s[0]["tracking"]["confirm_count"] = 1; }),
+                  "key 'sources[0].tracking/confirm_count': expected a number within [2, 1000], "
+                  "got 1");
+  EXPECT_CONTAINS(with([](XmlRpcValue& s) { s[0]["tracking"]["max_sped"] = 1.0; }),
+                  "key 'sources[0].tracking/max_sped': expected one of enabled");
+  EXPECT_CONTAINS(with([](XmlRpcValue& s) {
+                    s[1]["type"] = "ellipses";
+                    s[1]["tracking"]["enabled"] = false;
+                  }),
+                  "key 'sources[1].tracking'")
+      << "tracking belongs to scan and cloud sources";
+  EXPECT_CONTAINS(with([](XmlRpcValue& s) { s[0] = XmlRpcValue("front"); }), "key 'sources[0]'");
+  XmlRpcValue no_topic = validParams();
+  no_topic["sources"][0]["name"] = "a";
+  no_topic["sources"][0]["type"] = "scan";
+  EXPECT_CONTAINS(errorOf(no_topic), "key 'sources[0].topic': expected a value (required)");
+  XmlRpcValue not_a_list = validParams();
+  not_a_list["sources"] = "front";
+  EXPECT_CONTAINS(errorOf(not_a_list), "key 'sources'");
+}
+
 }  // namespace
 }  // namespace ellipse_collision

@@ -64,7 +64,8 @@ TEST(TrackingSettings, DefaultsOverridesAndBadValuesNamingTheKey) {
   EXPECT_NE(trackingError(params).find("key 'tracking/fixed_frame'"), std::string::npos);
   params = XmlRpc::XmlRpcValue();
   params["tracking"]["max_sped"] = 1.0;
-  EXPECT_NE(trackingError(params).find("parameter ~tracking/max_sped: unknown key"),
+  EXPECT_NE(trackingError(params).find("parameter ~tracking/max_sped, key 'tracking/max_sped': "
+                                       "expected one of enabled, fixed_frame"),
             std::string::npos);
   params = XmlRpc::XmlRpcValue();
   params["tracking"] = 1.0;

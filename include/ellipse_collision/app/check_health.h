@@ -19,13 +19,16 @@ struct CheckHealthInputs {
   /// Each frame missing (unavailable or stale) at the last check, and for how long [s].
   std::vector<std::pair<std::string, double>> missing_for_s;
   std::string obstacles_error;  ///< why the last ~obstacles message was refused ("" = accepted)
+  /// Listed sources whose last message was refused: "source 'front': why".
+  std::vector<std::string> source_errors;
   std::string store_error;      ///< the obstacle store's last write failure ("" = none)
 };
 
 /// The health a safety consumer acts on (/diagnostics).
 struct CheckHealth {
   enum class Level { Ok, Warn, Error };
-  /// Error: the latest check failed, or a frame has been missing longer than kMaxMissingS.
+  /// Error: the latest check failed, a frame has been missing longer than kMaxMissingS, or an
+  /// obstacle source is silent past its timeout.
   /// Warn: anything else in `problems`. Ok: no problem, or only "no check yet".
   Level level{Level::Ok};
   /// The problems joined with "; ", or the scene's state: "in collision", "contact predicted in

@@ -48,9 +48,12 @@ struct CheckOutcome {
   std::string nearest_problem;            ///< why it was asked but not measured
   std::string error;                      ///< a bad request or a refused scene: nothing checked
   ErrorKind error_kind{ErrorKind::None};  ///< what kind of failure `error` is
-  /// Every stored ellipse was placed from fresh data: none unavailable, stale or skipped. The
-  /// one bit a safety consumer needs; false whenever the answer does not cover everything.
+  /// Every stored ellipse was placed from fresh data: none unavailable, stale or skipped, and no
+  /// obstacle source silent. The one bit a safety consumer needs; false whenever the answer does
+  /// not cover everything.
   bool complete{false};
+  /// Obstacle sources silent past their timeout ("source 'rear_scan' silent for 0.8 s ...").
+  std::vector<std::string> silent_sources;
   /// The transform each frame of this check had, looked up once (the prediction reuses them).
   std::map<std::string, FrameTransform> frames;
   /// The grid of `placed`'s obstacles (its entries from the first obstacle on) that the check

@@ -14,8 +14,10 @@
 #include "ellipse_collision/app/collision_check.h"
 #include "ellipse_collision/app/ellipse_registry.h"
 #include "ellipse_collision/app/obstacle_persistence.h"
+#include "ellipse_collision/app/obstacle_source.h"
 #include "ellipse_collision/app/path_request.h"
 #include "ellipse_collision/app/placement_cache.h"
+#include "ellipse_collision/app/source_freshness.h"
 #include "ellipse_collision/app/transform_lookup.h"
 #include "ellipse_collision/app/tunable_settings.h"
 #include "ellipse_collision/app/velocity_gate.h"
@@ -35,6 +37,9 @@ struct MonitorSettings {
   /// Longest wait before a change from ~obstacles reaches the store [s]; 0 = after every message.
   double obstacle_store_period_s{1.0};
   GateConfig gate;  ///< the velocity gate at start-up (off by default); then gate().config()
+  /// The listed obstacle sources (the node's `sources`), beside the default ~obstacles; must pass
+  /// findInvalidSources().
+  std::vector<SourceSpec> sources;
 };
 
 /// Where the runtime obstacles are kept across a crash, and the launch they belong to.
@@ -89,7 +94,8 @@ struct MonitorHooks {
 /// rule. Times are seconds on the ROS clock unless said otherwise. Single-threaded, like the node.
 class CollisionMonitor {
  public:
-  /// Throws std::invalid_argument on an empty or duplicate configured name (EllipseRegistry).
+  /// Throws std::invalid_argument on an empty or duplicate configured name (EllipseRegistry) or
+  /// a source list that breaks findInvalidSources().
   /// Restores the runtime obstacles an earlier run of the same launch left in `store` (see
   /// startupNotes()).
   CollisionMonitor(MonitorSettings settings, const std::vector<EllipseSpec>& links,
@@ -153,10 +159,24 @@ class CollisionMonitor {
   ChangeAnswer addObstacles(const std::vector<EllipseSpec>& specs, const TransformLookup& lookup);
   /// ~remove_obstacles, durable before success.
   ChangeAnswer removeObstacles(const std::vector<std::string>& names);
-  /// One ~obstacles message: it replaces every topic obstacle, or is refused whole (the previous
-  /// ones kept). The store follows within obstacle_store_period. Returns "" or why refused.
+  /// One message of obstacle source `source` (0 = ~obstacles, i = settings().sources[i - 1]),
+  /// received at `now_s`: it replaces that source's obstacles alone, or is refused whole (the
+  /// previous ones kept). A listed source's obstacles are stored under sourceObstacleName().
+  /// An accepted message counts for the source's freshness (SourceFreshness); the store follows
+  /// ~obstacles within obstacle_store_period. Returns "" or why refused.
+  std::string replaceSourceObstacles(std::size_t source, std::vector<EllipseSpec> specs,
+                                     double stamp_s, double now_s, const TransformLookup& lookup);
+  /// A message of source `source` that could not be turned into obstacles (a cloud without x, y,
+  /// z; a broken range reading): `why` is reported for the source, and it does not count as
+  /// fresh.
+  void sourceMessageRefused(std::size_t source, const std::string& why);
+  /// One ~obstacles message: replaceSourceObstacles() of source 0, received at its stamp.
   std::string replaceTopicObstacles(const std::vector<EllipseSpec>& specs, double stamp_s,
-                                    const TransformLookup& lookup);
+                                    const TransformLookup& lookup) {
+    return replaceSourceObstacles(0, specs, stamp_s, stamp_s, lookup);
+  }
+  /// The obstacle sources' freshness: ~obstacles first, then settings().sources.
+  const SourceFreshness& sourceFreshness() const { return freshness_; }
   /// The periodic store write: what the store is behind on goes to the writer's thread; the last
   /// write's error, if any, goes to the store_failed hook.
   void writeStoreIfBehind();
@@ -195,6 +215,8 @@ class CollisionMonitor {
   const CheckOutcome& fullCheck(double now_s, const TransformLookup& latest,
                                 const TransformAtLookup& at, StatePublishing publishing,
                                 const std::string& min_distance_of);
+  /// A successful check's answer is incomplete while a source is silent (SourceFreshness).
+  void markSilentSources(CheckOutcome& outcome, double now_s) const;
   /// The time-to-contact step of a successful check (nothing when the horizon is 0); predicted
   /// times count from `reference_s`.
   void predict(CheckOutcome& outcome, const CheckRequest& request, const TransformAtLookup& at,
@@ -225,7 +247,9 @@ class CollisionMonitor {
   bool state_updated_{false};
   std::vector<StartupNote> startup_notes_;
   std::unique_ptr<ObstaclePersistence> persistence_;  ///< the store's rule and its writer
-  std::string last_obstacles_error_;  ///< why the last ~obstacles message was refused, if it was
+  /// Why each source's last message was refused ("" = accepted), by source index.
+  std::vector<std::string> source_errors_;
+  SourceFreshness freshness_;
   std::uint64_t full_checks_{0};
   std::map<std::string, double> missing_since_;  ///< frame -> first full check it was missing
   double last_now_s_{0.0};                       ///< time of the last check, to see jumps back

@@ -20,6 +20,9 @@ enum class EllipseSource { ConfiguredLink, ConfiguredObstacle, ServiceObstacle, 
 struct StoredEllipse {
   EllipseSpec spec;
   EllipseSource source{EllipseSource::ConfiguredLink};
+  /// A topic obstacle's source (0 = ~obstacles, i = the node's sources[i - 1]); its messages
+  /// replace the obstacles of that source alone. 0 for every other entry.
+  std::size_t topic_source{0};
   core::EllipseRole role() const {
     return source == EllipseSource::ConfiguredLink ? core::EllipseRole::Link : core::EllipseRole::Obstacle;
   }
@@ -39,7 +42,10 @@ struct RegistryLimits {
 ///
 /// Names are unique across links and obstacles. Links come only from the configuration and are
 /// never replaced or removed. The service may add, replace and remove obstacles, except those owned
-/// by the topic; each topic message replaces all topic obstacles and may not reuse another name.
+/// by the topic; each topic message replaces the topic obstacles of its source (0 = ~obstacles) and
+/// may not reuse another name, another source's included. Stamp, expiry and the store's topic
+/// obstacles are those of source 0: a sensor source is not restored after a restart (its next
+/// message brings it back, and its watchdog covers the time until then).
 class EllipseRegistry {
  public:
   /// Configured links and obstacles; throws std::invalid_argument on an empty or duplicate name.
@@ -49,15 +55,19 @@ class EllipseRegistry {
   /// `field` prefixes messages ("obstacles" -> "obstacles[1].name = ...").
   std::string addObstacles(const std::vector<EllipseSpec>& obstacles, const std::string& field);
   std::string removeObstacles(const std::vector<std::string>& names, const std::string& field);
-  /// `stamp_s` is the message's observation time [s] (see dropExpiredTopicObstacles()).
+  /// `stamp_s` is the message's observation time [s] (see dropExpiredTopicObstacles());
+  /// `topic_source` the source whose obstacles it replaces (StoredEllipse::topic_source).
   std::string replaceTopicObstacles(const std::vector<EllipseSpec>& obstacles,
-                                    const std::string& field, double stamp_s = 0.0);
+                                    const std::string& field, double stamp_s = 0.0,
+                                    std::size_t topic_source = 0);
 
   /// The obstacle-timeout rule: when `timeout_s` > 0 and the topic obstacles' stamp is more than
-  /// `timeout_s` before `now_s` (or the stamp is 0, unknown), every topic obstacle is dropped.
+  /// `timeout_s` before `now_s` (or the stamp is 0, unknown), every topic obstacle of source 0
+  /// (~obstacles) is dropped.
   /// Returns how many were dropped (0 when nothing expired or there were none).
   std::size_t dropExpiredTopicObstacles(double now_s, double timeout_s);
-  /// The runtime obstacles (service and topic, with the topic stamp) for the obstacle store.
+  /// The runtime obstacles (service and source 0's topic obstacles, with the topic stamp) for the
+  /// obstacle store.
   StoredObstacles runtimeObstacles() const;
   /// The service obstacles alone (no topic obstacles, no stamp): the store's service record.
   StoredObstacles serviceObstacles() const;
@@ -73,6 +83,10 @@ class EllipseRegistry {
   const std::map<std::string, StoredEllipse>& entries() const { return entries_; }
   bool contains(const std::string& name) const { return entries_.count(name) != 0; }
   std::size_t count(EllipseSource source) const { return counts_[static_cast<std::size_t>(source)]; }
+  /// The topic obstacles of source `topic_source` (StoredEllipse::topic_source).
+  std::size_t topicCount(std::size_t topic_source) const {
+    return topic_source < topic_counts_.size() ? topic_counts_[topic_source] : 0;
+  }
   /// The entries with an own velocity (vx, vy or angular_velocity not 0): the velocity gate looks
   /// these up by name, and every other obstacle stands (an empty set for most scenes).
   const std::set<std::string>& movingNames() const { return moving_names_; }
@@ -89,7 +103,10 @@ class EllipseRegistry {
   using Entries = std::map<std::string, StoredEllipse>;
   /// `spec` under its name, from `source`, in place of any entry of that name; keeps counts_.
   /// Returns the entry.
-  Entries::iterator put(const EllipseSpec& spec, EllipseSource source);
+  Entries::iterator put(const EllipseSpec& spec, EllipseSource source,
+                        std::size_t topic_source = 0);
+  /// Keeps topic_counts_ when a topic obstacle of `topic_source` comes (+1) or goes (-1).
+  void countTopic(std::size_t topic_source, int change);
   /// Keeps moving_names_ for an entry just written.
   void trackOwnMotion(const Entries::value_type& entry);
   /// Erases the entry at `it` and returns the next; keeps counts_.
@@ -99,6 +116,7 @@ class EllipseRegistry {
   /// Entries per EllipseSource: every request checks the runtime obstacles against max_obstacles,
   /// and counting them in the map took 2 ms each at 100,000.
   std::array<std::size_t, 4> counts_{};
+  std::vector<std::size_t> topic_counts_;  ///< topic obstacles per topic_source
   /// The service obstacles' names, for serviceObstacles(): a service call's record is written
   /// from them without walking a perception stream's 100,000 topic obstacles (1.4-4 ms).
   std::set<std::string> service_names_;
@@ -124,7 +142,8 @@ class EllipseRegistry {
     TopicOrder(TopicOrder&&) = default;
     TopicOrder& operator=(TopicOrder&&) = default;
   };
-  TopicOrder topic_order_;
+  /// Per topic_source; valid only while no other change came between two messages of it.
+  std::vector<TopicOrder> topic_orders_;
 };
 
 }  // namespace ellipse_collision::app

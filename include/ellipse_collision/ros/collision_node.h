@@ -4,6 +4,9 @@
 #include <geometry_msgs/Twist.h>
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
+#include <sensor_msgs/LaserScan.h>
+#include <sensor_msgs/PointCloud2.h>
+#include <sensor_msgs/Range.h>
 #include <std_srvs/SetBool.h>
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_listener.h>
@@ -15,6 +18,7 @@
 #include <vector>
 
 #include "ellipse_collision/app/collision_monitor.h"
+#include "ellipse_collision/app/sensor_obstacle_series.h"
 #include "ellipse_collision/core/scene_check.h"
 #include "ellipse_collision/ros/collision_markers.h"
 #include "ellipse_collision/ros/gate_markers.h"
@@ -57,6 +61,24 @@ class CollisionNode {
   void onDiagnosticsTimer(const ros::TimerEvent& event);
   void onMarkerSubscriber(const ros::SingleSubscriberPublisher& subscriber);
   void onObstacles(const EllipseArray::ConstPtr& msg);
+  /// Subscribes to every listed source (`sources`): source i + 1 of the monitor is sources[i].
+  void subscribeSources();
+  /// One message of source `source` (an ellipses source's EllipseArray, a scan source's ellipses
+  /// from its pipeline) handed to the monitor; a refusal is logged, naming the source.
+  void onSourceEllipses(std::size_t source, const EllipseArray::ConstPtr& msg);
+  void onSourceScan(std::size_t source, const sensor_msgs::LaserScan::ConstPtr& msg);
+  void onSourceCloud(std::size_t source, const sensor_msgs::PointCloud2::ConstPtr& msg);
+  /// The tracked velocities of a scan or cloud source's obstacles (trackSensorObstacles()).
+  void trackSource(std::size_t source, app::SensorObstacles& obstacles,
+                   const std_msgs::Header& header, bool cloud);
+  void onSourceRange(std::size_t source, const sensor_msgs::Range::ConstPtr& msg);
+  /// The scan pipeline's obstacles of one message of `source` (skipped clusters logged), handed on.
+  void replaceSensorObstacles(std::size_t source, const app::SensorObstacles& obstacles,
+                              const ros::Time& stamp);
+  /// A message of `source` that could not be converted: logged and reported for the source.
+  void refuseSourceMessage(std::size_t source, const std::string& why);
+  void replaceSourceObstacles(std::size_t source, const std::vector<app::EllipseSpec>& specs,
+                              const ros::Time& stamp);
   bool onCheckCollisions(CheckCollisions::Request& request, CheckCollisions::Response& response);
   bool onAddObstacles(AddObstacles::Request& request, AddObstacles::Response& response);
   bool onRemoveObstacles(RemoveObstacles::Request& request, RemoveObstacles::Response& response);
@@ -95,6 +117,10 @@ class CollisionNode {
   ros::Publisher markers_pub_;
   ros::Publisher diagnostics_pub_;
   ros::Subscriber obstacles_sub_;
+  std::vector<ros::Subscriber> source_subs_;  ///< one per listed source
+  /// A scan or cloud source's pipeline state (cuts and names kept from message to message), by
+  /// source index; null for other sources.
+  std::vector<std::unique_ptr<app::SensorObstacleSeries>> source_series_;
   ros::ServiceServer check_service_;
   ros::ServiceServer add_service_;
   ros::ServiceServer remove_service_;

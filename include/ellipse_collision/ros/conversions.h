@@ -1,6 +1,7 @@
 #pragma once
 
 #include <geometry_msgs/Twist.h>
+#include <sensor_msgs/Range.h>
 
 #include <string>
 #include <vector>
@@ -8,6 +9,7 @@
 #include "ellipse_collision/app/collision_check.h"
 #include "ellipse_collision/app/ellipse_spec.h"
 #include "ellipse_collision/app/path_request.h"
+#include "ellipse_collision/app/range_obstacle.h"
 #include "ellipse_collision/app/velocity_gate.h"
 #include "ellipse_collision/core/contact_prediction.h"
 #include "ellipse_collision/core/scene_check.h"
@@ -54,6 +56,9 @@ std::vector<PredictedContact> toMsg(const std::vector<core::PredictedContact>& p
 
 /// Component by component; no validation (see app::findInvalidCommand()).
 app::VelocityCommand fromMsg(const geometry_msgs::Twist& msg);
+
+/// A ranger's reading as it is (radiation_type is not used: sonar and IR alike).
+app::RangeReading fromMsg(const sensor_msgs::Range& msg);
 geometry_msgs::Twist toMsg(const app::VelocityCommand& command);
 
 /// The gate's decision as ~gate_state shows it (header left to the caller).

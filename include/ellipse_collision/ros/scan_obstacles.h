@@ -7,6 +7,7 @@
 #include <tf2_ros/transform_listener.h>
 
 #include <Eigen/Core>
+#include <string>
 #include <vector>
 
 #include "ellipse_collision/app/scan_obstacles.h"
@@ -28,6 +29,14 @@ app::SensorObstacles scanObstacles(const sensor_msgs::LaserScan& scan,
 /// The ellipses of the next LaserScan of `series` (its header's frame).
 app::SensorObstacles scanObstacles(const sensor_msgs::LaserScan& scan,
                                    app::SensorObstacleSeries& series);
+
+/// Puts the tracked velocities on `obstacles`, the last scan's (or, `cloud`, cloud's) of `series`
+/// with `header`: the sensor's pose in series.tracking().fixed_frame from tf at the stamp
+/// (app::ObstacleTracker). Without that transform every obstacle stands and the reason is
+/// returned; "" when tracked or tracking is off.
+std::string trackSensorObstacles(const tf2_ros::Buffer& tf, app::SensorObstacleSeries& series,
+                                 app::SensorObstacles& obstacles, const std_msgs::Header& header,
+                                 bool cloud);
 
 /// scan_obstacles: turns `scan` (sensor_msgs/LaserScan) and `cloud` (sensor_msgs/PointCloud2,
 /// points within a z band) into obstacle ellipses on `obstacles` (EllipseArray, header = the

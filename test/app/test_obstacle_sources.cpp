@@ -1,0 +1,280 @@
+// Several obstacle sources without a master: the source list's rules, each source's messages
+// replacing only its own obstacles in the registry, and the freshness rule (a silent source makes
+// answers incomplete and the gate INCOMPLETE, naming it).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "ellipse_collision/app/collision_monitor.h"
+#include "ellipse_collision/app/obstacle_source.h"
+#include "ellipse_collision/app/source_freshness.h"
+#include "spec_builders.h"
+
+namespace ellipse_collision::app {
+namespace {
+
+using test::circle;
+
+SourceSpec source(const std::string& name, SourceType type, const std::string& topic,
+                  double timeout_s) {
+  SourceSpec spec;
+  spec.name = name;
+  spec.type = type;
+  spec.topic = topic;
+  spec.timeout_s = timeout_s;
+  return spec;
+}
+
+/// "key = actual" of the first violation, or "" when the list is accepted.
+std::string refusal(const std::vector<SourceSpec>& sources) {
+  const auto invalid = findInvalidSources(sources);
+  return invalid ? invalid->key + " = " + invalid->actual : "";
+}
+
+TEST(SourceList, EachViolationNamesTheEntryTheKeyAndTheValue) {
+  const SourceSpec front = source("front_scan", SourceType::Scan, "front/scan", 0.5);
+  const SourceSpec rear = source("rear_scan", SourceType::Scan, "rear/scan", 0.5);
+  EXPECT_EQ(refusal({}), "");
+  EXPECT_EQ(refusal({front, rear}), "");
+
+  SourceSpec twin = rear;
+  twin.name = "front_scan";
+  EXPECT_EQ(refusal({front, twin}), "sources[1].name = 'front_scan', the name of sources[0]");
+  SourceSpec same_topic = rear;
+  same_topic.topic = "front/scan";
+  EXPECT_EQ(refusal({front, same_topic}),
+            "sources[1].topic = 'front/scan', the topic of sources[0]");
+  SourceSpec default_name = rear;
+  default_name.name = kDefaultSourceName;
+  EXPECT_NE(refusal({default_name}).find("sources[0].name = 'obstacles'"), std::string::npos);
+  SourceSpec default_topic = rear;
+  default_topic.topic = "~obstacles";
+  EXPECT_NE(refusal({default_topic}).find("sources[0].topic = '~obstacles'"), std::string::npos);
+
+  const auto changed = [&](void (*change)(SourceSpec&)) {
+    SourceSpec spec = front;
+    change(spec);
+    return refusal({spec});
+  };
+  EXPECT_EQ(changed([](SourceSpec& s) { s.name = ""; }), "sources[0].name = ''");
+  EXPECT_EQ(changed([](SourceSpec& s) { s.name = "front/scan"; }),
+            "sources[0].name = 'front/scan'");
+  EXPECT_EQ(changed([](SourceSpec& s) { s.topic = ""; }), "sources[0].topic = ''");
+  EXPECT_EQ(changed([](SourceSpec& s) { s.timeout_s = NAN; }), "sources[0].timeout = nan");
+  EXPECT_EQ(changed([](SourceSpec& s) { s.timeout_s = INFINITY; }), "sources[0].timeout = inf");
+  EXPECT_EQ(changed([](SourceSpec& s) { s.timeout_s = -0.1; }), "sources[0].timeout = -0.1");
+  EXPECT_EQ(changed([](SourceSpec& s) { s.timeout_s = 0.0; }), "") << "0 = no watchdog";
+  EXPECT_EQ(changed([](SourceSpec& s) { s.scan.min_radius = -1.0; }), "sources[0].min_radius = -1");
+  EXPECT_EQ(changed([](SourceSpec& s) {
+              s.type = SourceType::Ellipses;
+              s.scan.min_radius = -1.0;
+            }),
+            "")
+      << "scan settings are not an ellipses source's";
+  for (const SourceType type : {SourceType::Cloud, SourceType::Range}) {
+    SourceSpec spec = front;
+    spec.type = type;
+    spec.scan.min_radius = 0.0;
+    EXPECT_EQ(refusal({spec}), "sources[0].min_radius = 0") << toString(type);
+  }
+
+  SourceType type = SourceType::Ellipses;
+  for (const SourceType each :
+       {SourceType::Ellipses, SourceType::Scan, SourceType::Cloud, SourceType::Range}) {
+    EXPECT_FALSE(parseSourceType(toString(each), "sources[0].type", &type));
+    EXPECT_EQ(type, each);
+  }
+  const auto unknown = parseSourceType("sonar", "sources[0].type", &type);
+  ASSERT_TRUE(unknown);
+  EXPECT_EQ(unknown->key, "sources[0].type");
+  EXPECT_EQ(unknown->actual, "'sonar'");
+}
+
+TEST(SourceList, AMonitorRefusesAListThatBreaksTheRules) {
+  MonitorSettings settings;
+  settings.sources = {source("a", SourceType::Ellipses, "x", 0.0),
+                      source("b", SourceType::Ellipses, "x", 0.0)};
+  EXPECT_THROW(CollisionMonitor(settings, {}, {}, {}, {}), std::invalid_argument);
+}
+
+TEST(SourceRegistry, AMessageReplacesOnlyItsOwnSourcesObstacles) {
+  EllipseRegistry registry({circle("base", "map", 0, 0, 0.1)}, {});
+  ASSERT_EQ(registry.replaceTopicObstacles(
+                {circle("a/1", "map", 1, 0, 0.1), circle("a/2", "map", 2, 0, 0.1)}, "a", 1.0, 1),
+            "");
+  ASSERT_EQ(registry.replaceTopicObstacles({circle("b/1", "map", 0, 1, 0.1)}, "b", 1.0, 2), "");
+  ASSERT_EQ(registry.replaceTopicObstacles({circle("rock", "map", 5, 0, 0.1)}, "ellipses", 1.0),
+            "");
+  // Source a's next message has one obstacle: its second goes, b's and ~obstacles' stay.
+  ASSERT_EQ(registry.replaceTopicObstacles({circle("a/1", "map", 1.5, 0, 0.1)}, "a", 2.0, 1), "");
+  EXPECT_FALSE(registry.contains("a/2"));
+  EXPECT_TRUE(registry.contains("b/1"));
+  EXPECT_TRUE(registry.contains("rock"));
+  EXPECT_DOUBLE_EQ(registry.entries().at("a/1").spec.x, 1.5);
+  EXPECT_EQ(registry.topicCount(0), 1u);
+  EXPECT_EQ(registry.topicCount(1), 1u);
+  EXPECT_EQ(registry.topicCount(2), 1u);
+  EXPECT_EQ(registry.count(EllipseSource::TopicObstacle), 3u);
+  // An empty message of b clears b alone.
+  ASSERT_EQ(registry.replaceTopicObstacles({}, "b", 3.0, 2), "");
+  EXPECT_FALSE(registry.contains("b/1"));
+  EXPECT_TRUE(registry.contains("a/1"));
+  EXPECT_EQ(registry.topicCount(2), 0u);
+
+  // A name of another source is refused whole, naming it; nothing changes.
+  const std::string error =
+      registry.replaceTopicObstacles({circle("a/1", "map", 9, 9, 0.1)}, "b", 4.0, 2);
+  EXPECT_NE(error.find("b[0].name = 'a/1'"), std::string::npos) << error;
+  EXPECT_NE(error.find("another source"), std::string::npos) << error;
+  EXPECT_DOUBLE_EQ(registry.entries().at("a/1").spec.x, 1.5);
+
+  // Only ~obstacles (source 0) is stored and expires by obstacle_timeout.
+  const StoredObstacles stored = registry.runtimeObstacles();
+  ASSERT_EQ(stored.topic.size(), 1u);
+  EXPECT_EQ(stored.topic[0].name, "rock");
+  EXPECT_EQ(registry.dropExpiredTopicObstacles(100.0, 1.0), 1u);
+  EXPECT_FALSE(registry.contains("rock"));
+  EXPECT_TRUE(registry.contains("a/1"));
+}
+
+TEST(SourceRegistry, TheLimitCountsEverySourcesObstacles) {
+  RegistryLimits limits;
+  limits.max_obstacles = 3;
+  EllipseRegistry registry({}, {}, limits);
+  ASSERT_EQ(registry.replaceTopicObstacles(
+                {circle("a/1", "map", 1, 0, 0.1), circle("a/2", "map", 2, 0, 0.1)}, "a", 1.0, 1),
+            "");
+  EXPECT_NE(registry.replaceTopicObstacles(
+                {circle("b/1", "map", 0, 1, 0.1), circle("b/2", "map", 0, 2, 0.1)}, "b", 1.0, 2),
+            "");
+  EXPECT_EQ(registry.replaceTopicObstacles({circle("b/1", "map", 0, 1, 0.1)}, "b", 1.0, 2), "");
+  EXPECT_EQ(registry.replaceTopicObstacles(
+                {circle("a/1", "map", 1, 0, 0.1), circle("a/2", "map", 2, 0, 0.1)}, "a", 2.0, 1),
+            "")
+      << "a's own obstacles are replaced, not added to";
+}
+
+TEST(SourceFreshness, ASourceIsSilentOnlyPastItsTimeout) {
+  SourceFreshness freshness({{"obstacles", 0.0}, {"front", 0.5}, {"rear", 0.5}});
+  EXPECT_EQ(freshness.silent(0.0),
+            (std::vector<std::string>{"source 'front' silent: no message yet",
+                                      "source 'rear' silent: no message yet"}));
+  for (int i = 0; i <= 10; ++i) {
+    freshness.received(1, 1.0 + 0.1 * i, 4);
+    freshness.received(2, 1.0 + 0.1 * i, 2);
+  }
+  EXPECT_TRUE(freshness.silent(2.5).empty()) << "0.5 s after the last message is not past 0.5 s";
+  freshness.received(1, 2.8, 5);
+  EXPECT_EQ(freshness.silent(2.8),
+            std::vector<std::string>{"source 'rear' silent for 0.8 s (timeout 0.5 s)"});
+  const std::vector<SourceFreshness::Stats> stats = freshness.stats(2.8);
+  ASSERT_EQ(stats.size(), 3u);
+  EXPECT_EQ(stats[0].age_s, -1.0) << "~obstacles: no message";
+  EXPECT_EQ(stats[1].obstacles, 5u);
+  EXPECT_EQ(stats[2].obstacles, 2u);
+  EXPECT_NEAR(stats[2].rate_hz, 10.0, 1e-9) << "9 intervals of 0.1 s";
+  EXPECT_NEAR(stats[2].age_s, 0.8, 1e-9);
+  EXPECT_EQ(stats[2].messages, 11u);
+  EXPECT_TRUE(freshness.silent(1e9).size() == 2u) << "~obstacles has no watchdog";
+}
+
+MonitorSettings twoSources() {
+  MonitorSettings settings;
+  settings.check.fixed_frame = "map";
+  settings.gate.enabled = true;
+  settings.gate.timing.horizon = 3.0;
+  settings.gate.timing.time_before_collision = 1.0;
+  settings.gate.timing.stop_time = 0.3;
+  settings.sources = {source("front_scan", SourceType::Scan, "front/scan", 0.5),
+                      source("rear_scan", SourceType::Scan, "rear/scan", 0.5)};
+  return settings;
+}
+
+TransformLookup everyFrameAtOrigin() {
+  return [](const std::string&) {
+    FrameTransform t;
+    t.ok = true;
+    return t;
+  };
+}
+
+TransformAtLookup everyFrameAtOriginAt() {
+  return [](const std::string&, double) {
+    FrameTransform t;
+    t.ok = true;
+    return t;
+  };
+}
+
+TEST(SourceFreshness, ASilentSourceMakesAnswersIncompleteAndTheGateIncompleteNamingIt) {
+  CollisionMonitor monitor(twoSources(), {circle("body", "base_link", 0, 0, 0.3)}, {}, {}, {});
+  const TransformLookup frames = everyFrameAtOrigin();
+  const auto send = [&](std::size_t source, double now_s, double x) {
+    return monitor.replaceSourceObstacles(source, {circle("scan_0", "map", x, 3.0, 0.1)}, now_s,
+                                          now_s, frames);
+  };
+  VelocityCommand forward;
+  forward.linear.x() = 0.2;
+  for (double t = 1.0; t < 1.45; t += 0.1) {
+    ASSERT_EQ(send(1, t, 1.0), "");
+    ASSERT_EQ(send(2, t, -1.0), "");
+  }
+  const CheckOutcome& fresh = monitor.serviceCheck({}, 0.0, 1.5, frames, everyFrameAtOriginAt());
+  EXPECT_TRUE(fresh.complete);
+  EXPECT_TRUE(fresh.silent_sources.empty());
+  EXPECT_TRUE(monitor.registry().contains("front_scan/scan_0"));
+  EXPECT_TRUE(monitor.registry().contains("rear_scan/scan_0"));
+  EXPECT_EQ(monitor.gateCommand(forward, 1.5, frames, everyFrameAtOriginAt()).action,
+            GateAction::Pass);
+
+  // The rear scanner stops; the front one goes on, and its obstacle moves.
+  for (double t = 1.5; t < 2.25; t += 0.1) ASSERT_EQ(send(1, t, 1.0 + t), "");
+  const CheckOutcome& blind = monitor.serviceCheck({}, 0.0, 2.2, frames, everyFrameAtOriginAt());
+  EXPECT_FALSE(blind.complete);
+  ASSERT_EQ(blind.silent_sources.size(), 1u);
+  EXPECT_EQ(blind.silent_sources[0], "source 'rear_scan' silent for 0.8 s (timeout 0.5 s)");
+  EXPECT_NEAR(monitor.registry().entries().at("front_scan/scan_0").spec.x, 3.2, 1e-9);
+  EXPECT_TRUE(monitor.registry().contains("rear_scan/scan_0")) << "kept, not dropped";
+  const GateDecision stopped = monitor.gateCommand(forward, 2.2, frames, everyFrameAtOriginAt());
+  EXPECT_EQ(stopped.action, GateAction::Incomplete);
+  EXPECT_NE(stopped.reason.find("source 'rear_scan' silent for 0.8 s"), std::string::npos)
+      << stopped.reason;
+  const CollisionMonitor::Health health = monitor.health(2.2);
+  EXPECT_EQ(health.health.level, CheckHealth::Level::Error);
+  const std::map<std::string, std::string> values(health.values.begin(), health.values.end());
+  EXPECT_EQ(values.at("source 'rear_scan' age [s]"), "0.8");
+  EXPECT_EQ(values.at("source 'front_scan' obstacles"), "1");
+  EXPECT_EQ(values.at("source 'front_scan' rate [Hz]"), "10");
+  EXPECT_EQ(values.at("source 'obstacles' age [s]"), "no message yet");
+
+  // A partial check is incomplete too; the next rear message makes everything fresh again.
+  CheckRequest partial;
+  partial.names = {"body"};
+  EXPECT_FALSE(monitor.serviceCheck(partial, 0.0, 2.2, frames, everyFrameAtOriginAt()).complete);
+  ASSERT_EQ(send(2, 2.3, -1.0), "");
+  EXPECT_TRUE(monitor.serviceCheck({}, 0.0, 2.3, frames, everyFrameAtOriginAt()).complete);
+  EXPECT_EQ(monitor.gateCommand(forward, 2.3, frames, everyFrameAtOriginAt()).action,
+            GateAction::Pass);
+}
+
+TEST(SourceFreshness, ARefusedMessageIsNotFreshAndIsReportedForItsSource) {
+  CollisionMonitor monitor(twoSources(), {circle("body", "base_link", 0, 0, 0.3)}, {}, {}, {});
+  const TransformLookup frames = everyFrameAtOrigin();
+  app::EllipseSpec bad = circle("scan_0", "map", 1, 0, 0.1);
+  bad.radius_x = NAN;
+  const std::string error = monitor.replaceSourceObstacles(1, {bad}, 1.0, 1.0, frames);
+  EXPECT_NE(error.find("source 'front_scan' ellipses[0].radius_x"), std::string::npos) << error;
+  EXPECT_EQ(monitor.sourceFreshness().stats(1.0)[1].messages, 0u);
+  monitor.periodicCheck(1.0, frames, everyFrameAtOriginAt());
+  const std::string message = monitor.health(1.0).health.message;
+  EXPECT_NE(message.find("last message refused: source 'front_scan'"), std::string::npos)
+      << message;
+  EXPECT_NE(monitor.replaceSourceObstacles(3, {}, 1.0, 1.0, frames), "") << "no such source";
+}
+
+}  // namespace
+}  // namespace ellipse_collision::app
