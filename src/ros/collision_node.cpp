@@ -428,8 +428,9 @@ void CollisionNode::onSourceCloud(std::size_t source,
 
 void CollisionNode::trackSource(std::size_t source, app::SensorObstacles& obstacles,
                                 const std_msgs::Header& header, bool cloud) {
-  const std::string error =
-      trackSensorObstacles(tf_buffer_, *source_series_[source], obstacles, header, cloud);
+  // No wait: the node's one callback thread also gates commands.
+  const std::string error = trackSensorObstacles(tf_buffer_, *source_series_[source], obstacles,
+                                                 header, cloud, ros::Duration(0));
   if (!error.empty()) {
     ROS_WARN_STREAM_THROTTLE(5.0, "ellipse_collision: source '"
                                       << config_.monitor.sources[source - 1].name

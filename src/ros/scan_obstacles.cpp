@@ -38,13 +38,24 @@ app::SensorObstacles scanObstacles(const sensor_msgs::LaserScan& scan,
 
 std::string trackSensorObstacles(const tf2_ros::Buffer& tf, app::SensorObstacleSeries& series,
                                  app::SensorObstacles& obstacles, const std_msgs::Header& header,
-                                 bool cloud) {
+                                 bool cloud, const ros::Duration& wait) {
   if (!series.tracking().enabled) return "";
   Eigen::Isometry3d fixed_from_sensor;
   std::string error;
-  // The sensor's pose at the message's stamp: its own motion taken out of the centroids.
-  if (!lookupTransformSafe(tf, series.tracking().fixed_frame, header.frame_id, header.stamp,
-                           ros::Duration(0.05), fixed_from_sensor, &error)) {
+  // The sensor's pose at the message's stamp: its own motion taken out of the centroids. When tf
+  // has not caught up with the stamp, its latest pose if within kLatestPoseSlackS of it: a lag
+  // that stays the same shifts every centroid alike and leaves the velocities as they are.
+  constexpr double kLatestPoseSlackS = 0.1;
+  const std::string& fixed = series.tracking().fixed_frame;
+  bool found = lookupTransformSafe(tf, fixed, header.frame_id, header.stamp, wait,
+                                   fixed_from_sensor, &error);
+  if (!found) {
+    ros::Time latest;
+    found = lookupTransformSafe(tf, fixed, header.frame_id, ros::Time(0), ros::Duration(0),
+                                fixed_from_sensor, nullptr, &latest) &&
+            (latest.isZero() || std::abs((latest - header.stamp).toSec()) <= kLatestPoseSlackS);
+  }
+  if (!found) {
     for (app::EllipseSpec& e : obstacles.ellipses) e.vx = e.vy = e.angular_velocity = 0.0;
     return "no velocities (every obstacle stands): " + error;
   }
@@ -96,7 +107,8 @@ void ScanObstaclesNode::onScan(const sensor_msgs::LaserScan::ConstPtr& scan) {
 
 void ScanObstaclesNode::track(app::SensorObstacles& obstacles, const std_msgs::Header& header,
                               bool cloud) {
-  const std::string error = trackSensorObstacles(tf_buffer_, series_, obstacles, header, cloud);
+  const std::string error =
+      trackSensorObstacles(tf_buffer_, series_, obstacles, header, cloud, ros::Duration(0.05));
   if (!error.empty()) ROS_WARN_STREAM_THROTTLE(5.0, "scan_obstacles: " << error);
 }
 

@@ -31,12 +31,13 @@ app::SensorObstacles scanObstacles(const sensor_msgs::LaserScan& scan,
                                    app::SensorObstacleSeries& series);
 
 /// Puts the tracked velocities on `obstacles`, the last scan's (or, `cloud`, cloud's) of `series`
-/// with `header`: the sensor's pose in series.tracking().fixed_frame from tf at the stamp
-/// (app::ObstacleTracker). Without that transform every obstacle stands and the reason is
-/// returned; "" when tracked or tracking is off.
+/// with `header`: the sensor's pose in series.tracking().fixed_frame from tf at the stamp, waiting
+/// up to `wait` for it, else tf's latest within 0.1 s of the stamp (app::ObstacleTracker).
+/// Without either every obstacle stands and the reason is returned; "" when tracked or tracking
+/// is off.
 std::string trackSensorObstacles(const tf2_ros::Buffer& tf, app::SensorObstacleSeries& series,
                                  app::SensorObstacles& obstacles, const std_msgs::Header& header,
-                                 bool cloud);
+                                 bool cloud, const ros::Duration& wait);
 
 /// scan_obstacles: turns `scan` (sensor_msgs/LaserScan) and `cloud` (sensor_msgs/PointCloud2,
 /// points within a z band) into obstacle ellipses on `obstacles` (EllipseArray, header = the
