@@ -3,6 +3,8 @@
 // dropped at the first change; a refused set is streamed and tried again later.
 #include <gtest/gtest.h>
 
+#include <memory>
+
 #include <string>
 
 #include "ellipse_collision/app/standing_obstacles.h"
@@ -33,7 +35,7 @@ TEST(StandingObstacles, GriddedOnlyAfterEnoughStillChecksAndFromTheObstacleEntri
     EXPECT_EQ(standing.standingChecks(), check);
     EXPECT_FALSE(standing.indexed());
   }
-  const core::IndexedObstacles* grid = standing.update(true, scene, 2);
+  const std::shared_ptr<const core::IndexedObstacles> grid = standing.update(true, scene, 2);
   ASSERT_NE(grid, nullptr);
   EXPECT_TRUE(standing.indexed());
   EXPECT_EQ(grid->error(), "");
@@ -64,7 +66,7 @@ TEST(StandingObstacles, AChangeDropsTheGridAndTheCountStartsOver) {
 TEST(StandingObstacles, NoObstaclesMakeAnEmptyGrid) {
   const core::Scene scene = sceneWith(0);
   StandingObstacles standing;
-  const core::IndexedObstacles* grid = nullptr;
+  std::shared_ptr<const core::IndexedObstacles> grid;
   for (std::size_t check = 0; check < kStill; ++check) grid = standing.update(true, scene, 2);
   ASSERT_NE(grid, nullptr);
   EXPECT_TRUE(grid->obstacles().empty());
