@@ -114,6 +114,36 @@ bool FreeSpace::crossed(const Eigen::Vector2d& a, const Eigen::Vector2d& b,
                    });
 }
 
+std::pair<const FreeSegment*, const FreeSegment*> FreeSpace::beside(
+    const Eigen::Vector2d& first, const Eigen::Vector2d& last) const {
+  constexpr double kApart = 1e-9;  // [rad]
+  std::pair<const FreeSegment*, const FreeSegment*> found{nullptr, nullptr};
+  if (segments_.empty()) return found;
+  const double from = std::atan2(first.y(), first.x()), to = std::atan2(last.y(), last.x());
+  // Clockwise of `from`: the last angle below it, else (wrapping over -pi) the last of all.
+  auto below = std::lower_bound(angles_.begin(), angles_.end(), from - kApart);
+  const std::size_t before = below == angles_.begin()
+                                 ? angles_.size() - 1
+                                 : static_cast<std::size_t>(below - angles_.begin()) - 1;
+  // Counter-clockwise of `to`: the first angle above it, else (wrapping over pi) the first.
+  auto above = std::upper_bound(angles_.begin(), angles_.end(), to + kApart);
+  const std::size_t after =
+      above == angles_.end() ? 0 : static_cast<std::size_t>(above - angles_.begin());
+  const auto within = [](double angle) {  // the counter-clockwise angle in [0, 2 pi)
+    return angle < 0.0 ? angle + 2.0 * kPi : angle;
+  };
+  const double span = within(to - from);
+  if (within(from - angles_[before]) > kApart && within(from - angles_[before]) < kPi &&
+      within(angles_[before] - from) > span) {
+    found.first = &segments_[before];
+  }
+  if (within(angles_[after] - to) > kApart && within(angles_[after] - to) < kPi &&
+      within(angles_[after] - from) > span) {
+    found.second = &segments_[after];
+  }
+  return found;
+}
+
 double FreeSpace::clearance(const Eigen::Vector2d& p, double radius) const {
   double nearest = std::min(radius, p.norm());
   anyWithin(std::atan2(p.y(), p.x()), halfWidthSeen(p, radius), [&](const FreeSegment& f) {

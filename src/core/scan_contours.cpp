@@ -34,8 +34,8 @@ std::size_t splitIndex(const std::vector<SensorReturn>& run, std::size_t begin, 
   double farthest = 0.0;
   for (std::size_t i = begin + 1; i + 1 < end; ++i) {
     const Eigen::Vector2d v = run[i].point - a;
-    const double off = length > 0.0 ? std::abs(chord.x() * v.y() - chord.y() * v.x()) / length
-                                    : v.norm();
+    const double off =
+        length > 0.0 ? std::abs(chord.x() * v.y() - chord.y() * v.x()) / length : v.norm();
     if (off > farthest) {
       farthest = off;
       best = i;
@@ -139,6 +139,87 @@ std::optional<Ellipse> enclosingCircleFit(const std::vector<Eigen::Vector2d>& po
   return Ellipse{centre, radius, radius, 0.0};
 }
 
+/// Ellipses around `points` that fit inside the wedge between the beams `lo` and `hi` (unit
+/// directions, lo clockwise of hi, less than half a turn apart), the radius along the wedge at
+/// least `min_radius` (across it as the wedge allows), smallest area first. Each has its axes along
+/// and across the wedge's bisector m and its centre at x m: it stays inside the wedge |y| <= k x (k
+/// the tangent of half the wedge's angle) exactly when its support across each side is no more than
+/// the side's, b^2 + k^2 a^2 <= k^2 x^2; a is then the shortest that contains the points with b as
+/// large as that allows. A run between two beams passing it by (half a pole beside its middle beam
+/// without return, its other edge grazed) fits there when every ellipse bulging past its ends does
+/// not. O(n) per centre tried.
+std::vector<Ellipse> wedgeEllipses(const std::vector<Eigen::Vector2d>& points,
+                                   const Eigen::Vector2d& lo, const Eigen::Vector2d& hi,
+                                   double min_radius) {
+  std::vector<Ellipse> found;
+  const Eigen::Vector2d sum = lo + hi;
+  if (!(sum.norm() > 1e-12) || !(signedAngle(lo, hi) > 0.0)) return found;
+  const Eigen::Vector2d m = sum.normalized();
+  const double k = signedAngle(m, hi) > 0.0 ? std::tan(signedAngle(m, hi)) : 0.0;
+  if (!(k > 0.0)) return found;
+  std::vector<Eigen::Vector2d> local;  // (along m, across m)
+  local.reserve(points.size());
+  double near = std::numeric_limits<double>::infinity(), far = 0.0;
+  for (const Eigen::Vector2d& p : points) {
+    local.emplace_back(m.dot(p), m.x() * p.y() - m.y() * p.x());
+    if (!(std::abs(local.back().y()) < k * local.back().x())) return found;  // outside the wedge
+    near = std::min(near, local.back().x()), far = std::max(far, local.back().x());
+  }
+  // b a hair inside the wedge (the exact free-space test judges the rest).
+  const double narrowed = k * (1.0 - 1e-9), kk = narrowed * narrowed;
+  // The worst normalised radius of a point for a^2 = u, b^2 = kk (x^2 - u) (convex in u).
+  const auto worst = [&](double x, double u) {
+    double w = 0.0;
+    for (const Eigen::Vector2d& q : local) {
+      w = std::max(w, (q.x() - x) * (q.x() - x) / u + q.y() * q.y() / (kk * (x * x - u)));
+    }
+    return w;
+  };
+  constexpr int kCentres = 16;
+  const double reach = 2.0 * (far - near) + 2.0 * min_radius;
+  std::vector<std::pair<double, Ellipse>> by_area;
+  for (int j = 0; j <= kCentres; ++j) {
+    const double x = near + reach * j / kCentres;
+    // a >= min_radius and b >= kMinRadius bound u = a^2.
+    const double smallest = min_radius * min_radius;
+    double u_lo = smallest;
+    double u_hi = x * x - (2.0 * kMinRadius / k) * (2.0 * kMinRadius / k);
+    if (!(u_hi > u_lo)) continue;
+    for (int step = 0; step < 60; ++step) {  // golden section on the convex worst()
+      const double a1 = u_lo + 0.381966 * (u_hi - u_lo), a2 = u_lo + 0.618034 * (u_hi - u_lo);
+      if (worst(x, a1) < worst(x, a2)) {
+        u_hi = a2;
+      } else {
+        u_lo = a1;
+      }
+    }
+    if (!(worst(x, 0.5 * (u_lo + u_hi)) <= 1.0 - 1e-9)) continue;
+    // The shortest a that still contains the points (worst() falls up to its minimum): the
+    // ellipse reaches least far toward the sensor, into the free parts of the run's own beams.
+    double shorter = smallest, longer = 0.5 * (u_lo + u_hi);
+    for (int step = 0; step < 60; ++step) {
+      const double mid = 0.5 * (shorter + longer);
+      (worst(x, mid) <= 1.0 - 1e-9 ? longer : shorter) = mid;
+    }
+    const double u = longer;
+    const double a = std::sqrt(u), b = narrowed * std::sqrt(x * x - u);
+    if (!(radiusOk(a) && radiusOk(b))) continue;
+    // Contains every point as the ellipse will be stored (a and b rounded), not only as u.
+    const auto inside = [&](const Eigen::Vector2d& q) {
+      const double dx = (q.x() - x) / a, dy = q.y() / b;
+      return dx * dx + dy * dy <= 1.0 - 1e-9;
+    };
+    if (!std::all_of(local.begin(), local.end(), inside)) continue;
+    const Eigen::Vector2d centre = x * m;
+    if (!(coordinateOk(centre.x()) && coordinateOk(centre.y()))) continue;
+    by_area.emplace_back(a * b, Ellipse{centre, a, b, std::atan2(m.y(), m.x())});
+  }
+  std::sort(by_area.begin(), by_area.end(),
+            [](const auto& l, const auto& r) { return l.first < r.first; });
+  for (const auto& [area, e] : by_area) found.push_back(e);
+  return found;
+}
+
 }  // namespace
 
 BeamReading readBeam(double r, double range_min, double range_max) {
@@ -166,7 +247,7 @@ SensorView scanView(const std::vector<float>& ranges, double angle_min, double a
         free.push_back({direction, lowest, r - free_space_tolerance});
         break;
       case BeamReading::NoReturn:
-        free.push_back({direction, lowest, std::min(range_max, kMaxCoordinate)});
+        free.push_back({direction, lowest, std::min(range_max, kMaxCoordinate), true});
         break;
       case BeamReading::Unknown:
         break;
@@ -228,29 +309,26 @@ bool sameContour(const Eigen::Vector2d& p, const Eigen::Vector2d& q, double rang
   if (gap < join_distance) return true;
   const double dphi = angleBetween(p, q);
   if (!(dphi < kBreakpointAngle)) return false;
-  return gap <= p.norm() * std::sin(dphi) / std::sin(kBreakpointAngle - dphi) +
-                    3.0 * range_noise_sigma;
+  return gap <=
+         p.norm() * std::sin(dphi) / std::sin(kBreakpointAngle - dphi) + 3.0 * range_noise_sigma;
 }
 
 std::vector<std::vector<SensorReturn>> breakContours(const SensorView& view,
-                                                     double range_noise_sigma,
-                                                     double join_distance,
+                                                     double range_noise_sigma, double join_distance,
                                                      std::size_t min_points) {
   std::vector<std::vector<SensorReturn>> contours;
   const auto& returns = view.returns;
   for (std::size_t i = 0; i < returns.size(); ++i) {
-    if (i == 0 || !sameContour(returns[i - 1].point, returns[i].point, range_noise_sigma,
-                               join_distance)) {
+    if (i == 0 ||
+        !sameContour(returns[i - 1].point, returns[i].point, range_noise_sigma, join_distance)) {
       contours.emplace_back();
     }
     contours.back().push_back(returns[i]);
   }
   // Across the scan's start: the last contour continues into the first.
   if (view.full_turn && contours.size() > 1 &&
-      sameContour(returns.back().point, returns.front().point, range_noise_sigma,
-                  join_distance)) {
-    contours.back().insert(contours.back().end(), contours.front().begin(),
-                           contours.front().end());
+      sameContour(returns.back().point, returns.front().point, range_noise_sigma, join_distance)) {
+    contours.back().insert(contours.back().end(), contours.front().begin(), contours.front().end());
     contours.erase(contours.begin());
   }
   const std::size_t minimum = std::max<std::size_t>(min_points, 1);
@@ -296,8 +374,8 @@ struct RunFit {
 /// With a `margin` [m], a candidate is accepted only when it stays out of the free space with
 /// both radii grown by the margin. `points` is scratch space.
 RunFit fitRun(const std::vector<SensorReturn>& contour, std::size_t begin, std::size_t end,
-              const FreeSpace& free_space, double min_radius,
-              std::vector<Eigen::Vector2d>& points, double margin = 0.0) {
+              const FreeSpace& free_space, double min_radius, std::vector<Eigen::Vector2d>& points,
+              double margin = 0.0) {
   const std::size_t n = end - begin;
   RunFit fit;
   fit.ellipse = ContourEllipse{Ellipse{}, contour[begin].key, n, contour[end - 1].key, false};
@@ -332,7 +410,9 @@ RunFit fitRun(const std::vector<SensorReturn>& contour, std::size_t begin, std::
     // run: at most the chord's length in radius). O(n).
     const std::optional<Ellipse> circle = enclosingCircleFit(points);
     const double chord = (points.back() - points.front()).norm();
-    if (circle && circle->radius_x >= min_radius && circle->radius_x <= chord && !thin) {
+    // A thin arc is tried too: a pole seen by many beams is a shallow arc, and its circle, not
+    // the band ellipse bulging past the arc's ends into the beams grazing it, is what stays out.
+    if (circle && circle->radius_x >= min_radius && circle->radius_x <= chord) {
       if (accepted(*circle, false)) return fit;
       // A round arc whose circle meets a beam (where the beams graze the object, its circle
       // grown by the range noise reaches their free parts; a beam without return between its
@@ -340,10 +420,12 @@ RunFit fitRun(const std::vector<SensorReturn>& contour, std::size_t begin, std::
       // candidate tried, until its parts are thin enough for band ellipses. But a beam beyond
       // an end of the arc that cuts deep through its circle (the middle beam of a pole that
       // returned nothing, next to half the pole's arc) leaves room for a flatter ellipse
-      // beside it: the candidates below are tried.
-      const Eigen::Vector2d& ray = fit.rays.back();
+      // beside it, and a thin arc's band ellipse is flatter: the candidates below are tried.
+      const Eigen::Vector2d ray = fit.rays.back();
       const double depth = std::abs(ray.x() * circle->center.y() - ray.y() * circle->center.x());
-      if (sideOf(contour, begin, end, ray) == 0 || !(depth < 0.5 * circle->radius_x)) {
+      if (thin) {
+        fit.rays.pop_back();
+      } else if (sideOf(contour, begin, end, ray) == 0 || !(depth < 0.5 * circle->radius_x)) {
         fit.outcome = RunFit::Outcome::SplitAtOnce;
         return fit;
       }
@@ -394,6 +476,26 @@ RunFit fitRun(const std::vector<SensorReturn>& contour, std::size_t begin, std::
       return fit;
     }
   }
+  // 5. A run between two beams that pass it by (beyond its farthest return), one of them a
+  // beam without return (a drop-out on a dark or shiny object, or nothing behind it): the
+  // ellipse that fits in the wedge between them. Only there: where both beams end on
+  // something behind (a pillar before a wall), range noise would make the wedge's fit come and
+  // go from scan to scan, and the split the other candidates ask for stays put. The beams it
+  // enters are not noted: the split that follows is the one the other candidates asked for.
+  if (n >= 2) {
+    const bool ccw = signedAngle(points.front(), points.back()) > 0.0;
+    const auto [lo, hi] = ccw ? free_space.beside(points.front(), points.back())
+                              : free_space.beside(points.back(), points.front());
+    double farthest = 0.0;
+    for (const Eigen::Vector2d& p : points) farthest = std::max(farthest, p.norm());
+    if (lo && hi && lo->to > farthest && hi->to > farthest && (lo->no_return || hi->no_return)) {
+      const std::size_t noted = fit.rays.size();
+      for (const Ellipse& e : wedgeEllipses(points, lo->direction, hi->direction, min_radius)) {
+        if (accepted(e, e.radius_y < min_radius)) return fit;
+      }
+      fit.rays.resize(noted);
+    }
+  }
   if (n == 1) {  // not even the reduced circle is a valid ellipse: kept, and said
     fit.ellipse.ellipse = enclosing.ellipse;
     fit.outcome = RunFit::Outcome::KeptAnyway;
@@ -438,8 +540,7 @@ std::size_t cutOrSplitIndex(const std::vector<SensorReturn>& contour, std::size_
 
 ContourEllipses contourEllipses(const std::vector<std::vector<SensorReturn>>& contours,
                                 const FreeSpace& free_space, double min_radius,
-                                const std::vector<std::size_t>& split_hints,
-                                double hint_margin) {
+                                const std::vector<std::size_t>& split_hints, double hint_margin) {
   ContourEllipses result;
   if (radiusViolation(min_radius)) {
     // The same words as enclosingEllipseWithMinRadius(), which checks it the same way.
@@ -456,8 +557,8 @@ ContourEllipses contourEllipses(const std::vector<std::vector<SensorReturn>>& co
     std::vector<Run> todo;
     const std::vector<std::size_t> cuts = hintedCuts(contour, split_hints);
     for (std::size_t k = cuts.size() + 1; k-- > 0;) {
-      todo.push_back({k == 0 ? 0 : cuts[k - 1], k == cuts.size() ? contour.size() : cuts[k],
-                      true, true});
+      todo.push_back(
+          {k == 0 ? 0 : cuts[k - 1], k == cuts.size() ? contour.size() : cuts[k], true, true});
     }
     std::vector<std::pair<std::size_t, std::size_t>> kept;  // [begin, end) of each ellipse
     while (!todo.empty()) {

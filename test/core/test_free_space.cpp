@@ -144,6 +144,40 @@ TEST(FreeSpace, BeamsAcrossTheAngleSeamAreFound) {
               std::fabs(4.0 * std::sin(-0.01) - 0.5 * std::cos(0.01)), 1e-12);
 }
 
+Eigen::Vector2d towards(double angle) { return {std::cos(angle), std::sin(angle)}; }
+
+TEST(FreeSpace, BesideFindsTheNearestBeamOutsideARunOnEachSideAcrossTheSeam) {
+  // Beams every 0.1 rad; a run's own first and last beams are not beside it.
+  std::vector<FreeSegment> beams;
+  for (int i = -31; i <= 31; ++i) beams.push_back(beam(0.1 * i, 0.0, 1.0 + i * 0.01));
+  const FreeSpace space(beams);
+  const auto [lo, hi] = space.beside(towards(0.2), towards(0.5));
+  ASSERT_TRUE(lo && hi);
+  EXPECT_NEAR(std::atan2(lo->direction.y(), lo->direction.x()), 0.1, 1e-12);
+  EXPECT_NEAR(std::atan2(hi->direction.y(), hi->direction.x()), 0.6, 1e-12);
+  EXPECT_DOUBLE_EQ(lo->to, 1.01);
+  // Across the seam of atan2: from 3.05 to -3.05 counter-clockwise (a run behind the sensor).
+  const auto [behind_lo, behind_hi] = space.beside(towards(3.05), towards(-3.05));
+  ASSERT_TRUE(behind_lo && behind_hi);
+  EXPECT_NEAR(std::atan2(behind_lo->direction.y(), behind_lo->direction.x()), 3.0, 1e-12);
+  EXPECT_NEAR(std::atan2(behind_hi->direction.y(), behind_hi->direction.x()), -3.0, 1e-12);
+  // The run's first beam is the last of the array: the next clockwise wraps to the first.
+  const auto [wrap_lo, wrap_hi] = space.beside(towards(-3.1), towards(-2.9));
+  ASSERT_TRUE(wrap_lo && wrap_hi);
+  EXPECT_NEAR(std::atan2(wrap_lo->direction.y(), wrap_lo->direction.x()), 3.1, 1e-12);
+  EXPECT_NEAR(std::atan2(wrap_hi->direction.y(), wrap_hi->direction.x()), -2.8, 1e-12);
+  // Nothing beside: no beams, or the only beam inside the run.
+  EXPECT_FALSE(FreeSpace().beside(towards(0.0), towards(0.1)).first);
+  const FreeSpace inside({beam(0.05, 0.0, 1.0)});
+  EXPECT_FALSE(inside.beside(towards(0.0), towards(0.1)).first);
+  EXPECT_FALSE(inside.beside(towards(0.0), towards(0.1)).second);
+  // One beam a little more than half a turn clockwise of the run's start: not beside it on
+  // that side, but less than half a turn counter-clockwise of its end, so beside it there.
+  const FreeSpace opposite({beam(kPi - 0.01, 0.0, 1.0)});
+  EXPECT_FALSE(opposite.beside(towards(0.0), towards(0.1)).first);
+  EXPECT_TRUE(opposite.beside(towards(0.0), towards(0.1)).second);
+}
+
 /// Whether the closed segment [a, b] and the open segment from p to q cross (orientation
 /// predicates in long double; general position assumed).
 bool segmentsCross(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& p,

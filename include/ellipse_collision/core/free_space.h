@@ -1,6 +1,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <utility>
 #include <vector>
 
 #include "ellipse_collision/core/ellipse.h"
@@ -11,8 +12,9 @@ namespace ellipse_collision::core {
 /// open segment; empty when to <= from), direction a unit vector from the sensor origin.
 struct FreeSegment {
   Eigen::Vector2d direction{1.0, 0.0};
-  double from{0.0};  ///< [m]
-  double to{0.0};    ///< [m]
+  double from{0.0};       ///< [m]
+  double to{0.0};         ///< [m]
+  bool no_return{false};  ///< the beam saw nothing up to its range limit (a scan's +inf)
 };
 
 /// The free segments of one sensor message, sorted by angle about the sensor origin, with the
@@ -42,6 +44,13 @@ class FreeSpace {
   /// The distance [m] from `p` to the nearest free segment within `radius` [m] of it, or to the
   /// origin if nearer; `radius` when nothing is nearer.
   double clearance(const Eigen::Vector2d& p, double radius) const;
+
+  /// The beams on either side of the angles swept counter-clockwise from `first` to `last` (less
+  /// than half a turn): the nearest segment clockwise of `first` and the nearest counter-clockwise
+  /// of `last`, each more than 1e-9 rad away (a return's own beam is not beside it); nullptr where
+  /// there is none, or where it lies half a turn or more away.
+  std::pair<const FreeSegment*, const FreeSegment*> beside(const Eigen::Vector2d& first,
+                                                           const Eigen::Vector2d& last) const;
 
   const std::vector<FreeSegment>& segments() const { return segments_; }
 

@@ -68,8 +68,7 @@ bool sameContour(const Eigen::Vector2d& p, const Eigen::Vector2d& q, double rang
 /// first when the rule links them). Contours of fewer than `min_points` returns are dropped (the
 /// noise rule; 0 counts as 1, so nothing is dropped).
 std::vector<std::vector<SensorReturn>> breakContours(const SensorView& view,
-                                                     double range_noise_sigma,
-                                                     double join_distance,
+                                                     double range_noise_sigma, double join_distance,
                                                      std::size_t min_points);
 
 /// A cloud's contours: its returns (cloudView(), in angular order) grouped by single linkage at
@@ -81,11 +80,12 @@ std::vector<std::vector<SensorReturn>> cloudContours(const SensorView& view, dou
 /// One obstacle ellipse: it contains a run of consecutive returns of one contour.
 struct ContourEllipse {
   Ellipse ellipse;
-  std::size_t key{0};     ///< key of the run's first return: unique for a scan
-  std::size_t points{0};  ///< returns in the run
+  std::size_t key{0};       ///< key of the run's first return: unique for a scan
+  std::size_t points{0};    ///< returns in the run
   std::size_t last_key{0};  ///< key of the run's last return
   /// The run's ellipse of min_radius would enter the free space: its smaller radius is what the
-  /// free space leaves (half the smallest clearance of its returns), below min_radius.
+  /// free space leaves (half the smallest clearance of its returns, or the wedge between the
+  /// beams beside it), below min_radius.
   bool radius_reduced{false};
 };
 
@@ -105,13 +105,14 @@ struct ContourEllipses {
 /// (a beam without return through an object: a cut the free space requires), else as below;
 /// otherwise the run keeps the first of these ellipses that neither enters the free space nor
 /// contains the origin (FreeSpace::entered(), exact):
-/// 1. (3 or more returns, not thin) the circle fitted to the run by least squares (Kasa), grown
-///    to contain it, when the run is round (every return within a fifth of the radius of it) and
-///    the radius is within [min_radius, chord]: a round pillar is its own circle. When a round
-///    run's circle enters the free space (beams grazing the object), no other candidate is tried:
-///    the run is split (at the beam entered when the free space requires that cut), unless that
-///    beam lies beyond an end of the run and passes within half the radius of the circle's
-///    centre (half a pole beside a middle beam without return): then 2-4 are tried;
+/// 1. (3 or more returns) the circle fitted to the run by least squares (Kasa), grown to
+///    contain it, when the run is round (every return within a fifth of the radius of it) and
+///    the radius is within [min_radius, chord]: a round pillar is its own circle, also where
+///    its arc is thin (a pole seen by many beams). When a round run's circle enters the free
+///    space (beams grazing the object), no other candidate is tried: the run is split (at the
+///    beam entered when the free space requires that cut), unless the run is thin or that beam
+///    lies beyond an end of the run and passes within half the radius of the circle's centre
+///    (half a pole beside a middle beam without return): then 2-5 are tried;
 /// 2. enclosingEllipseWithMinRadius(run, min_radius), or for a thin run (its band across its
 ///    principal axis within min_radius / sqrt(2)) bandEllipse(), O(n);
 /// 3. (3 or more returns, not thin) enclosingEllipseWithMinRadius() around the run and its
@@ -120,7 +121,13 @@ struct ContourEllipses {
 /// 4. (when 2's smaller radius is min_radius: one or two returns, a thin run) the same with the
 ///    smaller radius reduced to half the smallest clearance of its returns
 ///    (FreeSpace::clearance()): a face seen at a glancing angle, a lone return between beams that
-///    saw far, stays an obstacle, thinner than min_radius (radius_reduced), never dropped.
+///    saw far, stays an obstacle, thinner than min_radius (radius_reduced), never dropped;
+/// 5. (2 or more returns) where the beams on either side of the run (FreeSpace::beside()) both
+///    pass beyond its farthest return and one of them returned nothing: an ellipse inside the
+///    wedge between them, its axes along and across the wedge, the shortest along it that
+///    contains the run, at one of 17 places along the wedge (smallest area first), its radius
+///    across possibly below min_radius (radius_reduced). Half a pole beside a dropped middle
+///    beam at 1440 beams fits only there.
 /// Else the run is split: a run of two into two runs of one; a longer one at the return farthest
 /// from its chord (Douglas-Peucker; the middle one when all are on the chord), but when a
 /// candidate entered a beam beyond one end of the run, that end's return is split off alone (at
