@@ -78,9 +78,19 @@ Eigen::Vector2d ObstacleTracker::reportedVelocity(const Track& track, const Fit&
   return f.velocity;
 }
 
+void standStill(SensorObstacles& obstacles) {
+  for (EllipseSpec& o : obstacles.ellipses) o.vx = o.vy = o.angular_velocity = 0.0;
+}
+
+void ObstacleTracker::keepWindow(std::vector<Sample>& samples, double stamp_s) {
+  samples.erase(samples.begin(), std::find_if(samples.begin(), samples.end(), [&](const Sample& x) {
+                  return stamp_s - x.t <= kWindowS;
+                }));
+}
+
 void ObstacleTracker::track(double stamp_s, const core::PathPose& sensor,
                             SensorObstacles& obstacles) {
-  for (EllipseSpec& o : obstacles.ellipses) o.vx = o.vy = o.angular_velocity = 0.0;
+  standStill(obstacles);
   if (!settings_.enabled) return;
   if (last_stamp_s_ && !(stamp_s > *last_stamp_s_)) tracks_.clear(), sensor_.clear();
   last_stamp_s_ = stamp_s;
@@ -89,9 +99,7 @@ void ObstacleTracker::track(double stamp_s, const core::PathPose& sensor,
   // The sensor's velocity over the window, for the view's drift.
   const Eigen::Vector2d sensor_at(sensor.x, sensor.y);
   sensor_.push_back({stamp_s, sensor_at});
-  sensor_.erase(sensor_.begin(), std::find_if(sensor_.begin(), sensor_.end(), [&](const Sample& x) {
-                  return stamp_s - x.t <= kWindowS;
-                }));
+  keepWindow(sensor_, stamp_s);
   const Eigen::Vector2d sensor_velocity =
       sensor_.size() < 2
           ? Eigen::Vector2d(0.0, 0.0)
@@ -138,9 +146,7 @@ void ObstacleTracker::track(double stamp_s, const core::PathPose& sensor,
     if (track_of[i] >= 0) track = std::move(known[static_cast<std::size_t>(track_of[i])]);
     track.samples.push_back({stamp_s, centres[i]});
     ++track.updates;
-    const auto kept = std::find_if(track.samples.begin(), track.samples.end(),
-                                   [&](const Sample& x) { return stamp_s - x.t <= kWindowS; });
-    track.samples.erase(track.samples.begin(), kept);
+    keepWindow(track.samples, stamp_s);
     // The direction the object is seen from turns at |v_sensor x d| / |d|^2.
     const Eigen::Vector2d d = centres[i] - sensor_at;
     const double turn = std::abs(sensor_velocity.x() * d.y() - sensor_velocity.y() * d.x()) /

@@ -56,7 +56,7 @@ std::string trackSensorObstacles(const tf2_ros::Buffer& tf, app::SensorObstacleS
             (latest.isZero() || std::abs((latest - header.stamp).toSec()) <= kLatestPoseSlackS);
   }
   if (!found) {
-    for (app::EllipseSpec& e : obstacles.ellipses) e.vx = e.vy = e.angular_velocity = 0.0;
+    app::standStill(obstacles);
     return "no velocities (every obstacle stands): " + error;
   }
   const Eigen::Vector3d x_axis = fixed_from_sensor.linear().col(0);

@@ -40,6 +40,10 @@ struct TrackingSettings {
 /// "tracking/max_speed"), or nothing.
 std::optional<FieldError> findInvalidSetting(const TrackingSettings& settings);
 
+/// Every obstacle of `obstacles` stands (vx = vy = angular_velocity = 0): what a sensor's
+/// obstacles say when tracking is off, or when its motion through the fixed frame is unknown.
+void standStill(SensorObstacles& obstacles);
+
 /// Velocities for one sensor's obstacles, tracked in the fixed frame so the sensor's own motion
 /// is taken out. What is tracked is each object (SensorObject: the contour or cluster the
 /// ellipses were cut from), measured by the centroid of its returns, which range noise and a
@@ -92,6 +96,8 @@ class ObstacleTracker {
     std::vector<Sample> samples;  ///< within kWindowS of the last, oldest first
     int updates{0};               ///< measurements so far
   };
+  /// Drops the samples older than kWindowS before `stamp_s` [s].
+  static void keepWindow(std::vector<Sample>& samples, double stamp_s);
   /// The track's velocity, fitted to its samples (zero and infinite sigma with fewer than 2).
   Fit fit(const Track& track) const;
   /// Small enough, and not partly hidden (its centroid would move with the view): tracked.
