@@ -205,6 +205,7 @@ function(ellipse_collision_add_rostest target launch_file)
   add_rostest_gtest(${target} ${launch_file} ${ARGN})
   target_link_libraries(${target} ellipse_collision_ros)
   target_compile_options(${target} PRIVATE ${ELLIPSE_COLLISION_WARNINGS})
+  target_include_directories(${target} PRIVATE ${_support})
   target_compile_definitions(${target} PRIVATE
     ELLIPSE_COLLISION_NODE_BIN="$<TARGET_FILE:ellipse_collision_node>")
   add_dependencies(${target} ellipse_collision_node tf_test_broadcaster
@@ -257,7 +258,6 @@ add_dependencies(test_scan_pipeline_nodelets ellipse_collision_nodelets)
 # Issue 14: ~check_path and time to contact through the real node, against the quad oracle.
 ellipse_collision_add_rostest(test_motion test/ros/motion.test
   test/ros/test_motion.cpp test/support/first_contact_oracle.cpp)
-target_include_directories(test_motion PRIVATE ${_support})
 target_link_libraries(test_motion quadmath)
 
 # The rospy example client against the example configuration (a Python rostest).

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "ellipse_collision/app/frame_placer.h"
+#include "frame_table.h"
 #include "spec_builders.h"
 
 namespace ellipse_collision::app {
@@ -15,32 +16,8 @@ namespace {
 
 using test::circle;
 
-/// Frames by name with a stamp each; counts lookups. Unknown frames are unavailable.
-struct StampedTable {
-  std::map<std::string, Eigen::Isometry3d> poses;
-  std::map<std::string, double> stamps;  ///< [s]; none: timeless
-  std::map<std::string, int>* lookups;
-  FrameTransform operator()(const std::string& frame) const {
-    ++(*lookups)[frame];
-    FrameTransform transform;
-    const auto found = poses.find(frame);
-    if (found == poses.end()) {
-      transform.error = "no frame '" + frame + "'";
-      return transform;
-    }
-    transform.ok = true;
-    transform.fixed_from_frame = found->second;
-    if (stamps.count(frame)) transform.stamp_s = stamps.at(frame);
-    return transform;
-  }
-};
-
-Eigen::Isometry3d yawed(double x, double y, double yaw) {
-  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
-  pose.translate(Eigen::Vector3d(x, y, 0.0));
-  pose.rotate(Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()));
-  return pose;
-}
+using test::FrameTable;
+using test::yawedPose;
 
 bool sameEllipse(const core::Ellipse& a, const core::Ellipse& b) {
   return a.center == b.center && a.radius_x == b.radius_x && a.radius_y == b.radius_y &&
@@ -49,7 +26,7 @@ bool sameEllipse(const core::Ellipse& a, const core::Ellipse& b) {
 
 TEST(FramePlacer, APlacedEllipseIsPlaceInPlaneOfItsFrameWithNameAndRole) {
   std::map<std::string, int> lookups;
-  const StampedTable table{{{"arm", yawed(1.0, 2.0, 0.4)}}, {}, &lookups};
+  const FrameTable table{{{"arm", yawedPose(1.0, 2.0, 0.4)}}, {}, &lookups};
   FramePlacer placer(table, 0.05);
   EllipseSpec spec = circle("hand", "arm", 0.3, 0.0, 0.1);
   spec.radius_x = 0.2;
@@ -59,8 +36,8 @@ TEST(FramePlacer, APlacedEllipseIsPlaceInPlaneOfItsFrameWithNameAndRole) {
   EXPECT_EQ(placed.error, "");
   EXPECT_EQ(placed.ellipse.name, "hand");
   EXPECT_EQ(placed.ellipse.role, core::EllipseRole::Obstacle);
-  EXPECT_TRUE(
-      sameEllipse(placed.ellipse.ellipse, placeInPlane(spec, 0.05, yawed(1.0, 2.0, 0.4)).ellipse));
+  EXPECT_TRUE(sameEllipse(placed.ellipse.ellipse,
+                          placeInPlane(spec, 0.05, yawedPose(1.0, 2.0, 0.4)).ellipse));
   // Against the rigid motion in long double: centre R (0.3, 0) + (1, 2), radii + 0.05.
   const long double c = std::cos(0.4L), s = std::sin(0.4L);
   EXPECT_NEAR(placed.ellipse.ellipse.center.x(), static_cast<double>(1.0L + 0.3L * c), 1e-15);
@@ -72,7 +49,7 @@ TEST(FramePlacer, APlacedEllipseIsPlaceInPlaneOfItsFrameWithNameAndRole) {
 
 TEST(FramePlacer, EachFrameIsLookedUpOnceUntilTheFramesAreTakenAway) {
   std::map<std::string, int> lookups;
-  const StampedTable table{{{"arm", yawed(0, 0, 0)}}, {}, &lookups};
+  const FrameTable table{{{"arm", yawedPose(0, 0, 0)}}, {}, &lookups};
   FramePlacer placer(table, 0.0);
   for (int i = 0; i < 3; ++i) {
     placer.place(circle("a" + std::to_string(i), "arm", 0.1 * i, 0.0, 0.1),
@@ -93,7 +70,7 @@ TEST(FramePlacer, EachFrameIsLookedUpOnceUntilTheFramesAreTakenAway) {
 
 TEST(FramePlacer, AnUnavailableFrameIsSaidWithTheLookupsError) {
   std::map<std::string, int> lookups;
-  FramePlacer placer(StampedTable{{}, {}, &lookups}, 0.0);
+  FramePlacer placer(FrameTable{{}, {}, &lookups}, 0.0);
   const FramePlacer::Placement placed =
       placer.place(circle("rock", "cart", 0.0, 0.0, 0.1), core::EllipseRole::Obstacle);
   EXPECT_EQ(placed.status, FramePlacer::Status::FrameUnavailable);
@@ -104,8 +81,8 @@ TEST(FramePlacer, AnUnavailableFrameIsSaidWithTheLookupsError) {
 
 TEST(FramePlacer, AStaleFrameIsNotPlacedAtItsOldPoseAndItsAgeIsGiven) {
   std::map<std::string, int> lookups;
-  const StampedTable table{
-      {{"arm", yawed(0, 0, 0)}, {"map", yawed(0, 0, 0)}}, {{"arm", 9.25}}, &lookups};
+  const FrameTable table{
+      {{"arm", yawedPose(0, 0, 0)}, {"map", yawedPose(0, 0, 0)}}, {{"arm", 9.25}}, &lookups};
   FramePlacer placer(table, 0.0, Freshness{0.5, 10.0});
   const FramePlacer::Placement stale =
       placer.place(circle("hand", "arm", 0.0, 0.0, 0.1), core::EllipseRole::Link);
@@ -121,7 +98,7 @@ TEST(FramePlacer, AStaleFrameIsNotPlacedAtItsOldPoseAndItsAgeIsGiven) {
   EXPECT_TRUE(placer.usable(placer.lookup("map")));
   // Without the rule the same transform is placed.
   std::map<std::string, int> more;
-  FramePlacer unruled(StampedTable{table.poses, table.stamps, &more}, 0.0);
+  FramePlacer unruled(FrameTable{table.poses, table.stamps, &more}, 0.0);
   EXPECT_EQ(unruled.place(circle("hand", "arm", 0.0, 0.0, 0.1), core::EllipseRole::Link).status,
             FramePlacer::Status::Placed);
 }
@@ -130,7 +107,7 @@ TEST(FramePlacer, AnEdgeOnFrameIsDegenerateAndNamesTheEllipse) {
   std::map<std::string, int> lookups;
   Eigen::Isometry3d edge_on = Eigen::Isometry3d::Identity();
   edge_on.rotate(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitY()));
-  FramePlacer placer(StampedTable{{{"plate", edge_on}}, {}, &lookups}, 0.0);
+  FramePlacer placer(FrameTable{{{"plate", edge_on}}, {}, &lookups}, 0.0);
   const FramePlacer::Placement placed =
       placer.place(circle("plate_link", "plate", 0.0, 0.0, 0.2), core::EllipseRole::Link);
   EXPECT_EQ(placed.status, FramePlacer::Status::Degenerate);

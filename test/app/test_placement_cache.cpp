@@ -12,6 +12,7 @@
 
 #include "ellipse_collision/app/collision_check.h"
 #include "ellipse_collision/app/placement_cache.h"
+#include "frame_table.h"
 #include "spec_builders.h"
 
 namespace ellipse_collision::app {
@@ -19,30 +20,8 @@ namespace {
 
 using test::circle;
 
-/// Frames with rotation and translation, changeable between checks; counts lookups.
-struct PoseTable {
-  std::map<std::string, Eigen::Isometry3d> poses;
-  std::map<std::string, int>* lookups;
-  FrameTransform operator()(const std::string& frame) const {
-    ++(*lookups)[frame];
-    FrameTransform transform;
-    const auto found = poses.find(frame);
-    if (found == poses.end()) {
-      transform.error = "frame '" + frame + "' does not exist";
-      return transform;
-    }
-    transform.ok = true;
-    transform.fixed_from_frame = found->second;
-    return transform;
-  }
-};
-
-Eigen::Isometry3d pose(double x, double y, double yaw) {
-  Eigen::Isometry3d p = Eigen::Isometry3d::Identity();
-  p.translate(Eigen::Vector3d(x, y, 0.0));
-  p.rotate(Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()));
-  return p;
-}
+using test::FrameTable;
+using test::yawedPose;
 
 bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof(double)) == 0; }
 
@@ -85,7 +64,7 @@ void expectSameOutcome(const CheckOutcome& cached, const CheckOutcome& fresh, in
 /// it replaces back to the cache) beside one made afresh without a cache: the same bits. Returns
 /// the fresh one.
 CheckOutcome checkAsTheNodeAndAfresh(const EllipseRegistry& registry, const CheckSettings& settings,
-                                     const PoseTable& table, PlacementCache& cache,
+                                     const FrameTable& table, PlacementCache& cache,
                                      CheckOutcome& node_state, int cycle) {
   CheckOutcome cached =
       runCheck(CheckRequest{}, registry, settings, TransformLookup(table), 0.0, &cache);
@@ -109,21 +88,22 @@ TEST(PlacementCache, SameAnswerBitForBitAsProjectingEveryCycleWhileFramesMoveAnd
   settings.fixed_frame = "map";
   settings.global_padding_m = 0.01;
   std::map<std::string, int> lookups;
-  PoseTable table{{{"map", Eigen::Isometry3d::Identity()},
-                   {"base_link", pose(0, 0, 0)},
-                   {"arm", pose(0, 0, 0)},
-                   {"cart", pose(0.5, 0, 0)}},
-                  &lookups};
+  FrameTable table{{{"map", Eigen::Isometry3d::Identity()},
+                    {"base_link", yawedPose(0, 0, 0)},
+                    {"arm", yawedPose(0, 0, 0)},
+                    {"cart", yawedPose(0.5, 0, 0)}},
+                   {},
+                   &lookups};
   PlacementCache cache;
   std::size_t collisions = 0;
   CheckOutcome previous;  // the node's state: handed back to the cache when replaced
   for (int cycle = 0; cycle < 60; ++cycle) {
     // The arm moves every cycle, the base every third, the cart vanishes for a while and comes
     // back at its old pose; obstacles are added and removed now and then.
-    table.poses["arm"] = pose(0.05 * cycle - 1.5, 0.01 * cycle, 0.1 * cycle);
-    if (cycle % 3 == 0) table.poses["base_link"] = pose(0.04 * cycle - 1.0, 0.0, 0.05 * cycle);
+    table.poses["arm"] = yawedPose(0.05 * cycle - 1.5, 0.01 * cycle, 0.1 * cycle);
+    if (cycle % 3 == 0) table.poses["base_link"] = yawedPose(0.04 * cycle - 1.0, 0.0, 0.05 * cycle);
     if (cycle == 20) table.poses.erase("cart");
-    if (cycle == 25) table.poses["cart"] = pose(0.5, 0, 0);
+    if (cycle == 25) table.poses["cart"] = yawedPose(0.5, 0, 0);
     if (cycle == 30) {
       ASSERT_EQ(registry.addObstacles({circle("late", "map", 0.2, 0.0, 0.3)}, "obstacles"), "");
     }
@@ -163,11 +143,12 @@ TEST(PlacementCache, StandingObstaclesAreGriddedOnceAndGiveTheSameBits) {
   settings.fixed_frame = "map";
   settings.rules.warning_distance = 0.05;
   std::map<std::string, int> lookups;
-  PoseTable table{{{"map", Eigen::Isometry3d::Identity()},
-                   {"base_link", pose(0, 0, 0)},
-                   {"arm", pose(0, 0, 0)},
-                   {"cart", pose(0.1, 0, 0)}},
-                  &lookups};
+  FrameTable table{{{"map", Eigen::Isometry3d::Identity()},
+                    {"base_link", yawedPose(0, 0, 0)},
+                    {"arm", yawedPose(0, 0, 0)},
+                    {"cart", yawedPose(0.1, 0, 0)}},
+                   {},
+                   &lookups};
   PlacementCache cache;
   std::size_t collisions = 0, warnings = 0, indexed_checks = 0;
   const std::size_t still = StandingObstacles::kChecksBeforeIndexing;
@@ -175,8 +156,8 @@ TEST(PlacementCache, StandingObstaclesAreGriddedOnceAndGiveTheSameBits) {
   // alternate, refilled in place (names kept, geometry rewritten).
   CheckOutcome previous;
   for (int cycle = 0; cycle < 130; ++cycle) {
-    table.poses["arm"] = pose(0.03 * cycle - 1.5, 0.4 * std::sin(0.2 * cycle), 0.1 * cycle);
-    if (cycle == 60) table.poses["cart"] = pose(0.3, 0.05, 0.2);
+    table.poses["arm"] = yawedPose(0.03 * cycle - 1.5, 0.4 * std::sin(0.2 * cycle), 0.1 * cycle);
+    if (cycle == 60) table.poses["cart"] = yawedPose(0.3, 0.05, 0.2);
     if (cycle == 90) {
       ASSERT_EQ(registry.addObstacles({circle("late", "map", 0.2, 0.0, 0.3)}, "obstacles"), "");
     }
@@ -210,9 +191,11 @@ TEST(PlacementCache, ReusedProjectionsLookUpEachFrameOncePerCheck) {
   CheckSettings settings;
   settings.fixed_frame = "map";
   std::map<std::string, int> lookups;
-  PoseTable table{
-      {{"map", Eigen::Isometry3d::Identity()}, {"arm", pose(0, 0, 0)}, {"cart", pose(3, 0, 0)}},
-      &lookups};
+  FrameTable table{{{"map", Eigen::Isometry3d::Identity()},
+                    {"arm", yawedPose(0, 0, 0)},
+                    {"cart", yawedPose(3, 0, 0)}},
+                   {},
+                   &lookups};
   PlacementCache cache;
   for (int cycle = 0; cycle < 3; ++cycle) {
     runCheck(CheckRequest{}, registry, settings, TransformLookup(table), 0.0, &cache);
@@ -226,8 +209,8 @@ TEST(PlacementCache, AProjectionIsReusedOnlyThroughTheVeryTransformItWasMadeWith
   EllipseRegistry registry({circle("hand", "arm", 0.0, 0.0, 0.1)},
                            {circle("rock", "map", 1.0, 0.0, 0.2)});
   std::map<std::string, int> lookups;
-  PoseTable table{{{"map", Eigen::Isometry3d::Identity()}, {"arm", pose(0.5, 0.0, 0.25)}},
-                  &lookups};
+  FrameTable table{
+      {{"map", Eigen::Isometry3d::Identity()}, {"arm", yawedPose(0.5, 0.0, 0.25)}}, {}, &lookups};
   PlacementCache cache;
   cache.begin(registry, 0.0);
   // Links before obstacles; indices in the registry's (name) order.
@@ -251,7 +234,7 @@ TEST(PlacementCache, AProjectionIsReusedOnlyThroughTheVeryTransformItWasMadeWith
   EXPECT_EQ(reused->center, kept.center);
   table.poses["arm"].translation().x() = std::nextafter(0.5, 1.0);
   EXPECT_EQ(reusedThrough(0.0), nullptr) << "moved by one ulp";
-  table.poses["arm"] = pose(0.5, 0.0, 0.25);
+  table.poses["arm"] = yawedPose(0.5, 0.0, 0.25);
   EXPECT_NE(reusedThrough(0.0), nullptr) << "back where it was projected";
   EXPECT_EQ(reusedThrough(0.01), nullptr) << "another padding forgets every projection";
   EXPECT_EQ(reusedThrough(0.0), nullptr) << "and it stays forgotten";

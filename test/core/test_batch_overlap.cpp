@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "contact_scale_oracle.h"
+#include "ellipse_builders.h"
 #include "ellipse_collision/core/batch_overlap.h"
 #include "ellipse_collision/core/overlap.h"
 #include "random_source.h"
@@ -34,15 +35,8 @@ class Random : public ellipse_collision::test::RandomSource {
   using RandomSource::RandomSource;
 
   Ellipse ellipse(double half_width, double min_major, double max_major, double max_ratio) {
-    Ellipse e;
-    e.center = {uniform(-half_width, half_width), uniform(-half_width, half_width)};
-    const double major = logUniform(min_major, max_major);
-    const double minor = major / logUniform(1.0, max_ratio);
-    const bool x_is_major = coin();
-    e.radius_x = x_is_major ? major : minor;
-    e.radius_y = x_is_major ? minor : major;
-    e.angle = uniform(-kPi, kPi);
-    return e;
+    return ellipse_collision::test::randomEllipse(*this, half_width, min_major, max_major,
+                                                  max_ratio);
   }
 
   /// `b`'s centre at `scale` times the sum of the bounding radii from `a`'s, in a random

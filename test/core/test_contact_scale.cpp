@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "contact_scale_oracle.h"
+#include "ellipse_builders.h"
 #include "ellipse_collision/core/contact_scale.h"
 #include "ellipse_collision/core/overlap.h"
 
@@ -21,14 +22,7 @@ constexpr double kPi = 3.14159265358979323846;
 // Hand values below are exact, so contactScale() is only allowed rounding-level error.
 constexpr double kRelTolerance = 1e-12;
 
-Ellipse makeEllipse(double cx, double cy, double rx, double ry, double angle = 0.0) {
-  Ellipse e;
-  e.center = {cx, cy};
-  e.radius_x = rx;
-  e.radius_y = ry;
-  e.angle = angle;
-  return e;
-}
+using ellipse_collision::test::makeEllipse;
 
 Ellipse makeCircle(double cx, double cy, double r) { return makeEllipse(cx, cy, r, r); }
 
@@ -211,7 +205,6 @@ TEST(EigenvalueOverlap, AgreesWithContactScaleAwayFromTangency) {
   EXPECT_GT(overlapping, 50);  // both answers must be exercised
   EXPECT_LT(overlapping, 950);
 }
-
 
 // Fuzzer finding: an offset so small that its squared components underflow is still an offset.
 TEST(ContactScale, TinyCentreOffsetDoesNotUnderflowToCoincidentCentres) {

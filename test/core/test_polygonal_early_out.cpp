@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "contact_scale_oracle.h"
+#include "ellipse_builders.h"
 #include "ellipse_collision/core/polygonal_early_out.h"
 
 namespace ellipse_collision::core {
@@ -25,14 +26,7 @@ struct Pair {
   Ellipse b;
 };
 
-Ellipse makeEllipse(double cx, double cy, double rx, double ry, double angle = 0.0) {
-  Ellipse e;
-  e.center = {cx, cy};
-  e.radius_x = rx;
-  e.radius_y = ry;
-  e.angle = angle;
-  return e;
-}
+using ellipse_collision::test::makeEllipse;
 
 /// Seeded pairs with axis ratios up to `max_ratio`, b placed from a at the contact scale drawn by
 /// `target`; the result is rounded, so callers that need t* re-measure it with the oracle.
@@ -195,7 +189,6 @@ TEST(PolygonalTest, ZeroIterationsStillDecidesObviousPairs) {
   EXPECT_EQ(polygonalTest(a, makeEllipse(0, 0, 0.5, 3, -0.2), 0), PolygonalResult::Overlap);
   EXPECT_EQ(polygonalTest(a, makeEllipse(100, -50, 0.5, 3, -0.2), 0), PolygonalResult::Separate);
 }
-
 
 // Fuzzer findings: pictures too large or needles too thin for polygons in double precision must
 // be left to the eigenvalue test, never decided wrongly.

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "contact_scale_oracle.h"
+#include "ellipse_builders.h"
 #include "ellipse_collision/core/contact_scale.h"
 #include "ellipse_collision/core/overlap.h"
 #include "ellipse_collision/core/prepared_ellipse.h"
@@ -33,15 +34,8 @@ class Random : public ellipse_collision::test::RandomSource {
 
   Ellipse ellipse(double half_width, double min_major, double max_major, double max_ratio,
                   double max_angle = kPi) {
-    Ellipse e;
-    e.center = {uniform(-half_width, half_width), uniform(-half_width, half_width)};
-    const double major = logUniform(min_major, max_major);
-    const double minor = major / logUniform(1.0, max_ratio);
-    const bool x_is_major = coin();
-    e.radius_x = x_is_major ? major : minor;
-    e.radius_y = x_is_major ? minor : major;
-    e.angle = uniform(-max_angle, max_angle);
-    return e;
+    return ellipse_collision::test::randomEllipse(*this, half_width, min_major, max_major,
+                                                  max_ratio, max_angle);
   }
 
   /// `b` moved to contact scale 1 +- delta from `a`, delta log-uniform in [1e-9, 1e-3].
@@ -51,7 +45,6 @@ class Random : public ellipse_collision::test::RandomSource {
     const double delta = logUniform(1e-9, 1e-3);
     return {a, test::placeAtContactScale(a, b, coin() ? 1.0 - delta : 1.0 + delta)};
   }
-
 };
 
 bool sameBits(double x, double y) { return std::memcmp(&x, &y, sizeof x) == 0; }

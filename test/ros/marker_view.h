@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "ellipse_builders.h"
 #include "ellipse_collision/core/ellipse.h"
 
 namespace ellipse_collision {
@@ -46,16 +47,6 @@ class MarkerView {
  private:
   std::map<MarkerKey, visualization_msgs::Marker> shown_;
 };
-
-inline core::Ellipse makeEllipse(double x, double y, double radius_x, double radius_y,
-                                 double angle = 0.0) {
-  core::Ellipse e;
-  e.center = Eigen::Vector2d(x, y);
-  e.radius_x = radius_x;
-  e.radius_y = radius_y;
-  e.angle = angle;
-  return e;
-}
 
 /// The ellipse's implicit form at (x, y): 1 on its rim.
 inline double implicitForm(const core::Ellipse& e, double x, double y) {

@@ -10,6 +10,7 @@
 
 #include "ellipse_collision/ros/node_config.h"
 #include "ellipse_collision/ros/scan_obstacles.h"
+#include "xyz_cloud.h"
 
 namespace ellipse_collision {
 namespace {
@@ -135,21 +136,6 @@ TEST(ScanObstacleSettings, BadValuesNameTheKey) {
   EXPECT_NE(settingsError(params).find("key 'z_max'"), std::string::npos);
 }
 
-sensor_msgs::PointCloud2 cloudOf(const std::vector<Eigen::Vector3f>& points) {
-  sensor_msgs::PointCloud2 cloud;
-  cloud.header.frame_id = "camera";
-  cloud.header.stamp = ros::Time(7, 8);
-  sensor_msgs::PointCloud2Modifier modifier(cloud);
-  modifier.setPointCloud2FieldsByString(1, "xyz");
-  modifier.resize(points.size());
-  sensor_msgs::PointCloud2Iterator<float> x(cloud, "x"), y(cloud, "y"), z(cloud, "z");
-  for (const auto& p : points) {
-    *x = p.x(), *y = p.y(), *z = p.z();
-    ++x, ++y, ++z;
-  }
-  return cloud;
-}
-
 TEST(ScanObstaclesCloud, PointsWithinTheZBandMakeEllipsesWithTheSensorHeader) {
   std::vector<Eigen::Vector3f> points;
   for (int i = 0; i < 10; ++i) {
@@ -158,7 +144,7 @@ TEST(ScanObstaclesCloud, PointsWithinTheZBandMakeEllipsesWithTheSensorHeader) {
     points.emplace_back(-2.0f, 0.01f * i, -0.2f);                  // below z_min: ignored
   }
   points.emplace_back(std::numeric_limits<float>::quiet_NaN(), 0.0f, 0.5f);
-  const sensor_msgs::PointCloud2 cloud = cloudOf(points);
+  const sensor_msgs::PointCloud2 cloud = test::xyzCloud(points, "camera", ros::Time(7, 8));
   ASSERT_EQ(cloudPoints(cloud).size(), points.size());
   const auto obstacles =
       app::cloudObstacles(cloudPoints(cloud), cloud.header.frame_id, app::ScanObstacleSettings{});
@@ -188,7 +174,8 @@ TEST(ScanObstaclesScan, HostileRangesAreSkipped) {
   scan.angle_increment = 0.01f;
   scan.range_min = 0.1f;
   scan.range_max = 5.0f;
-  const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+  const float nan = std::numeric_limits<float>::quiet_NaN(),
+              inf = std::numeric_limits<float>::infinity();
   scan.ranges = {1.0f, 1.0f, nan, 1.0f, inf, -inf, 0.0f, 9.0f, 1.0f};
   const auto obstacles = scanObstacles(scan, app::ScanObstacleSettings{});
   // The four 1 m returns (beams 0, 1, 3, 8) are each inside an ellipse near 1 m; beams 4 (inf)
@@ -214,7 +201,8 @@ TEST(ScanObstaclesScan, HostileRangesAreSkipped) {
       EXPECT_FALSE(inside(e, beam * static_cast<double>(scan.angle_increment), 1.0)) << e.name;
     }
   }
-  EXPECT_TRUE(scanObstacles(sensor_msgs::LaserScan(), app::ScanObstacleSettings{}).ellipses.empty());
+  EXPECT_TRUE(
+      scanObstacles(sensor_msgs::LaserScan(), app::ScanObstacleSettings{}).ellipses.empty());
 }
 
 }  // namespace

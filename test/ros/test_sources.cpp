@@ -11,13 +11,13 @@
 #include <sensor_msgs/Range.h>
 #include <sensor_msgs/point_cloud2_iterator.h>
 
-#include <array>
 #include <atomic>
 #include <cmath>
 #include <map>
 #include <thread>
 
 #include "node_test_utils.h"
+#include "xyz_cloud.h"
 
 namespace ellipse_collision {
 namespace test {
@@ -180,24 +180,6 @@ TEST_F(Sources, ASilentScannerMakesAnswersAndTheGateIncompleteNamingIt) {
       << r.message;
 }
 
-/// A cloud in base_link: `points` (x, y, z) [m] as float32 x, y, z fields.
-sensor_msgs::PointCloud2 cloudOf(const std::vector<std::array<float, 3>>& points) {
-  sensor_msgs::PointCloud2 cloud;
-  cloud.header.frame_id = "base_link";
-  cloud.header.stamp = ros::Time::now();
-  sensor_msgs::PointCloud2Modifier modifier(cloud);
-  modifier.setPointCloud2FieldsByString(1, "xyz");
-  modifier.resize(points.size());
-  sensor_msgs::PointCloud2Iterator<float> x(cloud, "x"), y(cloud, "y"), z(cloud, "z");
-  for (const auto& p : points) {
-    *x = p[0];
-    *y = p[1];
-    *z = p[2];
-    ++x, ++y, ++z;
-  }
-  return cloud;
-}
-
 TEST_F(Sources, ARangeReadingCoversItsArcAndACloudItsPointsInTheBand) {
   ros::Publisher sonar = nh_.advertise<sensor_msgs::Range>("/sonar/range", 5);
   ros::Publisher depth = nh_.advertise<sensor_msgs::PointCloud2>("/depth/points", 5);
@@ -245,14 +227,14 @@ TEST_F(Sources, ARangeReadingCoversItsArcAndACloudItsPointsInTheBand) {
       << "a reading at max_range is free";
 
   // A wall segment 2 m to the right at 0.5 m height, a shelf 2 m to the left at 3 m (above z_max).
-  std::vector<std::array<float, 3>> points;
+  std::vector<Eigen::Vector3f> points;
   for (int i = -10; i <= 10; ++i) {
-    points.push_back({0.02f * static_cast<float>(i), -2.0f, 0.5f});
-    points.push_back({0.02f * static_cast<float>(i), 2.0f, 3.0f});
+    points.emplace_back(0.02f * static_cast<float>(i), -2.0f, 0.5f);
+    points.emplace_back(0.02f * static_cast<float>(i), 2.0f, 3.0f);
   }
   ASSERT_TRUE(waitUntil(
       [&] {
-        depth.publish(cloudOf(points));
+        depth.publish(test::xyzCloud(points, "base_link", ros::Time::now()));
         r = probes();
         return r.success && !touchedBy(r, "probe_right").empty();
       },
