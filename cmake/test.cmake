@@ -167,6 +167,8 @@ ellipse_collision_add_gtest(test_app LIBRARIES ellipse_collision_app quadmath SO
   test/app/test_ellipsoid_links.cpp
   test/app/test_ellipsoid_obstacles.cpp
   test/app/test_obstacle_tracker.cpp
+  test/app/test_fleet_footprint.cpp
+  test/app/test_fleet_roster.cpp
   test/app/test_tracked_crossings.cpp)
 
 # scan_obstacles' guarantees on ray-cast scenes: coverage, free space, doorways, names, counts.

@@ -51,6 +51,14 @@ TEST(FleetRoster, RobotsSilentPastTheTimeoutAreDropped) {
   EXPECT_TRUE(roster.dropSilent(1.0).empty());  // r2 exactly 1 s: kept
   EXPECT_EQ(roster.dropSilent(1.5), std::vector<std::string>{"r2"});
   EXPECT_EQ(names(roster.obstacles()), std::vector<std::string>{"r3/base_link"});
+  // /diagnostics names the robot kept and the one dropped, until it is heard from again.
+  const auto health = roster.healthValues(1.5);
+  ASSERT_EQ(health.size(), 2u);
+  EXPECT_EQ(health[0].second, "r3 (0.7 s ago, 1 links)");
+  EXPECT_EQ(health[1].first, "dropped (silent past 1 s)");
+  EXPECT_EQ(health[1].second, "r2");
+  roster.receive(1.6, {link("r2/base_link", 2.0)});
+  EXPECT_EQ(roster.healthValues(1.6)[1].second, "none");
 }
 
 TEST(FleetRoster, AMessageWithABadEntryIsRefusedWholeNamingIt) {
@@ -62,7 +70,9 @@ TEST(FleetRoster, AMessageWithABadEntryIsRefusedWholeNamingIt) {
   const auto refused = roster.receive(0.1, {bad});
   ASSERT_TRUE(refused);
   EXPECT_NE(refused->find("ellipses[0].x = nan"), std::string::npos) << *refused;
-  // Nothing of either message was taken.
+  EXPECT_EQ(roster.receive(0.1, {link("r2/base_link", 2.0), link("r2/base_link", 2.5)}),
+            "ellipses[1].name = 'r2/base_link': expected a name used once");
+  // Nothing of these messages was taken.
   ASSERT_EQ(roster.obstacles().size(), 1u);
   EXPECT_EQ(roster.obstacles()[0].x, 3.0);
 }

@@ -2,7 +2,9 @@
 
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "ellipse_collision/app/ellipse_spec.h"
@@ -20,8 +22,9 @@ class FleetRoster {
   FleetRoster(std::string own_name, double timeout_s)
       : own_name_(std::move(own_name)), timeout_s_(timeout_s) {}
 
-  /// A footprint message received at `now_s` [s]: every ellipse must be named "<robot>/<link>"
-  /// and pass findInvalidField(); otherwise the whole message is refused, naming the entry.
+  /// A footprint message received at `now_s` [s]: every ellipse must be named "<robot>/<link>",
+  /// each name once, and pass findInvalidField(); otherwise the whole message is refused, naming
+  /// the entry.
   /// Each robot in it replaces its previous links.
   std::optional<std::string> receive(double now_s, const std::vector<EllipseSpec>& ellipses);
 
@@ -39,6 +42,10 @@ class FleetRoster {
   /// The robots kept, in name order, their ages at `now_s`.
   std::vector<Robot> robots(double now_s) const;
 
+  /// What /diagnostics shows: "robots" (each kept robot with its age and link count) and
+  /// "dropped" (robots dropped as silent and not heard from since).
+  std::vector<std::pair<std::string, std::string>> healthValues(double now_s) const;
+
  private:
   struct Kept {
     double heard_s{0.0};
@@ -47,6 +54,7 @@ class FleetRoster {
   std::string own_name_;
   double timeout_s_;
   std::map<std::string, Kept> robots_;
+  std::set<std::string> dropped_;  ///< dropped as silent, not heard from since
 };
 
 }  // namespace ellipse_collision::app
