@@ -49,7 +49,7 @@ PlacedLinks placeLinks(const std::vector<EllipseSpec>& links, double global_padd
     }
     if (isStale(frame, freshness)) {
       placed.error = "link '" + link.name + "': its frame '" + link.frame_id +
-                     "' was last placed " + core::formatNumber(ageOf(frame, freshness)) +
+                     "' was last placed " + core::formatNumber(std::round(ageOf(frame, freshness) * 100) / 100) +
                      " s ago, more than " + core::formatNumber(freshness.max_age_s) +
                      " s (max_transform_age)";
       return placed;
