@@ -14,8 +14,7 @@ std::optional<FieldError> findInvalidSetting(const FleetSettings& s) {
                       "'" + s.frame + "'"};
   }
   if (s.robot_name.empty() || s.robot_name.find('/') != std::string::npos) {
-    return FieldError{"fleet/robot_name", "a non-empty name without '/'",
-                      "'" + s.robot_name + "'"};
+    return FieldError{"fleet/robot_name", "a non-empty name without '/'", "'" + s.robot_name + "'"};
   }
   return findOutsideRange("fleet/rate", s.rate, 0.0, 100.0, true);
 }
@@ -48,10 +47,10 @@ PlacedLinks placeLinks(const std::vector<EllipseSpec>& links, double global_padd
       return placed;
     }
     if (isStale(frame, freshness)) {
-      placed.error = "link '" + link.name + "': its frame '" + link.frame_id +
-                     "' was last placed " + core::formatNumber(std::round(ageOf(frame, freshness) * 100) / 100) +
-                     " s ago, more than " + core::formatNumber(freshness.max_age_s) +
-                     " s (max_transform_age)";
+      placed.error =
+          "link '" + link.name + "': its frame '" + link.frame_id + "' was last placed " +
+          core::formatNumber(std::round(ageOf(frame, freshness) * 100) / 100) +
+          " s ago, more than " + core::formatNumber(freshness.max_age_s) + " s (max_transform_age)";
       return placed;
     }
     const core::ProjectionResult result =

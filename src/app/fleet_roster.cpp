@@ -50,7 +50,8 @@ std::vector<std::string> FleetRoster::dropSilent(double now_s) {
 
 std::vector<EllipseSpec> FleetRoster::obstacles() const {
   std::vector<EllipseSpec> all;
-  for (const auto& [robot, kept] : robots_) all.insert(all.end(), kept.links.begin(), kept.links.end());
+  for (const auto& [robot, kept] : robots_)
+    all.insert(all.end(), kept.links.begin(), kept.links.end());
   return all;
 }
 

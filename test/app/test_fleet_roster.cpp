@@ -27,8 +27,8 @@ std::vector<std::string> names(const std::vector<EllipseSpec>& specs) {
 
 TEST(FleetRoster, KeepsEachOtherRobotsLatestLinksAndIgnoresItsOwn) {
   FleetRoster roster("r1", 1.0);
-  EXPECT_FALSE(roster.receive(0.0, {link("r1/base_link", 0.0), link("r2/base_link", 3.0, -1.0),
-                                    link("r2/arm", 3.2)}));
+  EXPECT_FALSE(roster.receive(
+      0.0, {link("r1/base_link", 0.0), link("r2/base_link", 3.0, -1.0), link("r2/arm", 3.2)}));
   EXPECT_FALSE(roster.receive(0.1, {link("r3/base_link", -2.0, 0.5)}));
   EXPECT_EQ(names(roster.obstacles()),
             (std::vector<std::string>{"r2/base_link", "r2/arm", "r3/base_link"}));

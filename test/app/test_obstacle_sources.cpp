@@ -316,8 +316,8 @@ TEST(RobotsSource, RequiredMakesItsSilenceIncomplete) {
   settings.sources = {robots};
   CollisionMonitor monitor(settings, {circle("body", "base_link", 0, 0, 0.3)}, {}, {}, {});
   const TransformLookup frames = everyFrameAtOrigin();
-  ASSERT_EQ(monitor.replaceSourceObstacles(1, {circle("r2/front", "map", 3.0, 0.0, 0.3)}, 1.0,
-                                           1.0, frames),
+  ASSERT_EQ(monitor.replaceSourceObstacles(1, {circle("r2/front", "map", 3.0, 0.0, 0.3)}, 1.0, 1.0,
+                                           frames),
             "");
   EXPECT_TRUE(monitor.serviceCheck({}, 0.0, 1.5, frames, everyFrameAtOriginAt()).complete);
   // Dropping the silent robot does not count as hearing from the fleet.
