@@ -14,6 +14,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstdlib>
 #include <iostream>
 #include <limits>
 #include <mutex>
@@ -309,6 +310,73 @@ TEST_F(Fleet, ARobotThatFallsSilentIsDroppedNotIncomplete) {
   }
   const GateState r1 = lastState(0);
   EXPECT_EQ(r1.action, "PASS") << r1.reason;
+}
+
+TEST_F(Fleet, SoakFourRobotsShuttlingAcrossFourCrossings) {
+  // Off in the suite: FLEET_SOAK_S=120 rostest ellipse_collision fleet_soak.test runs it.
+  const char* soak = std::getenv("FLEET_SOAK_S");
+  if (soak == nullptr) GTEST_SKIP() << "set FLEET_SOAK_S [s] to run";
+  const double duration = std::atof(soak);
+  // Four lines crossing in four places: r1 on y = 0 and r3 on y = 2.5 (east-west), r2 on x = 0 and
+  // r4 on x = 2.5 (north-south). Each shuttles at 1 m/s between its line's ends at -4 and +6.5,
+  // driving forward and back without turning. Its one planning rule: after 3 s without getting
+  // anywhere it heads for the other end (resolving a standoff is the planner's job).
+  struct Route {
+    bool along_x;
+    double at;
+  };
+  const std::array<Route, kRobots> routes = {Route{true, 0.0}, Route{false, 0.0}, Route{true, 2.5},
+                                             Route{false, 2.5}};
+  const double low = -4.0, high = 6.5;
+  std::array<double, kRobots> progress_at{}, best{}, stuck_longest{};
+  std::array<int, kRobots> reached{};
+  for (std::size_t i = 0; i < kRobots; ++i) {
+    const double start = low + 1.5 * static_cast<double>(i);  // staggered
+    if (routes[i].along_x) {
+      place(i, start, routes[i].at, 0.0, 1.0);
+    } else {
+      place(i, routes[i].at, start, M_PI / 2, 1.0);
+    }
+    progress_at[i] = now_;
+    best[i] = start;
+  }
+  const auto position = [&](std::size_t i) {
+    const core::PathPose& p = robots_[i].base->pose();
+    return routes[i].along_x ? p.x : p.y;
+  };
+  const double end = now_ + duration;
+  while (now_ < end) {
+    step();
+    ASSERT_FALSE(HasFatalFailure());
+    for (std::size_t i = 0; i < kRobots; ++i) {
+      Robot& robot = robots_[i];
+      const double s = position(i);
+      const bool forward = robot.cruise > 0.0;
+      if ((forward && s >= high) || (!forward && s <= low)) {
+        ++reached[i];
+        robot.cruise = -robot.cruise;
+        progress_at[i] = now_;
+        best[i] = s;
+      } else if (forward ? s > best[i] + 0.05 : s < best[i] - 0.05) {
+        best[i] = s;
+        progress_at[i] = now_;
+      } else if (now_ - progress_at[i] > 3.0) {
+        stuck_longest[i] = std::max(stuck_longest[i], now_ - progress_at[i]);
+        robot.cruise = -robot.cruise;  // give way: back to the other end
+        progress_at[i] = now_;
+        best[i] = s;
+      }
+    }
+  }
+  EXPECT_FALSE(touched_) << touch_;
+  std::cout << "soak " << duration << " s: closest approach while moving " << closest_ << " m";
+  for (std::size_t i = 0; i < kRobots; ++i) {
+    std::cout << "; " << robots_[i].name << " reached " << reached[i] << " ends, travelled "
+              << robots_[i].base->travelled() << " m";
+    // Each shuttle end is 10.5 m away: at 1 m/s a free robot reaches one every ~11 s.
+    EXPECT_GE(reached[i], static_cast<int>(duration / 11.0 / 3.0)) << robots_[i].name << " stuck";
+  }
+  std::cout << std::endl;
 }
 
 }  // namespace
