@@ -58,6 +58,8 @@ set(ELLIPSE_COLLISION_APP_SOURCES
   src/app/ellipse_registry.cpp
   src/app/ellipse_spec.cpp
   src/app/field_error.cpp
+  src/app/fleet_footprint.cpp
+  src/app/fleet_roster.cpp
   src/app/gate_config.cpp
   src/app/gate_marker_layout.cpp
   src/app/joint_chain.cpp

@@ -167,6 +167,8 @@ ellipse_collision_add_gtest(test_app LIBRARIES ellipse_collision_app quadmath SO
   test/app/test_ellipsoid_links.cpp
   test/app/test_ellipsoid_obstacles.cpp
   test/app/test_obstacle_tracker.cpp
+  test/app/test_fleet_footprint.cpp
+  test/app/test_fleet_roster.cpp
   test/app/test_tracked_crossings.cpp)
 
 # scan_obstacles' guarantees on ray-cast scenes: coverage, free space, doorways, names, counts.
@@ -231,6 +233,9 @@ ellipse_collision_add_rostest(test_stale_data test/ros/stale_data.test
   test/ros/test_stale_data.cpp)
 # Several obstacle sources: two scanners in one node, one falls silent.
 ellipse_collision_add_rostest(test_sources test/ros/sources.test test/ros/test_sources.cpp)
+# Robots that see each other: four nodes in their own namespaces, four braking bases.
+ellipse_collision_add_rostest(test_fleet test/ros/fleet.test test/ros/test_fleet.cpp)
+target_include_directories(test_fleet PRIVATE ${PROJECT_SOURCE_DIR}/test/support)
 ellipse_collision_add_rostest(test_time_jump test/ros/time_jump.test
   test/ros/test_time_jump.cpp)
 ellipse_collision_add_rostest(test_respawn test/ros/respawn.test

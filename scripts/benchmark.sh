@@ -20,6 +20,7 @@
 # stopped at the end, on failure and on Ctrl-C. Then the node as a user runs it
 # (scripts/node_load.sh): 20 moving links, N obstacles, a ~markers subscriber; CPU % and RSS. And
 # the scan pipeline as separate processes against nodelets in one manager (scripts/nodelet_cpu.sh).
+# And a fleet of N robots on one master (scripts/fleet_load.sh).
 #
 #   scripts/benchmark.sh                 full run (a few minutes)
 #   scripts/benchmark.sh --smoke         every benchmark once, briefly, on few pairs, 200 service
@@ -252,4 +253,15 @@ if "${smoke}"; then
   bash "${repo}/scripts/nodelet_cpu.sh" --smoke
 else
   bash "${repo}/scripts/nodelet_cpu.sh" --runs 3
+fi
+
+# ---- robots that see each other ---------------------------------------------------------------------
+# N collision nodes of 20 links on one master, each publishing itself and taking the others in, by
+# scripts/fleet_load.sh (roscore and nodes of its own): each node's CPU % and the footprint traffic.
+echo
+echo "Running a fleet on one master (scripts/fleet_load.sh)"
+if "${smoke}"; then
+  bash "${repo}/scripts/fleet_load.sh" --smoke
+else
+  bash "${repo}/scripts/fleet_load.sh" --robots "8 20" --runs 3 --alone
 fi

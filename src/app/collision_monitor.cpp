@@ -35,7 +35,9 @@ std::vector<SourceFreshness::Source> freshnessSources(const std::vector<SourceSp
     throw std::invalid_argument(describeFieldError(invalid->key, *invalid));
   }
   std::vector<SourceFreshness::Source> all{{kDefaultSourceName, 0.0}};
-  for (const SourceSpec& source : sources) all.push_back({source.name, source.timeout_s});
+  for (const SourceSpec& source : sources) {
+    all.push_back({source.name, watchesSilence(source) ? source.timeout_s : 0.0});
+  }
   return all;
 }
 
@@ -263,20 +265,25 @@ ChangeAnswer CollisionMonitor::durableAnswer(const std::string& done, std::size_
 
 std::string CollisionMonitor::replaceSourceObstacles(std::size_t source,
                                                      std::vector<EllipseSpec> specs, double stamp_s,
-                                                     double now_s, const TransformLookup& lookup) {
+                                                     double now_s, const TransformLookup& lookup,
+                                                     bool heard) {
   if (source >= freshness_.size()) {
     return "source " + std::to_string(source) + ": expected a source index below " +
            std::to_string(freshness_.size());
   }
   std::string field = "ellipses";
   if (source > 0) {
-    const std::string& name = settings_.sources[source - 1].name;
-    field = "source '" + name + "' ellipses";
-    for (EllipseSpec& spec : specs) spec.name = sourceObstacleName(name, spec.name);
+    const SourceSpec& spec_of_source = settings_.sources[source - 1];
+    field = "source '" + spec_of_source.name + "' ellipses";
+    // Other robots' links keep the names they were published under ("r2/base_link").
+    if (spec_of_source.type != SourceType::Robots) {
+      for (EllipseSpec& spec : specs)
+        spec.name = sourceObstacleName(spec_of_source.name, spec.name);
+    }
   }
   std::string error = validateAttached(specs, field, settings_.check, lookup);
   if (error.empty()) error = registry_.replaceTopicObstacles(specs, field, stamp_s, source);
-  if (error.empty()) {
+  if (error.empty() && heard) {
     freshness_.received(source, now_s, specs.size());
     if (source == 0) {
       // Only ~obstacles is expired by obstacle_timeout and kept in the store.

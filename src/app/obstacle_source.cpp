@@ -25,6 +25,8 @@ const char* toString(SourceType type) {
       return "cloud";
     case SourceType::Range:
       return "range";
+    case SourceType::Robots:
+      return "robots";
     case SourceType::Ellipses:
       break;
   }
@@ -33,14 +35,14 @@ const char* toString(SourceType type) {
 
 std::optional<FieldError> parseSourceType(const std::string& text, const std::string& key,
                                           SourceType* type) {
-  for (const SourceType candidate :
-       {SourceType::Ellipses, SourceType::Scan, SourceType::Cloud, SourceType::Range}) {
+  for (const SourceType candidate : {SourceType::Ellipses, SourceType::Scan, SourceType::Cloud,
+                                     SourceType::Range, SourceType::Robots}) {
     if (text == toString(candidate)) {
       *type = candidate;
       return std::nullopt;
     }
   }
-  return FieldError{key, "'ellipses', 'scan', 'cloud' or 'range'", "'" + text + "'"};
+  return FieldError{key, "'ellipses', 'scan', 'cloud', 'range' or 'robots'", "'" + text + "'"};
 }
 
 std::optional<FieldError> findInvalidSources(const std::vector<SourceSpec>& sources) {
@@ -70,13 +72,22 @@ std::optional<FieldError> findInvalidSources(const std::vector<SourceSpec>& sour
             findOutsideRange(entry + ".timeout", source.timeout_s, 0.0, kMaxSourceTimeoutS)) {
       return invalid;
     }
+    // A robots source's timeout drops a silent robot: without one a robot would never leave.
+    if (source.type == SourceType::Robots) {
+      if (auto invalid = findOutsideRange(entry + ".timeout", source.timeout_s, 0.0,
+                                          kMaxSourceTimeoutS, true)) {
+        return invalid;
+      }
+    } else if (source.required) {
+      return FieldError{entry + ".required", "no 'required' (type robots only)", "true"};
+    }
     if (source.type == SourceType::Scan || source.type == SourceType::Cloud) {
       if (auto invalid = findInvalidSetting(source.tracking)) {
         invalid->key = entry + "." + invalid->key;
         return invalid;
       }
     }
-    if (source.type != SourceType::Ellipses) {
+    if (source.type != SourceType::Ellipses && source.type != SourceType::Robots) {
       if (auto invalid = findInvalidSetting(source.scan)) {
         invalid->key = entry + "." + invalid->key;
         return invalid;
@@ -84,6 +95,10 @@ std::optional<FieldError> findInvalidSources(const std::vector<SourceSpec>& sour
     }
   }
   return std::nullopt;
+}
+
+bool watchesSilence(const SourceSpec& source) {
+  return source.type != SourceType::Robots || source.required;
 }
 
 std::string sourceObstacleName(const std::string& source, const std::string& obstacle) {

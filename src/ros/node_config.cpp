@@ -1,5 +1,6 @@
 #include "ellipse_collision/ros/node_config.h"
 
+#include <ros/names.h>
 #include <ros/param.h>
 
 #include <algorithm>
@@ -333,6 +334,32 @@ app::GateConfig readGate(const XmlRpcValue& value) {
   return gate;
 }
 
+/// `fleet: {enabled, topic, frame, robot_name, rate}`: types here, ranges by
+/// app::findInvalidSetting().
+app::FleetSettings readFleet(const XmlRpcValue& value, const std::string& default_robot_name) {
+  const std::string where = "parameter ~fleet";
+  if (value.getType() != XmlRpcValue::TypeStruct) {
+    fail(where, "fleet", "a dict {enabled, topic, frame, robot_name, rate}", describeValue(value));
+  }
+  static const std::vector<std::string> kFleetKeys = {"enabled", "topic", "frame", "robot_name",
+                                                      "rate"};
+  if (const auto key = unknownKey(value, kFleetKeys)) {
+    throw ConfigError("parameter ~fleet/" + *key + ": unknown key (expected one of " +
+                      app::joinText(kFleetKeys, ", ") + ")");
+  }
+  app::FleetSettings fleet;
+  fleet.robot_name = default_robot_name;
+  if (value.hasMember("enabled"))
+    fleet.enabled = readBool(value["enabled"], where, "fleet/enabled");
+  if (value.hasMember("topic")) fleet.topic = readString(value["topic"], where, "fleet/topic");
+  if (value.hasMember("frame")) fleet.frame = readString(value["frame"], where, "fleet/frame");
+  if (value.hasMember("robot_name")) {
+    fleet.robot_name = readString(value["robot_name"], where, "fleet/robot_name");
+  }
+  if (value.hasMember("rate")) fleet.rate = readNumber(value["rate"], where, "fleet/rate");
+  return fleet;
+}
+
 /// scan_obstacles' keys, in a node's private namespace or in a scan source's entry.
 const std::vector<std::string> kScanKeys = {"cluster_distance",
                                             "min_cluster_points",
@@ -411,9 +438,11 @@ void readTracking(const XmlRpcValue& root,
 }
 
 /// `sources`: a list of {name, type, topic, timeout, <scan keys for types scan and cloud,
-/// min_radius for range>}; types and required keys here, every value rule in
-/// app::findInvalidSources().
-std::vector<app::SourceSpec> readSources(const XmlRpcValue& list, const std::string& fixed_frame) {
+/// min_radius for range, required for robots>}; types and required keys here, every value rule
+/// in app::findInvalidSources(). A robots source's topic defaults to `fleet_topic`, its timeout
+/// to app::kDefaultRobotsTimeoutS.
+std::vector<app::SourceSpec> readSources(const XmlRpcValue& list, const std::string& fixed_frame,
+                                         const std::string& fleet_topic) {
   const std::string where = "parameter ~sources";
   if (list.getType() != XmlRpcValue::TypeArray) {
     fail(where, "sources", "a list of {name, type, topic, timeout, ...}", describeValue(list));
@@ -424,6 +453,8 @@ std::vector<app::SourceSpec> readSources(const XmlRpcValue& list, const std::str
   scan_source_keys.push_back("tracking");
   std::vector<std::string> range_source_keys = kSourceKeys;
   range_source_keys.push_back("min_radius");
+  std::vector<std::string> robots_source_keys = kSourceKeys;
+  robots_source_keys.push_back("required");
   std::vector<app::SourceSpec> sources;
   for (int i = 0; i < list.size(); ++i) {
     const std::string entry = app::entryName("sources", i);
@@ -431,7 +462,7 @@ std::vector<app::SourceSpec> readSources(const XmlRpcValue& list, const std::str
     if (value.getType() != XmlRpcValue::TypeStruct) {
       fail(where, entry, "a dict {name, type, topic, timeout, ...}", describeValue(value));
     }
-    for (const char* required : {"name", "type", "topic"}) {
+    for (const char* required : {"name", "type"}) {
       if (!value.hasMember(required)) {
         fail(where, entry + "." + required, "a value (required)", "nothing");
       }
@@ -440,19 +471,31 @@ std::vector<app::SourceSpec> readSources(const XmlRpcValue& list, const std::str
     source.name = readString(value["name"], where, entry + ".name");
     const std::string type = readString(value["type"], where, entry + ".type");
     failOn(app::parseSourceType(type, entry + ".type", &source.type), where);
-    source.topic = readString(value["topic"], where, entry + ".topic");
+    const bool robots = source.type == app::SourceType::Robots;
+    if (value.hasMember("topic")) {
+      source.topic = readString(value["topic"], where, entry + ".topic");
+    } else if (robots) {
+      source.topic = fleet_topic;
+    } else {
+      fail(where, entry + ".topic", "a value (required)", "nothing");
+    }
+    if (robots) source.timeout_s = app::kDefaultRobotsTimeoutS;
     if (value.hasMember("timeout")) {
       source.timeout_s = readNumber(value["timeout"], where, entry + ".timeout");
     }
     const std::vector<std::string>& keys = source.type == app::SourceType::Ellipses ? kSourceKeys
                                            : source.type == app::SourceType::Range
                                                ? range_source_keys
-                                               : scan_source_keys;
+                                           : robots ? robots_source_keys
+                                                    : scan_source_keys;
     if (const auto key = unknownKey(value, keys)) {
       fail(where, entry + "." + *key,
            "one of " + app::joinText(keys, ", ") + " (type " + type + ")", "an unknown key");
     }
-    if (source.type != app::SourceType::Ellipses) {
+    if (value.hasMember("required")) {
+      source.required = readBool(value["required"], where, entry + ".required");
+    }
+    if (source.type != app::SourceType::Ellipses && !robots) {
       readScanSettings(
           value, [&](const std::string&) { return where; }, &source.scan, entry + ".");
     }
@@ -481,7 +524,8 @@ app::MonitorSettings nodeMonitorDefaults() {
   return settings;
 }
 
-NodeConfig parseNodeConfig(const XmlRpcValue& params, const UrdfLinkFitter& fit_urdf_links) {
+NodeConfig parseNodeConfig(const XmlRpcValue& params, const UrdfLinkFitter& fit_urdf_links,
+                           const std::string& default_robot_name) {
   XmlRpcValue root = params;
   if (root.getType() == XmlRpcValue::TypeInvalid) root = XmlRpcValue();
   if (root.getType() != XmlRpcValue::TypeInvalid && root.getType() != XmlRpcValue::TypeStruct) {
@@ -510,7 +554,8 @@ NodeConfig parseNodeConfig(const XmlRpcValue& params, const UrdfLinkFitter& fit_
                                                       "prediction_horizon",
                                                       "marker_refresh_period",
                                                       "gate",
-                                                      "sources"};
+                                                      "sources",
+                                                      "fleet"};
   if (root.getType() == XmlRpcValue::TypeStruct) {
     if (const auto key = unknownKey(root, kKnownKeys)) {
       throw ConfigError("parameter ~" + *key + ": unknown key (expected one of " +
@@ -573,8 +618,14 @@ NodeConfig parseNodeConfig(const XmlRpcValue& params, const UrdfLinkFitter& fit_
     config.marker_refresh_period_s = readSetting(root, "marker_refresh_period");
   }
   if (has("gate")) config.monitor.gate = readGate(root["gate"]);
+  config.fleet.robot_name = default_robot_name;
+  if (has("fleet")) config.fleet = readFleet(root["fleet"], default_robot_name);
+  if (const auto invalid = app::findInvalidSetting(config.fleet)) {
+    fail("parameter ~fleet", invalid->key, invalid->expected, invalid->actual);
+  }
   if (has("sources")) {
-    config.monitor.sources = readSources(root["sources"], config.monitor.check.fixed_frame);
+    config.monitor.sources =
+        readSources(root["sources"], config.monitor.check.fixed_frame, config.fleet.topic);
   }
   if (!has("links") && !has("links_from_urdf")) {
     throw ConfigError(
@@ -646,7 +697,11 @@ NodeConfig loadNodeConfig(const ros::NodeHandle& private_nh, const UrdfLinkFitte
   XmlRpcValue params;
   // Absent namespace: no parameters at all, which parseNodeConfig reports as a missing ~links.
   if (!ros::param::get(private_nh.getNamespace(), params)) params = XmlRpcValue();
-  return parseNodeConfig(params, fit_urdf_links);
+  // The private namespace is the node's name; its parent the node's namespace.
+  const std::string& node_name = private_nh.getNamespace();
+  return parseNodeConfig(
+      params, fit_urdf_links,
+      app::defaultFleetRobotName(ros::names::parentNamespace(node_name), node_name));
 }
 
 app::ScanObstacleSettings parseScanObstacleSettings(const XmlRpcValue& params) {

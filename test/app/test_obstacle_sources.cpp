@@ -276,5 +276,71 @@ TEST(SourceFreshness, ARefusedMessageIsNotFreshAndIsReportedForItsSource) {
   EXPECT_NE(monitor.replaceSourceObstacles(3, {}, 1.0, 1.0, frames), "") << "no such source";
 }
 
+TEST(RobotsSource, OtherRobotsKeepTheirNamesAndComeAndGoWithoutMakingAnswersIncomplete) {
+  MonitorSettings settings = twoSources();
+  settings.sources.push_back(source("robots", SourceType::Robots, "/fleet/footprints", 1.0));
+  CollisionMonitor monitor(settings, {circle("body", "base_link", 0, 0, 0.3)}, {}, {}, {});
+  const TransformLookup frames = everyFrameAtOrigin();
+  for (std::size_t scanner : {1u, 2u}) {
+    ASSERT_EQ(monitor.replaceSourceObstacles(scanner, {}, 5.0, 5.0, frames), "");
+  }
+  // Another robot's link 1.2 m ahead: standing, 0.5 m/s forward reaches it in 2.4 s (PASS).
+  app::EllipseSpec other = circle("r2/front", "map", 1.8, 0.0, 0.3);
+  ASSERT_EQ(monitor.replaceSourceObstacles(3, {other}, 1.0, 1.0, frames), "");
+  EXPECT_TRUE(monitor.registry().contains("r2/front")) << "named as published, no source prefix";
+  EXPECT_FALSE(monitor.registry().contains("robots/r2/front"));
+  VelocityCommand forward;
+  forward.linear.x() = 0.5;
+  EXPECT_EQ(monitor.gateCommand(forward, 5.0, frames, everyFrameAtOriginAt()).action,
+            GateAction::Pass);
+  // Coming at the robot at 1 m/s: contact in 0.8 s, sooner than time_before_collision.
+  other.vx = -1.0;
+  ASSERT_EQ(monitor.replaceSourceObstacles(3, {other}, 1.1, 1.1, frames), "");
+  const GateDecision decision = monitor.gateCommand(forward, 5.0, frames, everyFrameAtOriginAt());
+  EXPECT_NE(decision.action, GateAction::Pass) << decision.reason;
+  EXPECT_NE(decision.reason.find("r2/front"), std::string::npos) << decision.reason;
+  // Four seconds without a footprint: the robots source is not silent, the answers complete.
+  const CheckOutcome& later = monitor.serviceCheck({}, 0.0, 5.0, frames, everyFrameAtOriginAt());
+  EXPECT_TRUE(later.complete) << (later.silent_sources.empty() ? "" : later.silent_sources[0]);
+  // The roster dropped r2: its links go, and that drop is no message heard.
+  ASSERT_EQ(monitor.replaceSourceObstacles(3, {}, 5.0, 5.0, frames, /*heard=*/false), "");
+  EXPECT_FALSE(monitor.registry().contains("r2/front"));
+  EXPECT_EQ(monitor.sourceFreshness().stats(5.0)[3].messages, 2u);
+}
+
+TEST(RobotsSource, RequiredMakesItsSilenceIncomplete) {
+  MonitorSettings settings;
+  settings.check.fixed_frame = "map";
+  SourceSpec robots = source("robots", SourceType::Robots, "/fleet/footprints", 1.0);
+  robots.required = true;
+  settings.sources = {robots};
+  CollisionMonitor monitor(settings, {circle("body", "base_link", 0, 0, 0.3)}, {}, {}, {});
+  const TransformLookup frames = everyFrameAtOrigin();
+  ASSERT_EQ(monitor.replaceSourceObstacles(1, {circle("r2/front", "map", 3.0, 0.0, 0.3)}, 1.0, 1.0,
+                                           frames),
+            "");
+  EXPECT_TRUE(monitor.serviceCheck({}, 0.0, 1.5, frames, everyFrameAtOriginAt()).complete);
+  // Dropping the silent robot does not count as hearing from the fleet.
+  ASSERT_EQ(monitor.replaceSourceObstacles(1, {}, 2.1, 2.1, frames, /*heard=*/false), "");
+  const CheckOutcome& silent = monitor.serviceCheck({}, 0.0, 2.2, frames, everyFrameAtOriginAt());
+  EXPECT_FALSE(silent.complete);
+  ASSERT_EQ(silent.silent_sources.size(), 1u);
+  EXPECT_EQ(silent.silent_sources[0], "source 'robots' silent for 1.2 s (timeout 1 s)");
+}
+
+TEST(RobotsSource, TheListsRulesForRobots) {
+  SourceSpec robots = source("robots", SourceType::Robots, "/fleet/footprints", 0.0);
+  EXPECT_EQ(refusal({robots}), "sources[0].timeout = 0") << "a robot must be able to leave";
+  robots.timeout_s = 1.0;
+  EXPECT_EQ(refusal({robots}), "");
+  SourceSpec scan = source("front_scan", SourceType::Scan, "front/scan", 0.5);
+  scan.required = true;
+  EXPECT_EQ(refusal({robots, scan}), "sources[1].required = true");
+  SourceType type;
+  EXPECT_FALSE(parseSourceType("robots", "type", &type));
+  EXPECT_EQ(type, SourceType::Robots);
+  EXPECT_STREQ(toString(SourceType::Robots), "robots");
+}
+
 }  // namespace
 }  // namespace ellipse_collision::app

@@ -528,7 +528,8 @@ TEST(NodeConfig, BadSourcesStopTheNodeNamingEntryKeyAndValue) {
   EXPECT_CONTAINS(with([](XmlRpcValue& s) { s[0]["topic"] = ""; }), "key 'sources[0].topic'");
   EXPECT_CONTAINS(
       with([](XmlRpcValue& s) { s[0]["type"] = "sonar"; }),
-      "key 'sources[0].type': expected 'ellipses', 'scan', 'cloud' or 'range', got 'sonar'");
+      "key 'sources[0].type': expected 'ellipses', 'scan', 'cloud', 'range' or 'robots', got "
+      "'sonar'");
   EXPECT_CONTAINS(with([](XmlRpcValue& s) { s[0]["timeout"] = std::nan(""); }),
                   "key 'sources[0].timeout'");
   EXPECT_CONTAINS(with([](XmlRpcValue& s) { s[0]["timeout"] = -1.0; }), "key 'sources[0].timeout'");
@@ -562,6 +563,71 @@ TEST(NodeConfig, BadSourcesStopTheNodeNamingEntryKeyAndValue) {
   XmlRpcValue not_a_list = validParams();
   not_a_list["sources"] = "front";
   EXPECT_CONTAINS(errorOf(not_a_list), "key 'sources'");
+}
+
+TEST(NodeConfig, FleetSettingsDefaultToPublishingTheNamespaceInMap) {
+  const NodeConfig defaults = parseNodeConfig(validParams(), {}, "r7");
+  EXPECT_TRUE(defaults.fleet.enabled);
+  EXPECT_EQ(defaults.fleet.topic, "/fleet/footprints");
+  EXPECT_EQ(defaults.fleet.frame, "map");
+  EXPECT_EQ(defaults.fleet.robot_name, "r7");
+  EXPECT_EQ(defaults.fleet.rate, 10.0);
+  XmlRpcValue p = validParams();
+  p["fleet"]["enabled"] = false;
+  p["fleet"]["frame"] = "world";
+  p["fleet"]["robot_name"] = "forklift_2";
+  p["fleet"]["rate"] = 20;
+  p["fleet"]["topic"] = "/site/footprints";
+  const NodeConfig config = parseNodeConfig(p, {}, "r7");
+  EXPECT_FALSE(config.fleet.enabled);
+  EXPECT_EQ(config.fleet.frame, "world");
+  EXPECT_EQ(config.fleet.robot_name, "forklift_2");
+  EXPECT_EQ(config.fleet.rate, 20.0);
+  EXPECT_EQ(config.fleet.topic, "/site/footprints");
+}
+
+TEST(NodeConfig, BadFleetSettingsStopTheNodeNamingTheKey) {
+  const auto with = [](void (*change)(XmlRpcValue&)) {
+    XmlRpcValue p = validParams();
+    change(p["fleet"]);
+    return errorOf(p);
+  };
+  EXPECT_CONTAINS(with([](XmlRpcValue& f) { f["robot_name"] = "a/b"; }),
+                  "key 'fleet/robot_name': expected a non-empty name without '/', got 'a/b'");
+  EXPECT_CONTAINS(with([](XmlRpcValue& f) { f["rate"] = 0.0; }), "key 'fleet/rate'");
+  EXPECT_CONTAINS(with([](XmlRpcValue& f) { f["rate"] = std::nan(""); }), "key 'fleet/rate'");
+  EXPECT_CONTAINS(with([](XmlRpcValue& f) { f["frame"] = "/map"; }), "key 'fleet/frame'");
+  EXPECT_CONTAINS(with([](XmlRpcValue& f) { f["enabled"] = "yes"; }), "key 'fleet/enabled'");
+  EXPECT_CONTAINS(with([](XmlRpcValue& f) { f["rates"] = 1.0; }), "~fleet/rates: unknown key");
+}
+
+TEST(NodeConfig, ARobotsSourceListensOnTheFleetTopicAndIsWatchedOnlyWhenRequired) {
+  XmlRpcValue p = validParams();
+  p["fleet"]["topic"] = "/site/footprints";
+  p["sources"][0]["name"] = "fleet";
+  p["sources"][0]["type"] = "robots";
+  const NodeConfig config = parseNodeConfig(p, {}, "r1");
+  ASSERT_EQ(config.monitor.sources.size(), 1u);
+  const app::SourceSpec& robots = config.monitor.sources[0];
+  EXPECT_EQ(robots.type, app::SourceType::Robots);
+  EXPECT_EQ(robots.topic, "/site/footprints") << "fleet/topic by default";
+  EXPECT_EQ(robots.timeout_s, app::kDefaultRobotsTimeoutS);
+  EXPECT_FALSE(robots.required);
+  EXPECT_FALSE(app::watchesSilence(robots)) << "robots leave: no INCOMPLETE by default";
+  p["sources"][0]["required"] = true;
+  p["sources"][0]["timeout"] = 2.0;
+  const NodeConfig required = parseNodeConfig(p, {}, "r1");
+  EXPECT_TRUE(app::watchesSilence(required.monitor.sources[0]));
+  EXPECT_EQ(required.monitor.sources[0].timeout_s, 2.0);
+  p["sources"][0]["timeout"] = 0.0;
+  EXPECT_CONTAINS(errorOf(p), "key 'sources[0].timeout': expected a number within (0, 3600]");
+  p["sources"][0]["timeout"] = 1.0;
+  p["sources"][0]["min_radius"] = 0.1;
+  EXPECT_CONTAINS(errorOf(p), "key 'sources[0].min_radius'");
+  XmlRpcValue scan = validParams();
+  scan["sources"][0] = sourceEntry("front_scan", "scan", "front/scan");
+  scan["sources"][0]["required"] = true;
+  EXPECT_CONTAINS(errorOf(scan), "key 'sources[0].required'") << "robots sources only";
 }
 
 }  // namespace

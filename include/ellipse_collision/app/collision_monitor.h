@@ -161,11 +161,14 @@ class CollisionMonitor {
   ChangeAnswer removeObstacles(const std::vector<std::string>& names);
   /// One message of obstacle source `source` (0 = ~obstacles, i = settings().sources[i - 1]),
   /// received at `now_s`: it replaces that source's obstacles alone, or is refused whole (the
-  /// previous ones kept). A listed source's obstacles are stored under sourceObstacleName().
-  /// An accepted message counts for the source's freshness (SourceFreshness); the store follows
-  /// ~obstacles within obstacle_store_period. Returns "" or why refused.
+  /// previous ones kept). A listed source's obstacles are stored under sourceObstacleName(),
+  /// a robots source's under the names they were published with. An accepted message counts
+  /// for the source's freshness (SourceFreshness) when `heard` (not when a robots source drops
+  /// a silent robot); the store follows ~obstacles within obstacle_store_period. Returns "" or
+  /// why refused.
   std::string replaceSourceObstacles(std::size_t source, std::vector<EllipseSpec> specs,
-                                     double stamp_s, double now_s, const TransformLookup& lookup);
+                                     double stamp_s, double now_s, const TransformLookup& lookup,
+                                     bool heard = true);
   /// A message of source `source` that could not be turned into obstacles (a cloud without x, y,
   /// z; a broken range reading): `why` is reported for the source, and it does not count as
   /// fresh.

@@ -12,10 +12,11 @@ namespace ellipse_collision::app {
 
 /// What a source's messages are: ellipses as they are (ellipse_collision/EllipseArray); a laser
 /// scan (sensor_msgs/LaserScan) or a point cloud (sensor_msgs/PointCloud2) turned into ellipses
-/// by the scan_obstacles pipeline; a sonar or IR reading (sensor_msgs/Range, rangeObstacles()).
-enum class SourceType { Ellipses, Scan, Cloud, Range };
+/// by the scan_obstacles pipeline; a sonar or IR reading (sensor_msgs/Range, rangeObstacles());
+/// the other robots of the fleet (ellipse_collision/EllipseArray footprints, FleetRoster).
+enum class SourceType { Ellipses, Scan, Cloud, Range, Robots };
 
-/// "ellipses", "scan", "cloud" or "range", as the `type` key spells them.
+/// "ellipses", "scan", "cloud", "range" or "robots", as the `type` key spells them.
 const char* toString(SourceType type);
 /// The type `text` names, or a FieldError of key `key`.
 std::optional<FieldError> parseSourceType(const std::string& text, const std::string& key,
@@ -28,8 +29,12 @@ struct SourceSpec {
   SourceType type{SourceType::Ellipses};
   std::string topic;  ///< resolved in the node's namespace ("~x": private)
   /// Silent for longer than this [s] makes answers incomplete and the gate INCOMPLETE;
-  /// 0 = no watchdog.
+  /// 0 = no watchdog. Type robots: a robot silent for longer is dropped (> 0, default
+  /// kDefaultRobotsTimeoutS), and the source is watched only when `required`.
   double timeout_s{0.0};
+  /// Type robots only: no footprint from any robot for `timeout_s` makes answers incomplete
+  /// (a fleet that must be there); otherwise robots come and go freely.
+  bool required{false};
   /// The pipeline's settings (types scan and cloud; range uses min_radius alone).
   ScanObstacleSettings scan;
   /// Types scan and cloud: the obstacles' velocities (ObstacleTracker); the node's fixed_frame
@@ -42,12 +47,18 @@ struct SourceSpec {
 /// topic.
 inline constexpr const char* kDefaultSourceName = "obstacles";
 inline constexpr double kMaxSourceTimeoutS = 3600.0;  ///< timeout within [0, kMaxSourceTimeoutS]
+inline constexpr double kDefaultRobotsTimeoutS = 1.0;  ///< a robots source's timeout unless given
 
 /// The first violation of the source list's rules, its key naming the entry ("sources[1].topic"):
 /// name non-empty of [A-Za-z0-9_] and used once (kDefaultSourceName included); topic non-empty
 /// and used once ("obstacles" and "~obstacles" are the default source's); timeout finite within
-/// [0, kMaxSourceTimeoutS]; a scan, cloud or range source's settings pass findInvalidSetting().
+/// [0, kMaxSourceTimeoutS] (> 0 for type robots); `required` on type robots only; a scan, cloud
+/// or range source's settings pass findInvalidSetting().
 std::optional<FieldError> findInvalidSources(const std::vector<SourceSpec>& sources);
+
+/// Whether the source's silence makes answers incomplete (SourceFreshness): every source but a
+/// robots source that is not `required` (robots that leave are normal).
+bool watchesSilence(const SourceSpec& source);
 
 /// The name an obstacle of source `source` is stored under: "<source>/<obstacle>", so that two
 /// sources (two scanners both naming their ellipses scan_0, ...) never claim the same name.

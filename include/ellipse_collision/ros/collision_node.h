@@ -1,5 +1,6 @@
 #pragma once
 
+#include <diagnostic_msgs/DiagnosticStatus.h>
 #include <dynamic_reconfigure/server.h>
 #include <geometry_msgs/Twist.h>
 #include <nav_msgs/Odometry.h>
@@ -18,6 +19,8 @@
 #include <vector>
 
 #include "ellipse_collision/app/collision_monitor.h"
+#include "ellipse_collision/app/fleet_footprint.h"
+#include "ellipse_collision/app/fleet_roster.h"
 #include "ellipse_collision/app/sensor_obstacle_series.h"
 #include "ellipse_collision/core/scene_check.h"
 #include "ellipse_collision/ros/collision_markers.h"
@@ -72,6 +75,16 @@ class CollisionNode {
   void trackSource(std::size_t source, app::SensorObstacles& obstacles,
                    const std_msgs::Header& header, bool cloud);
   void onSourceRange(std::size_t source, const sensor_msgs::Range::ConstPtr& msg);
+  /// A robots source's footprint message: kept by the source's FleetRoster (own robot ignored,
+  /// a bad message refused whole), every other robot's links handed to the monitor.
+  void onSourceRobots(std::size_t source, const EllipseArray::ConstPtr& msg);
+  /// Drops the robots of every robots source silent past its timeout, logging each.
+  void onRosterTimer(const ros::TimerEvent& event);
+  /// fleet/: this robot's links in fleet/frame with their velocities over the last interval.
+  void onFleetTimer(const ros::TimerEvent& event);
+  /// /diagnostics' "fleet" status: what is published (or why not) and each robots source's
+  /// robots; none when the fleet is off and no robots source is listed.
+  std::optional<diagnostic_msgs::DiagnosticStatus> fleetStatus(double now_s) const;
   /// The scan pipeline's obstacles of one message of `source` (skipped clusters logged), handed on.
   void replaceSensorObstacles(std::size_t source, const app::SensorObstacles& obstacles,
                               const ros::Time& stamp);
@@ -121,6 +134,14 @@ class CollisionNode {
   /// A scan or cloud source's pipeline state (cuts and names kept from message to message), by
   /// source index; null for other sources.
   std::vector<std::unique_ptr<app::SensorObstacleSeries>> source_series_;
+  /// A robots source's robots, by source index; null for other sources.
+  std::vector<std::unique_ptr<app::FleetRoster>> rosters_;
+  ros::Timer roster_timer_;
+  ros::Publisher fleet_pub_;
+  ros::Timer fleet_timer_;
+  app::FleetFootprint fleet_footprint_;
+  std::string fleet_error_;  ///< why the last footprint was not sent ("" = it was)
+  std::size_t fleet_sent_{0};
   ros::ServiceServer check_service_;
   ros::ServiceServer add_service_;
   ros::ServiceServer remove_service_;

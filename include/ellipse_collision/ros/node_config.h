@@ -13,6 +13,7 @@
 #include "ellipse_collision/app/collision_monitor.h"
 #include "ellipse_collision/app/ellipse_registry.h"
 #include "ellipse_collision/app/ellipse_spec.h"
+#include "ellipse_collision/app/fleet_footprint.h"
 #include "ellipse_collision/app/gate_config.h"
 #include "ellipse_collision/app/link_fitting.h"
 #include "ellipse_collision/app/obstacle_tracker.h"
@@ -60,6 +61,9 @@ struct NodeConfig {
   /// geometry"); the node logs them at start-up.
   std::vector<std::string> urdf_links_skipped;
   std::vector<app::EllipseSpec> obstacles;
+  /// `fleet/`: what the node tells the other robots about its own (FleetFootprint); its
+  /// robot_name is also the one a robots source ignores.
+  app::FleetSettings fleet;
 };
 
 /// How a configuration error reads, at start-up and when reconfigured: "<where>, key '<key>':
@@ -78,9 +82,11 @@ using UrdfLinkFitter =
 /// accepted where a double is expected. Values out of their documented range are refused, never
 /// clamped; every ellipse must pass findInvalidPaddedField() with the global padding.
 /// `links_from_urdf: {param, links, padding}` appends the ellipses `fit_urdf_links` fits to
-/// `links` (an empty `fit_urdf_links` makes it an error). Throws ConfigError.
+/// `links` (an empty `fit_urdf_links` makes it an error). `default_robot_name` is
+/// fleet/robot_name's default (app::defaultFleetRobotName() of the node). Throws ConfigError.
 NodeConfig parseNodeConfig(const XmlRpc::XmlRpcValue& params,
-                           const UrdfLinkFitter& fit_urdf_links = {});
+                           const UrdfLinkFitter& fit_urdf_links = {},
+                           const std::string& default_robot_name = "robot");
 
 /// Parses a list of ellipses as the node's `links` and `obstacles` are given: each entry a dict
 /// {name, frame, x, y, angle, radius_x, radius_y, padding (optional)} [m, rad], its fields checked

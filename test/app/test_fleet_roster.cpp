@@ -1,0 +1,81 @@
+// The other robots as this node keeps them: grouped by name, its own ignored, replaced message by
+// message, dropped when silent, refused whole when a name or a field is wrong.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "ellipse_collision/app/fleet_roster.h"
+
+namespace ellipse_collision::app {
+namespace {
+
+EllipseSpec link(const std::string& name, double x, double vx = 0.0) {
+  EllipseSpec e;
+  e.name = name;
+  e.frame_id = "map";
+  e.x = x;
+  e.radius_x = e.radius_y = 0.3;
+  e.vx = vx;
+  return e;
+}
+
+std::vector<std::string> names(const std::vector<EllipseSpec>& specs) {
+  std::vector<std::string> out;
+  for (const EllipseSpec& s : specs) out.push_back(s.name);
+  return out;
+}
+
+TEST(FleetRoster, KeepsEachOtherRobotsLatestLinksAndIgnoresItsOwn) {
+  FleetRoster roster("r1", 1.0);
+  EXPECT_FALSE(roster.receive(
+      0.0, {link("r1/base_link", 0.0), link("r2/base_link", 3.0, -1.0), link("r2/arm", 3.2)}));
+  EXPECT_FALSE(roster.receive(0.1, {link("r3/base_link", -2.0, 0.5)}));
+  EXPECT_EQ(names(roster.obstacles()),
+            (std::vector<std::string>{"r2/base_link", "r2/arm", "r3/base_link"}));
+  EXPECT_EQ(roster.obstacles()[0].vx, -1.0);  // velocities kept
+  // r2's next footprint replaces its links (the arm is gone from it).
+  EXPECT_FALSE(roster.receive(0.2, {link("r2/base_link", 2.9, -1.0)}));
+  EXPECT_EQ(names(roster.obstacles()), (std::vector<std::string>{"r2/base_link", "r3/base_link"}));
+  EXPECT_EQ(roster.obstacles()[0].x, 2.9);
+  const auto robots = roster.robots(0.5);
+  ASSERT_EQ(robots.size(), 2u);
+  EXPECT_EQ(robots[0].name, "r2");
+  EXPECT_NEAR(robots[0].age_s, 0.3, 1e-12);
+  EXPECT_EQ(robots[0].links, 1u);
+}
+
+TEST(FleetRoster, RobotsSilentPastTheTimeoutAreDropped) {
+  FleetRoster roster("r1", 1.0);
+  roster.receive(0.0, {link("r2/base_link", 3.0)});
+  roster.receive(0.8, {link("r3/base_link", 4.0)});
+  EXPECT_TRUE(roster.dropSilent(1.0).empty());  // r2 exactly 1 s: kept
+  EXPECT_EQ(roster.dropSilent(1.5), std::vector<std::string>{"r2"});
+  EXPECT_EQ(names(roster.obstacles()), std::vector<std::string>{"r3/base_link"});
+  // /diagnostics names the robot kept and the one dropped, until it is heard from again.
+  const auto health = roster.healthValues(1.5);
+  ASSERT_EQ(health.size(), 2u);
+  EXPECT_EQ(health[0].second, "r3 (0.7 s ago, 1 links)");
+  EXPECT_EQ(health[1].first, "dropped (silent past 1 s)");
+  EXPECT_EQ(health[1].second, "r2");
+  roster.receive(1.6, {link("r2/base_link", 2.0)});
+  EXPECT_EQ(roster.healthValues(1.6)[1].second, "none");
+}
+
+TEST(FleetRoster, AMessageWithABadEntryIsRefusedWholeNamingIt) {
+  FleetRoster roster("r1", 1.0);
+  roster.receive(0.0, {link("r2/base_link", 3.0)});
+  EXPECT_EQ(roster.receive(0.1, {link("r2/base_link", 2.0), link("base_link", 1.0)}),
+            "ellipses[1].name = 'base_link': expected '<robot>/<link>'");
+  EllipseSpec bad = link("r2/arm", std::nan(""));
+  const auto refused = roster.receive(0.1, {bad});
+  ASSERT_TRUE(refused);
+  EXPECT_NE(refused->find("ellipses[0].x = nan"), std::string::npos) << *refused;
+  EXPECT_EQ(roster.receive(0.1, {link("r2/base_link", 2.0), link("r2/base_link", 2.5)}),
+            "ellipses[1].name = 'r2/base_link': expected a name used once");
+  // Nothing of these messages was taken.
+  ASSERT_EQ(roster.obstacles().size(), 1u);
+  EXPECT_EQ(roster.obstacles()[0].x, 3.0);
+}
+
+}  // namespace
+}  // namespace ellipse_collision::app
