@@ -6,6 +6,8 @@ add_library(ellipse_collision_ros
   src/ros/collision_node.cpp
   src/ros/conversions.cpp
   src/ros/gate_markers.cpp
+  src/ros/incident_bag.cpp
+  src/ros/incident_writer.cpp
   src/ros/node_config.cpp
   src/ros/reconfigure.cpp
   src/ros/scan_obstacles.cpp

@@ -352,3 +352,7 @@ catkin_run_tests_target("rostest" "test_docs_doc_readme.test" "rostest-test_docs
 # The simulated base the gate's tests and the demo drive: its rest against the closed forms.
 ellipse_collision_add_gtest(test_simulated_base LIBRARIES ellipse_collision_core SOURCES
   test/core/test_simulated_base.cpp)
+# The incident recorder through the real node: a STOP to a bag, ~save_incident, max_files, and a
+# directory that cannot be created.
+ellipse_collision_add_rostest(test_incidents test/ros/incidents.test test/ros/test_incidents.cpp)
+target_include_directories(test_incidents PRIVATE ${std_srvs_INCLUDE_DIRS})

@@ -239,7 +239,7 @@ std::string incidentFileName(double wall_s, const std::string& trigger) {
   const int millis = std::min(999, static_cast<int>((wall_s - whole) * 1000.0));
   std::tm utc{};
   gmtime_r(&seconds, &utc);
-  char stamp[32];
+  char stamp[64];
   std::snprintf(stamp, sizeof(stamp), "%04d%02d%02dT%02d%02d%02d.%03dZ", utc.tm_year + 1900,
                 utc.tm_mon + 1, utc.tm_mday, utc.tm_hour, utc.tm_min, utc.tm_sec, millis);
   return "incident_" + std::string(stamp) + "_" + trigger + ".bag";

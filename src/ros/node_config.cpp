@@ -333,6 +333,53 @@ app::GateConfig readGate(const XmlRpcValue& value) {
   return gate;
 }
 
+/// `incident: {enabled, before, after, ...}`: types here, ranges by
+/// app::findInvalidIncidentSetting().
+app::IncidentSettings readIncident(const XmlRpcValue& value) {
+  const std::string where = "parameter ~incident";
+  if (value.getType() != XmlRpcValue::TypeStruct) {
+    fail(where, "incident", "a dict of incident parameters", describeValue(value));
+  }
+  static const std::vector<std::string> kIncidentKeys = {
+      "enabled",      "before",    "after",         "actions",
+      "min_interval", "max_files", "max_megabytes", "directory"};
+  if (const auto key = unknownKey(value, kIncidentKeys)) {
+    throw ConfigError("parameter ~incident/" + *key + ": unknown key (expected one of " +
+                      app::joinText(kIncidentKeys, ", ") + ")");
+  }
+  app::IncidentSettings incident;
+  if (value.hasMember("enabled")) {
+    incident.enabled = readBool(value["enabled"], where, "incident/enabled");
+  }
+  for (const auto& [key, field] : {std::pair<const char*, double*>{"before", &incident.before_s},
+                                   {"after", &incident.after_s},
+                                   {"min_interval", &incident.min_interval_s},
+                                   {"max_megabytes", &incident.max_megabytes}}) {
+    if (value.hasMember(key))
+      *field = readNumber(value[key], where, std::string("incident/") + key);
+  }
+  if (value.hasMember("max_files")) {
+    incident.max_files = static_cast<std::size_t>(
+        readWhole(value["max_files"], where, "incident/max_files", app::kMaxIncidentFiles));
+  }
+  if (value.hasMember("directory")) {
+    incident.directory = readString(value["directory"], where, "incident/directory");
+  }
+  if (value.hasMember("actions")) {
+    XmlRpcValue list = value["actions"];
+    if (list.getType() != XmlRpcValue::TypeArray) {
+      fail(where, "incident/actions", "a list of gate actions", describeValue(list));
+    }
+    std::vector<std::string> names;
+    for (int i = 0; i < list.size(); ++i) {
+      names.push_back(readString(list[i], where, "incident/actions[" + std::to_string(i) + "]"));
+    }
+    failOn(app::parseIncidentActions(names, &incident.actions), where);
+  }
+  failOn(app::findInvalidIncidentSetting(incident), where);
+  return incident;
+}
+
 /// scan_obstacles' keys, in a node's private namespace or in a scan source's entry.
 const std::vector<std::string> kScanKeys = {"cluster_distance",
                                             "min_cluster_points",
@@ -510,7 +557,8 @@ NodeConfig parseNodeConfig(const XmlRpcValue& params, const UrdfLinkFitter& fit_
                                                       "prediction_horizon",
                                                       "marker_refresh_period",
                                                       "gate",
-                                                      "sources"};
+                                                      "sources",
+                                                      "incident"};
   if (root.getType() == XmlRpcValue::TypeStruct) {
     if (const auto key = unknownKey(root, kKnownKeys)) {
       throw ConfigError("parameter ~" + *key + ": unknown key (expected one of " +
@@ -573,6 +621,7 @@ NodeConfig parseNodeConfig(const XmlRpcValue& params, const UrdfLinkFitter& fit_
     config.marker_refresh_period_s = readSetting(root, "marker_refresh_period");
   }
   if (has("gate")) config.monitor.gate = readGate(root["gate"]);
+  if (has("incident")) config.monitor.incident = readIncident(root["incident"]);
   if (has("sources")) {
     config.monitor.sources = readSources(root["sources"], config.monitor.check.fixed_frame);
   }
@@ -630,12 +679,18 @@ std::vector<app::EllipseSpec> parseEllipseList(const XmlRpcValue& list, const st
   return readEllipseList(list, key, global_padding);
 }
 
-std::string defaultObstacleStore(const std::string& node_name) {
+std::string rosHome() {
   const char* ros_home = std::getenv("ROS_HOME");
   const char* home = std::getenv("HOME");
-  const std::string directory = ros_home && *ros_home ? std::string(ros_home)
-                                : home && *home        ? std::string(home) + "/.ros"
-                                                       : std::string("/tmp");
+  return ros_home && *ros_home ? std::string(ros_home)
+         : home && *home       ? std::string(home) + "/.ros"
+                               : std::string("/tmp");
+}
+
+std::string defaultIncidentDirectory() { return rosHome() + "/ellipse_collision/incidents"; }
+
+std::string defaultObstacleStore(const std::string& node_name) {
+  const std::string directory = rosHome();
   std::string file = node_name;
   for (char& c : file) c = c == '/' ? '_' : c;
   if (!file.empty() && file.front() == '_') file.erase(0, 1);
