@@ -56,3 +56,7 @@ install(FILES ${ELLIPSE_COLLISION_REAL_SOURCE_DIR}/nodelet_plugins.xml
   DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION})
 catkin_install_python(PROGRAMS examples/check_collisions_client.py
   DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
+# The page a person reads of an incident bag (doc/incidents.md): rosrun ellipse_collision
+# incident_report BAG.
+catkin_install_python(PROGRAMS scripts/incident_report
+  DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})

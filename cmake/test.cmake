@@ -282,6 +282,12 @@ catkin_run_tests_target("python" "core_bindings" "python-core_bindings.xml"
   COMMAND "${PYTHON_EXECUTABLE} ${PROJECT_SOURCE_DIR}/test/python/test_core_bindings.py ${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_BIN_DESTINATION}/check_ellipses --gtest_output=xml:${CATKIN_TEST_RESULTS_DIR}/${PROJECT_NAME}/python-core_bindings.xml"
   DEPENDENCIES ellipse_collision_python_core check_ellipses)
 
+# incident_report (scripts/incident_report) on bags written in the node's format: the page, the
+# scene figure's pixels, a plain ~gate_state recording.
+catkin_run_tests_target("python" "incident_report" "python-incident_report.xml"
+  COMMAND "${PYTHON_EXECUTABLE} ${PROJECT_SOURCE_DIR}/test/python/test_incident_report.py --gtest_output=xml:${CATKIN_TEST_RESULTS_DIR}/${PROJECT_NAME}/python-incident_report.xml"
+  DEPENDENCIES ${PROJECT_NAME}_generate_messages)
+
 # ---- reliability (test/reliability): hostile requests to every service and the ~obstacles topic,
 # bad configuration files started through the launch file, the load test ----------------------
 ellipse_collision_add_rostest(test_hostile_requests test/reliability/hostile_requests.test
