@@ -6,9 +6,13 @@
 // places them (25 per m^2 at 10,000: hundreds within reach, every command slowed). The command
 // turns (0.8 m/s, 0.3 rad/s), so every near pair takes the certified turning first contact.
 // `*_braking`: the same with the braking rule on (a base 0.1 s late braking at 0.8 m/s^2).
+// `*_no_recorder`: the same with the incident recorder off (incident/enabled: false), for its cost
+// side by side; `recorderMemory`: the heap the recorder's ring buffer holds after 10 s of commands
+// at 20 Hz (incident/before 10 s) among N standing obstacles.
 // Reports the median and the 99th percentile of the per-command latency (counters p50_us, p99_us)
 // besides Google Benchmark's mean.
 #include <benchmark/benchmark.h>
+#include <malloc.h>
 
 #include <algorithm>
 #include <chrono>
@@ -64,8 +68,10 @@ struct MovingBase {
   }
 };
 
-void gateCommands(benchmark::State& state, bool crowded, bool braking = false) {
+void gateCommands(benchmark::State& state, bool crowded, bool braking = false,
+                  bool recorder = true) {
   MonitorSettings settings;
+  settings.incident.enabled = recorder;
   settings.check.fixed_frame = "map";
   settings.gate.enabled = true;
   // A real base (0.1 s late, 0.8 m/s^2, 2 rad/s^2): the braking rule on every command.
@@ -103,10 +109,53 @@ void gateCommands(benchmark::State& state, bool crowded, bool braking = false) {
   state.counters["slowed_share"] = static_cast<double>(slowed) / latencies_us.size();
 }
 
+/// The heap the monitor holds after 200 commands 0.05 s apart, with the recorder on, less the
+/// same with it off [kB] (malloc's bytes in use).
+void recorderMemory(benchmark::State& state) {
+  const auto heapAfterCommands = [&](bool recorder) {
+    const std::size_t before = mallinfo2().uordblks;
+    MonitorSettings settings;
+    settings.check.fixed_frame = "map";
+    settings.gate.enabled = true;
+    settings.incident.enabled = recorder;
+    settings.incident.before_s = 10.0;
+    CollisionMonitor monitor(settings, links(),
+                             obstacles(static_cast<int>(state.range(0)), std::sqrt(state.range(0))),
+                             {}, {});
+    MovingBase base;
+    const TransformAtLookup at = [](const std::string&, double) { return FrameTransform(); };
+    VelocityCommand command;
+    command.linear.x() = 0.8;
+    command.angular.z() = 0.3;
+    for (int i = 0; i < 200; ++i) {
+      ++base.step;
+      monitor.gateCommand(command, 1.0 + 0.05 * base.step, TransformLookup(base), at);
+    }
+    if (recorder) {
+      state.counters["buffered_decisions"] =
+          static_cast<double>(monitor.incidents().bufferedDecisions());
+    }
+    return static_cast<double>(mallinfo2().uordblks) - static_cast<double>(before);
+  };
+  double kb = 0.0;
+  for (auto _ : state) kb = (heapAfterCommands(true) - heapAfterCommands(false)) / 1024.0;
+  state.counters["ring_buffer_kb"] = kb;
+}
+
 BENCHMARK_CAPTURE(gateCommands, warehouse, false)
     ->Arg(1000)->Arg(10000)->Arg(100000)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(gateCommands, warehouse_no_recorder, false, false, false)
+    ->Arg(1000)
+    ->Arg(10000)
+    ->Arg(100000)
+    ->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(gateCommands, crowded, true)
     ->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(gateCommands, crowded_no_recorder, true, false, false)
+    ->Arg(1000)
+    ->Arg(10000)
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK(recorderMemory)->Arg(10000)->Iterations(1)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(gateCommands, warehouse_braking, false, true)
     ->Arg(1000)->Arg(10000)->Arg(100000)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(gateCommands, crowded_braking, true, true)

@@ -6,6 +6,8 @@ add_library(ellipse_collision_ros
   src/ros/collision_node.cpp
   src/ros/conversions.cpp
   src/ros/gate_markers.cpp
+  src/ros/incident_bag.cpp
+  src/ros/incident_writer.cpp
   src/ros/node_config.cpp
   src/ros/reconfigure.cpp
   src/ros/scan_obstacles.cpp
@@ -53,4 +55,8 @@ install(DIRECTORY ${ELLIPSE_COLLISION_REAL_SOURCE_DIR}/launch ${ELLIPSE_COLLISIO
 install(FILES ${ELLIPSE_COLLISION_REAL_SOURCE_DIR}/nodelet_plugins.xml
   DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION})
 catkin_install_python(PROGRAMS examples/check_collisions_client.py
+  DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
+# The page a person reads of an incident bag (doc/incidents.md): rosrun ellipse_collision
+# incident_report BAG.
+catkin_install_python(PROGRAMS scripts/incident_report
   DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})

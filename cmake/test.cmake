@@ -140,6 +140,7 @@ ellipse_collision_add_gtest(test_app LIBRARIES ellipse_collision_app quadmath SO
   test/app/test_ellipse_spec.cpp
   test/app/test_field_error.cpp
   test/app/test_gate_config.cpp
+  test/app/test_incident_recorder.cpp
   test/app/test_velocity_command.cpp
   test/app/test_transform_lookup.cpp
   test/app/test_placement_cache.cpp
@@ -286,6 +287,12 @@ catkin_run_tests_target("python" "core_bindings" "python-core_bindings.xml"
   COMMAND "${PYTHON_EXECUTABLE} ${PROJECT_SOURCE_DIR}/test/python/test_core_bindings.py ${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_BIN_DESTINATION}/check_ellipses --gtest_output=xml:${CATKIN_TEST_RESULTS_DIR}/${PROJECT_NAME}/python-core_bindings.xml"
   DEPENDENCIES ellipse_collision_python_core check_ellipses)
 
+# incident_report (scripts/incident_report) on bags written in the node's format: the page, the
+# scene figure's pixels, a plain ~gate_state recording.
+catkin_run_tests_target("python" "incident_report" "python-incident_report.xml"
+  COMMAND "${PYTHON_EXECUTABLE} ${PROJECT_SOURCE_DIR}/test/python/test_incident_report.py --gtest_output=xml:${CATKIN_TEST_RESULTS_DIR}/${PROJECT_NAME}/python-incident_report.xml"
+  DEPENDENCIES ${PROJECT_NAME}_generate_messages)
+
 # ---- reliability (test/reliability): hostile requests to every service and the ~obstacles topic,
 # bad configuration files started through the launch file, the load test ----------------------
 ellipse_collision_add_rostest(test_hostile_requests test/reliability/hostile_requests.test
@@ -356,3 +363,7 @@ catkin_run_tests_target("rostest" "test_docs_doc_readme.test" "rostest-test_docs
 # The simulated base the gate's tests and the demo drive: its rest against the closed forms.
 ellipse_collision_add_gtest(test_simulated_base LIBRARIES ellipse_collision_core SOURCES
   test/core/test_simulated_base.cpp)
+# The incident recorder through the real node: a STOP to a bag, ~save_incident, max_files, and a
+# directory that cannot be created.
+ellipse_collision_add_rostest(test_incidents test/ros/incidents.test test/ros/test_incidents.cpp)
+target_include_directories(test_incidents PRIVATE ${std_srvs_INCLUDE_DIRS})

@@ -68,6 +68,10 @@ DEBIAN_PACKAGES=(
   # in (found by scripts/fresh_machine.sh: "No rule to make target .../libz.so")
   zlib1g-dev
   libresource-retriever-dev
+  # incident bags: written by the node (rosbag::Bag), read by incident_report
+  librosbag-dev
+  python3-rosbag
+  python3-matplotlib
   # nodelets (launch/scan_pipeline_nodelets.launch): the Nodelet base class and its library, the
   # load/list services (C++ and, for rosservice, Python), the plugin export macro, and the
   # `nodelet` executable (manager and loader)

@@ -41,6 +41,14 @@ std::vector<SourceFreshness::Source> freshnessSources(const std::vector<SourceSp
   return all;
 }
 
+/// `settings`, or std::invalid_argument naming the key it breaks.
+const IncidentSettings& validIncidentSettings(const IncidentSettings& settings) {
+  if (const auto invalid = findInvalidIncidentSetting(settings)) {
+    throw std::invalid_argument(describeFieldError(invalid->key, *invalid));
+  }
+  return settings;
+}
+
 }  // namespace
 
 CollisionMonitor::CollisionMonitor(MonitorSettings settings, const std::vector<EllipseSpec>& links,
@@ -51,7 +59,8 @@ CollisionMonitor::CollisionMonitor(MonitorSettings settings, const std::vector<E
       registry_(links, obstacles, limits),
       source_errors_(settings_.sources.size() + 1),
       freshness_(freshnessSources(settings_.sources)),
-      gate_(settings_.gate) {
+      gate_(settings_.gate),
+      recorder_(validIncidentSettings(settings_.incident)) {
   std::string refusal;
   const std::uint64_t service_revision = restore(store, refusal);
   persistence_ = std::make_unique<ObstaclePersistence>(store.path, store.session,
@@ -302,9 +311,36 @@ void CollisionMonitor::sourceMessageRefused(std::size_t source, const std::strin
 GateDecision CollisionMonitor::gateCommand(const VelocityCommand& command, double now_s,
                                            const TransformLookup& latest,
                                            const TransformAtLookup& at) {
-  if (auto screened = gate_.screen(command, now_s)) return std::move(*screened);
+  if (auto screened = gate_.screen(command, now_s)) {
+    recordDecision(now_s, *screened, nullptr);
+    return std::move(*screened);
+  }
   const CheckOutcome& outcome = fullCheck(now_s, latest, at, StatePublishing::OnChange, "");
-  return gate_.decide(command, gateView(outcome, now_s, latest));
+  const GateView view = gateView(outcome, now_s, latest);
+  GateDecision decision = gate_.decide(command, view);
+  recordDecision(now_s, decision, &view);
+  return decision;
+}
+
+std::optional<GateDecision> CollisionMonitor::gateWatchdog(double now_s) {
+  std::optional<GateDecision> decision = gate_.watchdog(now_s);
+  if (decision) recordDecision(now_s, *decision, nullptr);
+  return decision;
+}
+
+void CollisionMonitor::recordDecision(double now_s, const GateDecision& decision,
+                                      const GateView* view) {
+  if (!recorder_.settings().enabled) return;
+  DecisionScene scene;
+  for (const SourceFreshness::Stats& source : freshness_.stats(now_s)) {
+    scene.source_ages.emplace_back(source.name, source.age_s);
+  }
+  if (view && view->outcome && view->outcome->error.empty() && view->robot.ok) {
+    scene.outcome = view->outcome;
+    scene.robot = planarPose(view->robot.fixed_from_frame);
+    scene.motions = &view->obstacle_motions;
+  }
+  recorder_.record(now_s, decision, &scene);
 }
 
 GateView CollisionMonitor::gateView(const CheckOutcome& outcome, double now_s,

@@ -183,6 +183,13 @@ std::optional<GateDecision> VelocityGate::screen(const VelocityCommand& command,
   return std::nullopt;
 }
 
+PlanarPose planarPose(const Eigen::Isometry3d& pose) {
+  PlanarPose planar;
+  planar.position = pose.translation().head<2>();
+  planar.yaw = std::atan2(pose.linear()(1, 0), pose.linear()(0, 0));
+  return planar;
+}
+
 GateDecision VelocityGate::decide(const VelocityCommand& command, const GateView& view) {
   const CheckOutcome& outcome = *view.outcome;
   if (!outcome.error.empty()) {
@@ -218,10 +225,7 @@ GateDecision VelocityGate::decide(const VelocityCommand& command, const GateView
         "stopped: incomplete data (on_incomplete: stop): " + joinText(missing, "; ")));
   }
   // The robot frame's pose in the fixed frame's plane (its heading from its x axis).
-  const Eigen::Isometry3d& pose = robot.fixed_from_frame;
-  PlanarPose planar;
-  planar.position = pose.translation().head<2>();
-  planar.yaw = std::atan2(pose.linear()(1, 0), pose.linear()(0, 0));
+  const PlanarPose planar = planarPose(robot.fixed_from_frame);
   GateDecision decision =
       gateOnScene(command, outcome.placed, view.obstacle_motions, planar, *view.allowed, config_,
                   baseAt(view.freshness.reference_s), outcome.standing.get());

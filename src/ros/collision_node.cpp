@@ -7,6 +7,7 @@
 
 #include "ellipse_collision/core/number_format.h"
 #include "ellipse_collision/ros/conversions.h"
+#include "ellipse_collision/ros/incident_bag.h"
 #include "ellipse_collision/ros/scan_obstacles.h"
 #include "ellipse_collision/ros/tf_lookup.h"
 #include "ellipse_collision/ros/urdf_links.h"
@@ -72,16 +73,15 @@ CollisionNode::CollisionNode(const ros::NodeHandle& nh, const ros::NodeHandle& p
   app::MonitorHooks hooks;
   hooks.time_jumped_back = [this](double seconds) {
     ROS_WARN_STREAM("ellipse_collision: time jumped back by " << core::formatNumber(seconds)
-                                                               << " s, clearing the tf buffer");
+                                                              << " s, clearing the tf buffer");
     tf_buffer_.clear();
   };
   hooks.obstacles_expired = [this](std::size_t count, double age_s) {
-    ROS_WARN_STREAM_THROTTLE(5.0, "ellipse_collision: dropped "
-                                      << count << " obstacle(s) from ~obstacles: the last message is "
-                                      << core::formatNumber(age_s)
-                                      << " s old, older than obstacle_timeout "
-                                      << core::formatNumber(monitor_->settings().obstacle_timeout_s)
-                                      << " s");
+    ROS_WARN_STREAM_THROTTLE(
+        5.0, "ellipse_collision: dropped "
+                 << count << " obstacle(s) from ~obstacles: the last message is "
+                 << core::formatNumber(age_s) << " s old, older than obstacle_timeout "
+                 << core::formatNumber(monitor_->settings().obstacle_timeout_s) << " s");
   };
   hooks.store_failed = [](const std::string& error) {
     ROS_ERROR_STREAM_THROTTLE(5.0,
@@ -136,6 +136,18 @@ CollisionNode::CollisionNode(const ros::NodeHandle& nh, const ros::NodeHandle& p
     odom_sub_ = nh_.subscribe(odom_topic, 1, &CollisionNode::onOdometry, this,
                               ros::TransportHints().tcpNoDelay());
   }
+  // The incident recorder: bags on the writer's thread, finished incidents collected by a timer
+  // (an incident's after window ends whether or not commands still come).
+  const app::IncidentSettings& incident = config_.monitor.incident;
+  if (incident.enabled) {
+    incident_writer_ = std::make_unique<IncidentWriter>(
+        incident.directory.empty() ? defaultIncidentDirectory() : incident.directory,
+        incident.max_files, incident.max_megabytes);
+    incident_timer_ =
+        private_nh_.createTimer(ros::Duration(0.1), &CollisionNode::onIncidentTimer, this);
+  }
+  save_incident_service_ =
+      private_nh_.advertiseService("save_incident", &CollisionNode::onSaveIncident, this);
   scheduleTimers();
   diagnostics_timer_ =
       private_nh_.createTimer(ros::Duration(1.0), &CollisionNode::onDiagnosticsTimer, this);
@@ -143,10 +155,9 @@ CollisionNode::CollisionNode(const ros::NodeHandle& nh, const ros::NodeHandle& p
   // call changes nothing.
   check_reconfigure_ =
       std::make_unique<dynamic_reconfigure::Server<CheckParametersConfig>>(private_nh_);
-  check_reconfigure_->setCallback(
-      [this](CheckParametersConfig& config, std::uint32_t level) {
-        onCheckReconfigure(config, level);
-      });
+  check_reconfigure_->setCallback([this](CheckParametersConfig& config, std::uint32_t level) {
+    onCheckReconfigure(config, level);
+  });
   gate_reconfigure_ = std::make_unique<dynamic_reconfigure::Server<GateParametersConfig>>(
       ros::NodeHandle(private_nh_, "gate"));
   gate_reconfigure_->setCallback([this](GateParametersConfig& config, std::uint32_t level) {
@@ -277,7 +288,8 @@ void CollisionNode::publishIfUpdated() {
   if (!monitor_->stateUpdated()) return;
   const app::CheckOutcome& checked = monitor_->state().outcome;
   if (!checked.skipped.empty()) {
-    ROS_WARN_STREAM_THROTTLE(5.0, "ellipse_collision: skipped " << app::joinText(checked.skipped, "; "));
+    ROS_WARN_STREAM_THROTTLE(5.0,
+                             "ellipse_collision: skipped " << app::joinText(checked.skipped, "; "));
   }
   logPredictionNotes(checked);
   publishState(monitor_->statePublishing());
@@ -338,9 +350,9 @@ void CollisionNode::publishMarkers() {
   // ROS clock does.
   const ros::WallTime now = ros::WallTime::now();
   if (config_.marker_refresh_period_s > 0.0 && !last_markers_time_.isZero()) {
-    markers_.appendRefresh(changes, std::min(kMaxRefreshShare,
-                                             (now - last_markers_time_).toSec() /
-                                                 config_.marker_refresh_period_s));
+    markers_.appendRefresh(
+        changes, std::min(kMaxRefreshShare,
+                          (now - last_markers_time_).toSec() / config_.marker_refresh_period_s));
   }
   last_markers_time_ = now;
   if (!changes.markers.empty()) markers_pub_.publish(changes);
@@ -704,9 +716,63 @@ void CollisionNode::publishGate(const app::GateDecision& decision, const ros::Ti
         gate_markers_.update(decision, config_.monitor.check.fixed_frame, stamp));
   }
   if (app::stops(decision.action)) {
-    ROS_WARN_STREAM_THROTTLE(2.0, "ellipse_collision: gate " << state.action << ": "
-                                                              << decision.reason);
+    ROS_WARN_STREAM_THROTTLE(2.0,
+                             "ellipse_collision: gate " << state.action << ": " << decision.reason);
   }
+}
+
+std::string CollisionNode::writeIncidents(const ros::Time& now) {
+  std::string path;
+  for (app::Incident& incident : monitor_->takeIncidents(now.toSec())) {
+    std::string settings =
+        incidentSettingsYaml(incident, monitor_->gate().config(), monitor_->settings().check);
+    path = incident_writer_->write(std::move(incident), std::move(settings),
+                                   config_.monitor.check.fixed_frame);
+  }
+  return path;
+}
+
+void CollisionNode::onIncidentTimer(const ros::TimerEvent& /*event*/) {
+  writeIncidents(ros::Time::now());
+}
+
+bool CollisionNode::onSaveIncident(std_srvs::Trigger::Request& /*request*/,
+                                   std_srvs::Trigger::Response& response) {
+  const ros::Time now = ros::Time::now();
+  if (!incident_writer_ || !monitor_->requestIncident(now.toSec())) {
+    response.success = false;
+    response.message = "the incident recorder is off (incident/enabled: false)";
+    return true;
+  }
+  response.success = true;
+  response.message = "writing " + writeIncidents(now);
+  return true;
+}
+
+diagnostic_msgs::DiagnosticStatus CollisionNode::incidentStatus() const {
+  const IncidentWriter::Status written = incident_writer_->status();
+  const app::IncidentRecorder& recorder = monitor_->incidents();
+  diagnostic_msgs::DiagnosticStatus status;
+  status.name = private_nh_.getNamespace() + ": incident recorder";
+  status.hardware_id = config_.monitor.check.fixed_frame;
+  if (!written.last_error.empty()) {
+    status.level = diagnostic_msgs::DiagnosticStatus::WARN;
+    status.message = written.last_error + " (check the disk, or set incident/directory)";
+  } else {
+    status.level = diagnostic_msgs::DiagnosticStatus::OK;
+    status.message = written.written == 0 ? "recording, no incident yet"
+                                          : "recording, last incident " + written.last_file;
+  }
+  status.values.push_back(keyValue("directory", incident_writer_->directory()));
+  status.values.push_back(keyValue("written", std::to_string(written.written)));
+  status.values.push_back(keyValue("failed", std::to_string(written.failed)));
+  status.values.push_back(
+      keyValue("held back by min_interval", std::to_string(recorder.suppressed())));
+  status.values.push_back(
+      keyValue("buffered decisions", std::to_string(recorder.bufferedDecisions())));
+  status.values.push_back(
+      keyValue("buffered obstacles", std::to_string(recorder.storedObstacles())));
+  return status;
 }
 
 void CollisionNode::onDiagnosticsTimer(const ros::TimerEvent& /*event*/) {
@@ -725,6 +791,7 @@ void CollisionNode::onDiagnosticsTimer(const ros::TimerEvent& /*event*/) {
   array.header.stamp = ros::Time::now();
   array.status.push_back(status);
   if (auto fleet = fleetStatus(ros::Time::now().toSec())) array.status.push_back(std::move(*fleet));
+  if (incident_writer_) array.status.push_back(incidentStatus());
   diagnostics_pub_.publish(array);
 }
 

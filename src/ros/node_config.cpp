@@ -24,9 +24,9 @@ using XmlRpc::XmlRpcValue;
 
 // Links and obstacles alike; radius_z makes an ellipsoid (app::EllipsoidPart), z, roll, pitch
 // optional with it.
-const std::vector<std::string> kEllipseKeys = {"name",     "frame",    "x",       "y",
-                                               "angle",    "radius_x", "radius_y", "padding",
-                                               "z",        "roll",     "pitch",   "radius_z"};
+const std::vector<std::string> kEllipseKeys = {"name",  "frame",    "x",        "y",
+                                               "angle", "radius_x", "radius_y", "padding",
+                                               "z",     "roll",     "pitch",    "radius_z"};
 
 /// The first key of the dict `value` that is not one of `keys`, or nothing: every dict of the
 /// configuration refuses unknown keys (a typo would otherwise be ignored silently).
@@ -149,8 +149,9 @@ app::EllipseSpec readEllipse(const XmlRpcValue& entry, const std::string& where,
   const bool ellipsoid = entry.hasMember("z") || entry.hasMember("roll") ||
                          entry.hasMember("pitch") || entry.hasMember("radius_z");
   if (ellipsoid && !entry.hasMember("radius_z")) {
-    throw ConfigError(label + ": missing key 'radius_z' (z, roll and pitch describe an ellipsoid, "
-                              "which needs radius_z)");
+    throw ConfigError(label +
+                      ": missing key 'radius_z' (z, roll and pitch describe an ellipsoid, "
+                      "which needs radius_z)");
   }
   for (const char* key : {"name", "frame", "x", "y", "angle", "radius_x", "radius_y"}) {
     if (!entry.hasMember(key)) {
@@ -184,7 +185,7 @@ app::EllipseSpec readEllipse(const XmlRpcValue& entry, const std::string& where,
 }
 
 std::vector<app::EllipseSpec> readEllipseList(const XmlRpcValue& list, const std::string& key,
-                                         double global_padding) {
+                                              double global_padding) {
   if (list.getType() != XmlRpcValue::TypeArray) {
     fail("parameter ~" + key, key, "a list of ellipses", describeValue(list));
   }
@@ -233,7 +234,8 @@ std::vector<std::pair<std::string, std::string>> readAllowedPairs(
 }
 
 /// `links_from_urdf: {param, links, padding, shape}` -> the fitted link ellipses.
-app::LinkFitResult readLinksFromUrdf(const XmlRpcValue& value, const UrdfLinkFitter& fit_urdf_links) {
+app::LinkFitResult readLinksFromUrdf(const XmlRpcValue& value,
+                                     const UrdfLinkFitter& fit_urdf_links) {
   const std::string where = "parameter ~links_from_urdf";
   if (value.getType() != XmlRpcValue::TypeStruct) {
     throw ConfigError(where + ": expected a dict {param, links, padding, shape}, got " +
@@ -278,7 +280,8 @@ app::LinkFitResult readLinksFromUrdf(const XmlRpcValue& value, const UrdfLinkFit
   }
 }
 
-/// `gate: {enabled, robot_frame, horizon, ...}`: types here, ranges by app::findInvalidGateSetting().
+/// `gate: {enabled, robot_frame, horizon, ...}`: types here, ranges by
+/// app::findInvalidGateSetting().
 app::GateConfig readGate(const XmlRpcValue& value) {
   const std::string where = "parameter ~gate";
   if (value.getType() != XmlRpcValue::TypeStruct) {
@@ -358,6 +361,53 @@ app::FleetSettings readFleet(const XmlRpcValue& value, const std::string& defaul
   }
   if (value.hasMember("rate")) fleet.rate = readNumber(value["rate"], where, "fleet/rate");
   return fleet;
+}
+
+/// `incident: {enabled, before, after, ...}`: types here, ranges by
+/// app::findInvalidIncidentSetting().
+app::IncidentSettings readIncident(const XmlRpcValue& value) {
+  const std::string where = "parameter ~incident";
+  if (value.getType() != XmlRpcValue::TypeStruct) {
+    fail(where, "incident", "a dict of incident parameters", describeValue(value));
+  }
+  static const std::vector<std::string> kIncidentKeys = {
+      "enabled",      "before",    "after",         "actions",
+      "min_interval", "max_files", "max_megabytes", "directory"};
+  if (const auto key = unknownKey(value, kIncidentKeys)) {
+    throw ConfigError("parameter ~incident/" + *key + ": unknown key (expected one of " +
+                      app::joinText(kIncidentKeys, ", ") + ")");
+  }
+  app::IncidentSettings incident;
+  if (value.hasMember("enabled")) {
+    incident.enabled = readBool(value["enabled"], where, "incident/enabled");
+  }
+  for (const auto& [key, field] : {std::pair<const char*, double*>{"before", &incident.before_s},
+                                   {"after", &incident.after_s},
+                                   {"min_interval", &incident.min_interval_s},
+                                   {"max_megabytes", &incident.max_megabytes}}) {
+    if (value.hasMember(key))
+      *field = readNumber(value[key], where, std::string("incident/") + key);
+  }
+  if (value.hasMember("max_files")) {
+    incident.max_files = static_cast<std::size_t>(
+        readWhole(value["max_files"], where, "incident/max_files", app::kMaxIncidentFiles));
+  }
+  if (value.hasMember("directory")) {
+    incident.directory = readString(value["directory"], where, "incident/directory");
+  }
+  if (value.hasMember("actions")) {
+    XmlRpcValue list = value["actions"];
+    if (list.getType() != XmlRpcValue::TypeArray) {
+      fail(where, "incident/actions", "a list of gate actions", describeValue(list));
+    }
+    std::vector<std::string> names;
+    for (int i = 0; i < list.size(); ++i) {
+      names.push_back(readString(list[i], where, "incident/actions[" + std::to_string(i) + "]"));
+    }
+    failOn(app::parseIncidentActions(names, &incident.actions), where);
+  }
+  failOn(app::findInvalidIncidentSetting(incident), where);
+  return incident;
 }
 
 /// scan_obstacles' keys, in a node's private namespace or in a scan source's entry.
@@ -555,7 +605,8 @@ NodeConfig parseNodeConfig(const XmlRpcValue& params, const UrdfLinkFitter& fit_
                                                       "marker_refresh_period",
                                                       "gate",
                                                       "sources",
-                                                      "fleet"};
+                                                      "fleet",
+                                                      "incident"};
   if (root.getType() == XmlRpcValue::TypeStruct) {
     if (const auto key = unknownKey(root, kKnownKeys)) {
       throw ConfigError("parameter ~" + *key + ": unknown key (expected one of " +
@@ -605,11 +656,13 @@ NodeConfig parseNodeConfig(const XmlRpcValue& params, const UrdfLinkFitter& fit_
         root["max_obstacles"], "parameter ~max_obstacles", "max_obstacles", kMaxObstaclesLimit));
   }
   if (has("max_name_length")) {
-    config.limits.max_name_length = static_cast<std::size_t>(readWhole(
-        root["max_name_length"], "parameter ~max_name_length", "max_name_length", kMaxNameLengthLimit));
+    config.limits.max_name_length =
+        static_cast<std::size_t>(readWhole(root["max_name_length"], "parameter ~max_name_length",
+                                           "max_name_length", kMaxNameLengthLimit));
   }
   if (has("obstacle_store")) {
-    config.obstacle_store = readString(root["obstacle_store"], "parameter ~obstacle_store", "obstacle_store");
+    config.obstacle_store =
+        readString(root["obstacle_store"], "parameter ~obstacle_store", "obstacle_store");
   }
   if (has("obstacle_store_period")) {
     config.monitor.obstacle_store_period_s = readSetting(root, "obstacle_store_period");
@@ -623,6 +676,7 @@ NodeConfig parseNodeConfig(const XmlRpcValue& params, const UrdfLinkFitter& fit_
   if (const auto invalid = app::findInvalidSetting(config.fleet)) {
     fail("parameter ~fleet", invalid->key, invalid->expected, invalid->actual);
   }
+  if (has("incident")) config.monitor.incident = readIncident(root["incident"]);
   if (has("sources")) {
     config.monitor.sources =
         readSources(root["sources"], config.monitor.check.fixed_frame, config.fleet.topic);
@@ -661,7 +715,8 @@ NodeConfig parseNodeConfig(const XmlRpcValue& params, const UrdfLinkFitter& fit_
     entries.emplace_back(app::entryName("obstacles", i), &config.obstacles[i]);
   }
   if (const auto problem = core::findNameProblem(
-          entries.size(), [&](std::size_t i) -> std::string_view { return entries[i].second->name; })) {
+          entries.size(),
+          [&](std::size_t i) -> std::string_view { return entries[i].second->name; })) {
     const auto& [where, spec] = entries[problem->index];
     fail(where + " (name '" + spec->name + "')", "name", "a name used by no other entry",
          "a duplicate of " + entries[problem->first_index].first);
@@ -681,12 +736,18 @@ std::vector<app::EllipseSpec> parseEllipseList(const XmlRpcValue& list, const st
   return readEllipseList(list, key, global_padding);
 }
 
-std::string defaultObstacleStore(const std::string& node_name) {
+std::string rosHome() {
   const char* ros_home = std::getenv("ROS_HOME");
   const char* home = std::getenv("HOME");
-  const std::string directory = ros_home && *ros_home ? std::string(ros_home)
-                                : home && *home        ? std::string(home) + "/.ros"
-                                                       : std::string("/tmp");
+  return ros_home && *ros_home ? std::string(ros_home)
+         : home && *home       ? std::string(home) + "/.ros"
+                               : std::string("/tmp");
+}
+
+std::string defaultIncidentDirectory() { return rosHome() + "/ellipse_collision/incidents"; }
+
+std::string defaultObstacleStore(const std::string& node_name) {
+  const std::string directory = rosHome();
   std::string file = node_name;
   for (char& c : file) c = c == '/' ? '_' : c;
   if (!file.empty() && file.front() == '_') file.erase(0, 1);

@@ -472,6 +472,58 @@ TEST(NodeConfig, TheGateIsOffByDefaultAndItsKeysAreReadAndRangeChecked) {
   EXPECT_NE(errorOf(q).find("expected a dict of gate parameters"), std::string::npos) << errorOf(q);
 }
 
+TEST(NodeConfig, TheIncidentRecorderIsOnByDefaultAndItsKeysAreReadAndChecked) {
+  const app::IncidentSettings defaults = parseNodeConfig(validParams()).monitor.incident;
+  EXPECT_TRUE(defaults.enabled);
+  EXPECT_EQ(defaults.actions.size(), 4u);
+  EXPECT_EQ(defaults.directory, "");
+  XmlRpcValue p = validParams();
+  p["incident"]["enabled"] = false;
+  p["incident"]["before"] = 5;
+  p["incident"]["after"] = 1.5;
+  p["incident"]["min_interval"] = 0.0;
+  p["incident"]["max_files"] = 3;
+  p["incident"]["max_megabytes"] = 50.0;
+  p["incident"]["directory"] = "/var/incidents";
+  p["incident"]["actions"][0] = "STOP";
+  p["incident"]["actions"][1] = "SLOW";
+  const app::IncidentSettings read = parseNodeConfig(p).monitor.incident;
+  EXPECT_FALSE(read.enabled);
+  EXPECT_EQ(read.before_s, 5.0);
+  EXPECT_EQ(read.after_s, 1.5);
+  EXPECT_EQ(read.min_interval_s, 0.0);
+  EXPECT_EQ(read.max_files, 3u);
+  EXPECT_EQ(read.max_megabytes, 50.0);
+  EXPECT_EQ(read.directory, "/var/incidents");
+  EXPECT_EQ(read.actions,
+            (std::vector<core::GateAction>{core::GateAction::Stop, core::GateAction::Slow}));
+
+  p["incident"]["actions"][1] = "HALT";
+  EXPECT_EQ(errorOf(p),
+            "parameter ~incident, key 'incident/actions': expected gate actions among PASS, SLOW, "
+            "STOP, ESCAPE, TIMEOUT, INCOMPLETE, DISABLED, got 'HALT'");
+  p["incident"]["actions"][1] = "STOP";
+  EXPECT_NE(errorOf(p).find("'STOP' twice"), std::string::npos) << errorOf(p);
+  p["incident"]["actions"][1] = "SLOW";
+  p["incident"]["max_files"] = 2.5;
+  EXPECT_NE(errorOf(p).find("key 'incident/max_files': expected a whole number"), std::string::npos)
+      << errorOf(p);
+  p["incident"]["max_files"] = 3;
+  p["incident"]["before"] = 0.0;
+  EXPECT_EQ(errorOf(p),
+            "parameter ~incident, key 'incident/before': expected a number within (0, 600], got 0");
+  p["incident"]["before"] = std::numeric_limits<double>::infinity();
+  EXPECT_NE(errorOf(p).find("key 'incident/before'"), std::string::npos) << errorOf(p);
+  p["incident"]["before"] = 5;
+  p["incident"]["afterwards"] = 1.0;
+  EXPECT_NE(errorOf(p).find("parameter ~incident/afterwards: unknown key"), std::string::npos)
+      << errorOf(p);
+  XmlRpcValue q = validParams();
+  q["incident"] = "on";
+  EXPECT_NE(errorOf(q).find("expected a dict of incident parameters"), std::string::npos)
+      << errorOf(q);
+}
+
 XmlRpcValue sourceEntry(const std::string& name, const std::string& type,
                         const std::string& topic) {
   XmlRpcValue e;

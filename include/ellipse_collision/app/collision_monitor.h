@@ -13,6 +13,7 @@
 #include "ellipse_collision/app/check_health.h"
 #include "ellipse_collision/app/collision_check.h"
 #include "ellipse_collision/app/ellipse_registry.h"
+#include "ellipse_collision/app/incident_recorder.h"
 #include "ellipse_collision/app/obstacle_persistence.h"
 #include "ellipse_collision/app/obstacle_source.h"
 #include "ellipse_collision/app/path_request.h"
@@ -40,6 +41,9 @@ struct MonitorSettings {
   /// The listed obstacle sources (the node's `sources`), beside the default ~obstacles; must pass
   /// findInvalidSources().
   std::vector<SourceSpec> sources;
+  /// The incident recorder of the gate's decisions (`incident/`); must pass
+  /// findInvalidIncidentSetting().
+  IncidentSettings incident;
 };
 
 /// Where the runtime obstacles are kept across a crash, and the launch they belong to.
@@ -94,8 +98,9 @@ struct MonitorHooks {
 /// rule. Times are seconds on the ROS clock unless said otherwise. Single-threaded, like the node.
 class CollisionMonitor {
  public:
-  /// Throws std::invalid_argument on an empty or duplicate configured name (EllipseRegistry) or
-  /// a source list that breaks findInvalidSources().
+  /// Throws std::invalid_argument on an empty or duplicate configured name (EllipseRegistry), a
+  /// source list that breaks findInvalidSources() or incident settings that break
+  /// findInvalidIncidentSetting().
   /// Restores the runtime obstacles an earlier run of the same launch left in `store` (see
   /// startupNotes()).
   CollisionMonitor(MonitorSettings settings, const std::vector<EllipseSpec>& links,
@@ -142,7 +147,7 @@ class CollisionMonitor {
   GateDecision gateCommand(const VelocityCommand& command, double now_s,
                            const TransformLookup& latest, const TransformAtLookup& at);
   /// The gate's silence rule (VelocityGate::watchdog()).
-  std::optional<GateDecision> gateWatchdog(double now_s) { return gate_.watchdog(now_s); }
+  std::optional<GateDecision> gateWatchdog(double now_s);
   /// The base's measured twist (gate/odom_topic, in the robot frame) at `stamp_s`.
   void gateOdometry(const VelocityCommand& twist, double stamp_s) {
     gate_.measuredVelocity(twist, stamp_s);
@@ -152,6 +157,14 @@ class CollisionMonitor {
   bool gateEnabled() const { return gate_.enabled(); }
   /// The velocity gate: its settings in force, its counts.
   const VelocityGate& gate() const { return gate_; }
+
+  // ---- the incident recorder ------------------------------------------------------------------
+  /// Every gate decision goes to it with what it judged (IncidentRecorder).
+  const IncidentRecorder& incidents() const { return recorder_; }
+  /// ~save_incident at `now_s`: false while the recorder is disabled.
+  bool requestIncident(double now_s) { return recorder_.request(now_s); }
+  /// The incidents to write by `now_s` (IncidentRecorder::takeFinished()).
+  std::vector<Incident> takeIncidents(double now_s) { return recorder_.takeFinished(now_s); }
 
   // ---- obstacle changes -------------------------------------------------------------------
   /// ~add_obstacles: field rules, a transform for every frame, the registry's name rules, then
@@ -266,6 +279,9 @@ class CollisionMonitor {
   /// the full check `outcome`.
   GateView gateView(const CheckOutcome& outcome, double now_s, const TransformLookup& latest) const;
   VelocityGate gate_;
+  /// One decision to the recorder, with the scene of `view` (nullptr: decided without one).
+  void recordDecision(double now_s, const GateDecision& decision, const GateView* view);
+  IncidentRecorder recorder_;
 };
 
 }  // namespace ellipse_collision::app

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <cstddef>
 #include <cstdint>
 #include <deque>
@@ -61,6 +62,10 @@ struct PlanarPose {
   Eigen::Vector2d position{0.0, 0.0};
   double yaw{0.0};
 };
+
+/// The planar part of `pose` (a frame in the fixed frame): its x, y and its heading from its x
+/// axis.
+PlanarPose planarPose(const Eigen::Isometry3d& pose);
 
 /// An obstacle of a placed scene that moves by its own velocity: its index in the scene and its
 /// motion in the fixed frame.

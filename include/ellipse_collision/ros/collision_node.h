@@ -9,6 +9,7 @@
 #include <sensor_msgs/PointCloud2.h>
 #include <sensor_msgs/Range.h>
 #include <std_srvs/SetBool.h>
+#include <std_srvs/Trigger.h>
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_listener.h>
 
@@ -25,6 +26,7 @@
 #include "ellipse_collision/core/scene_check.h"
 #include "ellipse_collision/ros/collision_markers.h"
 #include "ellipse_collision/ros/gate_markers.h"
+#include "ellipse_collision/ros/incident_writer.h"
 #include "ellipse_collision/ros/messages.h"
 #include "ellipse_collision/ros/node_config.h"
 #include "ellipse_collision/ros/reconfigure.h"
@@ -102,6 +104,13 @@ class CollisionNode {
   bool onSetGateEnabled(std_srvs::SetBool::Request& request, std_srvs::SetBool::Response& response);
   /// ~cmd_vel_out, ~gate_state and ~gate_markers for one decision.
   void publishGate(const app::GateDecision& decision, const ros::Time& stamp);
+  /// The recorder's finished incidents to the writer's thread; returns the last one's path.
+  std::string writeIncidents(const ros::Time& now);
+  void onIncidentTimer(const ros::TimerEvent& event);
+  /// ~save_incident: the recorder's buffer as it is now, written at once.
+  bool onSaveIncident(std_srvs::Trigger::Request& request, std_srvs::Trigger::Response& response);
+  /// The incident recorder's /diagnostics status: OK, or WARN while its last write failed.
+  diagnostic_msgs::DiagnosticStatus incidentStatus() const;
   /// dynamic_reconfigure (~ and ~gate): the request passes the monitor's rules (retune()) or is
   /// refused whole and logged; either way `config` is set to the values in force, which the
   /// server then reports.
@@ -156,6 +165,10 @@ class CollisionNode {
   ros::Timer gate_watchdog_timer_;
   ros::Subscriber odom_sub_;
   GateMarkers gate_markers_;
+  /// Incident bags off the command's path; null while incident/enabled is false.
+  std::unique_ptr<IncidentWriter> incident_writer_;
+  ros::ServiceServer save_incident_service_;
+  ros::Timer incident_timer_;
   std::unique_ptr<dynamic_reconfigure::Server<CheckParametersConfig>> check_reconfigure_;
   std::unique_ptr<dynamic_reconfigure::Server<GateParametersConfig>> gate_reconfigure_;
   ros::WallTimer store_timer_;  ///< writes the store when ~obstacles changed it (wall time: a

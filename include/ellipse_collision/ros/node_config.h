@@ -46,7 +46,8 @@ app::MonitorSettings nodeMonitorDefaults();
 struct NodeConfig {
   /// What the application layer runs with, parsed straight into its settings: fixed_frame,
   /// robot_frame, rate, padding, self_collision, warning_distance, max_transform_age,
-  /// obstacle_timeout, prediction_horizon, obstacle_store_period, allowed_pairs and gate/.
+  /// obstacle_timeout, prediction_horizon, obstacle_store_period, allowed_pairs, gate/ and
+  /// incident/.
   app::MonitorSettings monitor{nodeMonitorDefaults()};
   double tf_timeout_s{0.1};  ///< how long a service call waits for a transform [s], [0, 3600]
   app::RegistryLimits limits;       ///< max_obstacles, max_name_length
@@ -96,8 +97,12 @@ NodeConfig parseNodeConfig(const XmlRpc::XmlRpcValue& params,
 std::vector<app::EllipseSpec> parseEllipseList(const XmlRpc::XmlRpcValue& list,
                                                const std::string& key, double global_padding);
 
+/// $ROS_HOME, else ~/.ros (else /tmp without a home).
+std::string rosHome();
 /// $ROS_HOME (else ~/.ros)/ellipse_collision/<node name, '/' -> '_'>.obstacles.
 std::string defaultObstacleStore(const std::string& node_name);
+/// Where incident bags go unless incident/directory says: rosHome()/ellipse_collision/incidents.
+std::string defaultIncidentDirectory();
 
 /// Reads the whole private namespace of `private_nh` from the parameter server and parses it.
 /// Throws ConfigError.
