@@ -230,6 +230,9 @@ ellipse_collision_add_rostest(test_stale_data test/ros/stale_data.test
   test/ros/test_stale_data.cpp)
 # Several obstacle sources: two scanners in one node, one falls silent.
 ellipse_collision_add_rostest(test_sources test/ros/sources.test test/ros/test_sources.cpp)
+# A person crossing ahead, through the gate of two nodes, with and without tracking (issue 42).
+ellipse_collision_add_rostest(test_crossings test/ros/crossings.test test/ros/test_crossings.cpp)
+target_include_directories(test_crossings PRIVATE ${PROJECT_SOURCE_DIR}/test/support)
 ellipse_collision_add_rostest(test_time_jump test/ros/time_jump.test
   test/ros/test_time_jump.cpp)
 ellipse_collision_add_rostest(test_respawn test/ros/respawn.test
