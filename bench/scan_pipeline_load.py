@@ -9,13 +9,19 @@ it, and prints one line:
 
   mode=M scans_per_s=S total=C /node_a=A /node_b=B ...
 
+The obstacle sources inside the collision node (issue 42, scripts/nodelet_cpu.sh --sources): the
+same scans on each topic of --scans (one per scanner), with --cloud TOPIC also a depth camera's
+PointCloud2 of the same room (--cloud-points points at --cloud-hz), and with --gate-hz commands on
+the node's ~cmd_vel_in.
+
 No subscriber of its own on the obstacle ellipses: in one manager they would have to be
 serialised for it, which is the very cost measured. --median FILE prints the medians per mode of
 the lines in FILE, side by side.
 
 Usage (roscore and the pipeline running, the collision node at /ellipse_collision):
   scan_pipeline_load.py --mode M --nodes /ellipse_collision /scan_obstacles [--seconds 30]
-                        [--warmup 5]
+                        [--warmup 5] [--scans TOPIC ...] [--cloud TOPIC] [--cloud-hz 15]
+                        [--cloud-points 20000] [--gate-hz 20]
   scan_pipeline_load.py --median FILE
 """
 import argparse
@@ -78,6 +84,61 @@ def make_scans():
     return scans
 
 
+def publish_scans(publishers, scans):
+    """A function publishing scan number `step` on every scanner's topic, stamped now."""
+    import rospy
+
+    def publish(step):
+        scan = scans[step % CYCLE]
+        scan.header.stamp = rospy.Time.now()
+        scan.header.seq = step
+        for publisher in publishers:
+            publisher.publish(scan)
+    return publish
+
+
+def make_cloud(step, points, rng):
+    """A depth camera's PointCloud2 (float x, y, z) of the room at `step`: `points` points on its
+    surfaces within 60 degrees either side of straight ahead, heights 0.05-1.5 m, 5 mm noise."""
+    import struct
+    from sensor_msgs.msg import PointCloud2, PointField
+    rows = 50
+    columns = points // rows
+    circles = circles_at(step)
+    data = bytearray()
+    for c in range(columns):
+        angle = -math.pi / 3.0 + (2.0 * math.pi / 3.0) * c / columns
+        r = min(ray(angle, circles), RANGE_MAX) + rng.gauss(0.0, NOISE_M)
+        x, y = r * math.cos(angle), r * math.sin(angle)
+        for row in range(rows):
+            data += struct.pack("<fff", x, y, 0.05 + 1.45 * row / (rows - 1))
+    cloud = PointCloud2()
+    cloud.header.frame_id = "laser"
+    cloud.height = 1
+    cloud.width = columns * rows
+    cloud.fields = [PointField(name=n, offset=4 * i, datatype=PointField.FLOAT32, count=1)
+                    for i, n in enumerate("xyz")]
+    cloud.point_step = 12
+    cloud.row_step = 12 * cloud.width
+    cloud.is_dense = True
+    cloud.data = bytes(data)
+    return cloud
+
+
+def publish_clouds(publisher, points):
+    """A function publishing cloud number `step` (a cycle of 15 clouds), stamped now."""
+    import rospy
+    rng = random.Random(42)
+    clouds = [make_cloud(step * CYCLE // 15, points, rng) for step in range(15)]
+
+    def publish(step):
+        cloud = clouds[step % len(clouds)]
+        cloud.header.stamp = rospy.Time.now()
+        cloud.header.seq = step
+        publisher.publish(cloud)
+    return publish
+
+
 def node_pid(master, caller, name):
     code, message, uri = master.lookupNode(caller, name)
     if code != 1:
@@ -93,7 +154,8 @@ def measure(args):
     import rospy
     from node_load import cpu_seconds  # the one /proc/<pid>/stat reader of the benches
     from geometry_msgs.msg import TransformStamped
-    from sensor_msgs.msg import LaserScan
+    from geometry_msgs.msg import Twist
+    from sensor_msgs.msg import LaserScan, PointCloud2
     from tf2_msgs.msg import TFMessage
     from ellipse_collision.msg import Ellipse
     from ellipse_collision.srv import CheckCollisions, CheckCollisionsRequest
@@ -109,37 +171,47 @@ def measure(args):
     static.transform.rotation.w = 1.0
     tf_pub = rospy.Publisher("/tf_static", TFMessage, queue_size=1, latch=True)
     tf_pub.publish(TFMessage([static]))
-    scan_pub = rospy.Publisher("/scan", LaserScan, queue_size=1)
+    scan_pubs = [rospy.Publisher(topic, LaserScan, queue_size=1) for topic in args.scans]
     scans = make_scans()
+    streams = [(1.0 / SCAN_HZ, publish_scans(scan_pubs, scans))]
+    if args.cloud:
+        cloud_pub = rospy.Publisher(args.cloud, PointCloud2, queue_size=1)
+        streams.append((1.0 / args.cloud_hz, publish_clouds(cloud_pub, args.cloud_points)))
+    if args.gate_hz > 0.0:
+        cmd_pub = rospy.Publisher("/ellipse_collision/cmd_vel_in", Twist, queue_size=1)
+        command = Twist()
+        command.linear.x = 0.3
+        streams.append((1.0 / args.gate_hz, lambda _: cmd_pub.publish(command)))
 
     rospy.wait_for_service("/ellipse_collision/check_collisions", timeout=30.0)
     check = rospy.ServiceProxy("/ellipse_collision/check_collisions", CheckCollisions)
 
     def scanned_obstacles_checked():
         # A probe ellipse over the whole room collides with every stored obstacle: the scanned
-        # ones are named scan_<beam>.
+        # ones are named scan_<beam> (<source>/scan_<beam> from the node's own sources).
         probe = Ellipse(name="probe", frame_id="laser", x=0.0, y=0.0, angle=0.0,
                         radius_x=20.0, radius_y=20.0)
         response = check(CheckCollisionsRequest(query=[probe]))
-        return response.success and any(
-            p.name_a.startswith("scan_") or p.name_b.startswith("scan_")
-            for p in response.collisions)
+        scanned = [name.rsplit("/", 1)[-1].startswith("scan_")
+                   for p in response.collisions for name in (p.name_a, p.name_b)]
+        return response.success and any(scanned)
 
-    period = 1.0 / SCAN_HZ
     start = time.monotonic()
-    sent = 0
+    due = [start] * len(streams)  # when each stream publishes next
+    counts = [0] * len(streams)
     window = None
     ready = False
     while True:
         now = time.monotonic()
         if not ready and now - start > 30.0:
             raise RuntimeError("~check_collisions never named a scanned obstacle")
-        scan = scans[sent % CYCLE]
-        scan.header.stamp = rospy.Time.now()
-        scan.header.seq = sent
-        scan_pub.publish(scan)
-        sent += 1
-        if not ready and sent % 20 == 0 and scanned_obstacles_checked():
+        for i, (period, publish) in enumerate(streams):
+            if now >= due[i]:
+                publish(counts[i])
+                counts[i] += 1
+                due[i] = start + counts[i] * period
+        sent = counts[0]  # scans
+        if not ready and sent % 20 == 0 and sent > 0 and scanned_obstacles_checked():
             ready, ready_at = True, now
         if ready and window is None and now - ready_at >= args.warmup:
             window = (now, sent, {name: cpu_seconds(pid) for name, pid in pids.items()})
@@ -148,8 +220,7 @@ def measure(args):
             elapsed = now - window[0]
             scans_per_s = (sent - window[1]) / elapsed
             break
-        next_at = start + sent * period
-        time.sleep(max(0.0, next_at - time.monotonic()))
+        time.sleep(max(0.0, min(due) - time.monotonic()))
     if not scanned_obstacles_checked():
         raise RuntimeError("scanned obstacles gone from ~check_collisions after the window")
     cpu = {name: 100.0 * (cpu_end[name] - window[2][name]) / elapsed for name in pids}
@@ -178,6 +249,13 @@ def main():
     parser.add_argument("--seconds", type=float, default=30.0)
     parser.add_argument("--warmup", type=float, default=5.0)
     parser.add_argument("--median")
+    parser.add_argument("--scans", nargs="+", default=["/scan"],
+                        help="topics the scans go to, one per scanner")
+    parser.add_argument("--cloud", help="topic of a depth camera's PointCloud2 (none: no cloud)")
+    parser.add_argument("--cloud-hz", type=float, default=15.0)
+    parser.add_argument("--cloud-points", type=int, default=20000)
+    parser.add_argument("--gate-hz", type=float, default=0.0,
+                        help="commands on /ellipse_collision/cmd_vel_in (0: none)")
     args = parser.parse_args()
     if args.median:
         median(args.median)

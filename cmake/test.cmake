@@ -236,7 +236,9 @@ ellipse_collision_add_rostest(test_stale_data test/ros/stale_data.test
 ellipse_collision_add_rostest(test_sources test/ros/sources.test test/ros/test_sources.cpp)
 # Robots that see each other: four nodes in their own namespaces, four braking bases.
 ellipse_collision_add_rostest(test_fleet test/ros/fleet.test test/ros/test_fleet.cpp)
-target_include_directories(test_fleet PRIVATE ${PROJECT_SOURCE_DIR}/test/support)
+
+# A person crossing ahead, through the gate of two nodes, with and without tracking (issue 42).
+ellipse_collision_add_rostest(test_crossings test/ros/crossings.test test/ros/test_crossings.cpp)
 ellipse_collision_add_rostest(test_time_jump test/ros/time_jump.test
   test/ros/test_time_jump.cpp)
 ellipse_collision_add_rostest(test_respawn test/ros/respawn.test

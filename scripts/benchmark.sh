@@ -19,8 +19,9 @@
 # blocks with an empty std_srvs/Trigger service (the ROS floor; p50 ratio, goal <= 1.5). Both are
 # stopped at the end, on failure and on Ctrl-C. Then the node as a user runs it
 # (scripts/node_load.sh): 20 moving links, N obstacles, a ~markers subscriber; CPU % and RSS. And
-# the scan pipeline as separate processes against nodelets in one manager (scripts/nodelet_cpu.sh).
-# And a fleet of N robots on one master (scripts/fleet_load.sh).
+# the scan pipeline as separate processes against nodelets in one manager (scripts/nodelet_cpu.sh),
+# the obstacle sources inside the node (scripts/nodelet_cpu.sh --sources), and a fleet of N
+# robots on one master (scripts/fleet_load.sh).
 #
 #   scripts/benchmark.sh                 full run (a few minutes)
 #   scripts/benchmark.sh --smoke         every benchmark once, briefly, on few pairs, 200 service
@@ -264,4 +265,16 @@ if "${smoke}"; then
   bash "${repo}/scripts/fleet_load.sh" --smoke
 else
   bash "${repo}/scripts/fleet_load.sh" --robots "8 20" --runs 3 --alone
+fi
+
+# ---- the obstacle sources inside the collision node (issue 42) --------------------------------------
+# One scan source with tracking; two scanners, a depth cloud and the gate; by scripts/nodelet_cpu.sh
+# --sources: the node's CPU % (goals: one_scan < 2 % of a core, sensor_set < 15 %), medians.
+echo
+echo "Running the obstacle sources in the node (scripts/nodelet_cpu.sh --sources; goals: one_scan"
+echo "< 2 % of a core, sensor_set < 15 %)"
+if "${smoke}"; then
+  bash "${repo}/scripts/nodelet_cpu.sh" --sources --smoke
+else
+  bash "${repo}/scripts/nodelet_cpu.sh" --sources --runs 3
 fi

@@ -9,6 +9,10 @@
 #   scripts/nodelet_cpu.sh [--runs N] [--seconds S]   (default: 5 runs of each, 30 s windows)
 #   scripts/nodelet_cpu.sh --smoke                    (1 run of each, 3 s: the script works)
 #   scripts/nodelet_cpu.sh --threads N                (the manager's num_worker_threads; default 2)
+#   scripts/nodelet_cpu.sh --sources                  (issue 42: the obstacle sources inside the
+#       collision node alone, no scan_obstacles, alternating one_scan: one scan source with
+#       tracking (bench/sources_one_scan.yaml) and sensor_set: two scanners, a 20,000-point cloud
+#       at 15 Hz and the gate fed at 20 Hz (bench/sources_sensor_set.yaml))
 #
 # Measured nodes (their processes): separate: /ellipse_collision, /scan_obstacles and the config
 # guard /ellipse_collision_config_check; nodelets: the same names (there the `nodelet load`
@@ -22,13 +26,15 @@ runs=5
 seconds=30
 warmup=5
 threads=2
+modes="separate nodelets"
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --smoke) runs=1; seconds=3; warmup=1 ;;
     --runs) runs="$2"; shift ;;
     --seconds) seconds="$2"; shift ;;
     --threads) threads="$2"; shift ;;
-    *) echo "usage: $0 [--smoke] [--runs N] [--seconds S] [--threads N]" >&2; exit 2 ;;
+    --sources) modes="one_scan sensor_set" ;;
+    *) echo "usage: $0 [--smoke] [--runs N] [--seconds S] [--threads N] [--sources]" >&2; exit 2 ;;
   esac
   shift
 done
@@ -48,11 +54,21 @@ source "${repo}/scripts/tracked_processes.sh"
 config="${repo}/bench/scan_pipeline.yaml"
 common=(/ellipse_collision /ellipse_collision_config_check /scan_obstacles)
 for run in $(seq "${runs}"); do
-  for mode in separate nodelets; do
+  for mode in ${modes}; do
     port="$(free_port)"
     export ROS_MASTER_URI="http://127.0.0.1:${port}" ROS_IP=127.0.0.1 ROS_LOG_DIR="${out}/ros_log"
     start_roscore "${port}" "${out}/roscore.txt" || exit 1
-    if [[ "${mode}" == separate ]]; then
+    load=()
+    if [[ "${mode}" == one_scan || "${mode}" == sensor_set ]]; then
+      roslaunch ellipse_collision ellipse_collision.launch \
+        config:="${repo}/bench/sources_${mode}.yaml" > "${out}/launch_collision.txt" 2>&1 &
+      pids+=($!)
+      nodes=(/ellipse_collision /ellipse_collision_config_check)
+      load=(--scans /scan)
+      if [[ "${mode}" == sensor_set ]]; then
+        load=(--scans /front/scan /rear/scan --cloud /depth/points --gate-hz 20)
+      fi
+    elif [[ "${mode}" == separate ]]; then
       roslaunch ellipse_collision ellipse_collision.launch config:="${config}" \
         > "${out}/launch_collision.txt" 2>&1 &
       pids+=($!)
@@ -73,7 +89,7 @@ for run in $(seq "${runs}"); do
       done
     done
     if ! /usr/bin/python3 "${repo}/bench/scan_pipeline_load.py" --mode "${mode}" \
-        --nodes "${nodes[@]}" --seconds "${seconds}" --warmup "${warmup}" \
+        --nodes "${nodes[@]}" --seconds "${seconds}" --warmup "${warmup}" "${load[@]}" \
         2> "${out}/load_err.txt" | tee -a "${out}/runs.txt"; then
       cat "${out}/load_err.txt" >&2
       tail -n 20 "${out}"/launch_*.txt >&2
