@@ -18,9 +18,11 @@
 #include <string>
 #include <vector>
 
+#include "ellipse_builders.h"
 #include "ellipse_collision/core/distance.h"
 #include "ellipse_collision/core/overlap.h"
 #include "node_test_utils.h"
+#include "planar_transform.h"
 
 namespace ellipse_collision::gate_test {
 
@@ -73,15 +75,8 @@ class GateTest : public ::testing::Test, protected test::NodeServiceClient {
     clock_pub_.publish(clock);
   }
   void publishPose() {
-    geometry_msgs::TransformStamped t;
-    t.header.stamp = ros::Time(now_);
-    t.header.frame_id = "map";
-    t.child_frame_id = "base_link";
-    t.transform.translation.x = pose_.x;
-    t.transform.translation.y = pose_.y;
-    t.transform.rotation.z = std::sin(pose_.yaw / 2);
-    t.transform.rotation.w = std::cos(pose_.yaw / 2);
-    tf_.sendTransform(t);
+    tf_.sendTransform(
+        test::planarTransform("map", "base_link", pose_.x, pose_.y, pose_.yaw, ros::Time(now_)));
   }
   void setEnabled(bool enabled) {
     std_srvs::SetBool srv;
@@ -148,15 +143,7 @@ class GateTest : public ::testing::Test, protected test::NodeServiceClient {
   }
 
   std::vector<core::Ellipse> linksAt(const Pose& p) const {
-    std::vector<core::Ellipse> placed;
-    for (core::Ellipse e : kLinks) {
-      const Eigen::Vector2d c = e.center;
-      e.center = {p.x + std::cos(p.yaw) * c.x() - std::sin(p.yaw) * c.y(),
-                  p.y + std::sin(p.yaw) * c.x() + std::cos(p.yaw) * c.y()};
-      e.angle += p.yaw;
-      placed.push_back(e);
-    }
-    return placed;
+    return test::placedAt(kLinks, p.x, p.y, p.yaw);
   }
   /// Whether any link overlaps any obstacle at the robot's pose now.
   bool touching() const {

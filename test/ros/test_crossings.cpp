@@ -30,6 +30,7 @@
 
 #include "ellipse_collision/core/simulated_base.h"
 #include "node_test_utils.h"
+#include "planar_transform.h"
 #include "synthetic_scan.h"
 
 namespace ellipse_collision {
@@ -99,14 +100,8 @@ class Robot {
   /// The base's tf and odometry at `stamp`, and the scan of the world it sees from there.
   void publishSensors(const ros::Time& stamp, const test::World& world, std::uint64_t seed) {
     const core::PathPose& pose = base_.pose();
-    geometry_msgs::TransformStamped t;
-    t.header.stamp = stamp;
-    t.header.frame_id = odom_frame_;
-    t.child_frame_id = base_frame_;
-    t.transform.translation.x = pose.x;
-    t.transform.translation.y = pose.y;
-    t.transform.rotation.z = std::sin(pose.yaw / 2);
-    t.transform.rotation.w = std::cos(pose.yaw / 2);
+    const geometry_msgs::TransformStamped t =
+        test::planarTransform(odom_frame_, base_frame_, pose.x, pose.y, pose.yaw, stamp);
     tf_.sendTransform(t);
 
     nav_msgs::Odometry odom;

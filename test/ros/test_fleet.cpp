@@ -22,11 +22,13 @@
 #include <string>
 #include <vector>
 
+#include "ellipse_builders.h"
 #include "ellipse_collision/GateState.h"
 #include "ellipse_collision/core/distance.h"
 #include "ellipse_collision/core/overlap.h"
 #include "ellipse_collision/core/simulated_base.h"
 #include "node_test_utils.h"
+#include "planar_transform.h"
 
 namespace ellipse_collision {
 namespace {
@@ -100,14 +102,8 @@ class Fleet : public ::testing::Test {
       if (i == silent_) continue;
       Robot& robot = robots_[i];
       const core::PathPose& p = robot.base->pose();
-      geometry_msgs::TransformStamped t;
-      t.header.stamp = ros::Time(now_);
-      t.header.frame_id = "map";
-      t.child_frame_id = robot.name + "/base_link";
-      t.transform.translation.x = p.x;
-      t.transform.translation.y = p.y;
-      t.transform.rotation.z = std::sin(p.yaw / 2);
-      t.transform.rotation.w = std::cos(p.yaw / 2);
+      const geometry_msgs::TransformStamped t =
+          test::planarTransform("map", robot.name + "/base_link", p.x, p.y, p.yaw, ros::Time(now_));
       poses.push_back(t);
       nav_msgs::Odometry odom;
       odom.header.stamp = ros::Time(now_);
@@ -123,15 +119,7 @@ class Fleet : public ::testing::Test {
 
   std::vector<core::Ellipse> linksOf(const Robot& robot) const {
     const core::PathPose& p = robot.base->pose();
-    std::vector<core::Ellipse> placed;
-    for (core::Ellipse e : kLinks) {
-      const Eigen::Vector2d c = e.center;
-      e.center = {p.x + std::cos(p.yaw) * c.x() - std::sin(p.yaw) * c.y(),
-                  p.y + std::sin(p.yaw) * c.x() + std::cos(p.yaw) * c.y()};
-      e.angle += p.yaw;
-      placed.push_back(e);
-    }
-    return placed;
+    return test::placedAt(kLinks, p.x, p.y, p.yaw);
   }
 
   /// The smallest distance between a link of `a` and a link of `b` [m] (< 0 never: 0 = touching).

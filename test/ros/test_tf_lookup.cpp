@@ -9,31 +9,22 @@
 #include <string>
 
 #include "ellipse_collision/ros/tf_lookup.h"
+#include "planar_transform.h"
 
 namespace ellipse_collision {
 namespace {
-
-geometry_msgs::TransformStamped transform(const std::string& parent, const std::string& child,
-                                          double x, double y, double yaw, const ros::Time& stamp) {
-  geometry_msgs::TransformStamped t;
-  t.header.frame_id = parent;
-  t.header.stamp = stamp;
-  t.child_frame_id = child;
-  t.transform.translation.x = x;
-  t.transform.translation.y = y;
-  t.transform.rotation.z = std::sin(yaw / 2);
-  t.transform.rotation.w = std::cos(yaw / 2);
-  return t;
-}
 
 class TfLookup : public ::testing::Test {
  protected:
   void SetUp() override {
     ros::Time::init();                      // tf2_ros' waits read the clock; no node is needed
     buffer_.setUsingDedicatedThread(true);  // as the node's, whose listener fills it from a thread
-    buffer_.setTransform(transform("map", "odom", 1.0, 2.0, 0.5, ros::Time(0)), "test", true);
-    buffer_.setTransform(transform("odom", "base_link", 3.0, 0.0, 0.25, ros::Time(100)), "test");
-    buffer_.setTransform(transform("odom", "base_link", 4.0, 0.0, 0.25, ros::Time(102)), "test");
+    buffer_.setTransform(test::planarTransform("map", "odom", 1.0, 2.0, 0.5, ros::Time(0)), "test",
+                         true);
+    buffer_.setTransform(test::planarTransform("odom", "base_link", 3.0, 0.0, 0.25, ros::Time(100)),
+                         "test");
+    buffer_.setTransform(test::planarTransform("odom", "base_link", 4.0, 0.0, 0.25, ros::Time(102)),
+                         "test");
   }
   tf2_ros::Buffer buffer_;
 };

@@ -3,6 +3,8 @@
 // Builders of core::Ellipse for the tests: a given one, and a random one from a seeded source.
 
 #include <Eigen/Core>
+#include <cmath>
+#include <vector>
 
 #include "ellipse_collision/core/ellipse.h"
 #include "random_source.h"
@@ -37,6 +39,22 @@ inline core::Ellipse randomEllipse(RandomSource& random, double half_width, doub
   e.radius_y = x_is_major ? minor : major;
   e.angle = random.uniform(-max_angle, max_angle);
   return e;
+}
+
+/// `ellipses` given in a body's frame, placed in the world where the body is at (x, y) [m] turned
+/// by `yaw` [rad].
+inline std::vector<core::Ellipse> placedAt(const std::vector<core::Ellipse>& ellipses, double x,
+                                           double y, double yaw) {
+  std::vector<core::Ellipse> placed;
+  placed.reserve(ellipses.size());
+  for (core::Ellipse e : ellipses) {
+    const Eigen::Vector2d c = e.center;
+    e.center = {x + std::cos(yaw) * c.x() - std::sin(yaw) * c.y(),
+                y + std::sin(yaw) * c.x() + std::cos(yaw) * c.y()};
+    e.angle += yaw;
+    placed.push_back(e);
+  }
+  return placed;
 }
 
 }  // namespace ellipse_collision::test
