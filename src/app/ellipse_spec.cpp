@@ -117,6 +117,19 @@ core::Ellipse paddedEllipse(const EllipseSpec& spec, double global_padding) {
   return e;
 }
 
+EllipseSpec planarSpec(const core::Ellipse& ellipse, const std::string& name,
+                       const std::string& frame) {
+  EllipseSpec spec;
+  spec.name = name;
+  spec.frame_id = frame;
+  spec.x = ellipse.center.x();
+  spec.y = ellipse.center.y();
+  spec.angle = ellipse.angle;
+  spec.radius_x = ellipse.radius_x;
+  spec.radius_y = ellipse.radius_y;
+  return spec;
+}
+
 core::Ellipsoid paddedEllipsoid(const EllipseSpec& spec, double global_padding) {
   const EllipsoidPart& part = *spec.ellipsoid;
   // Summed in paddedEllipse()'s order, so that the radii findInvalidPaddedField() passed are the

@@ -74,14 +74,7 @@ std::vector<EllipseSpec> FleetFootprint::update(double stamp_s,
   std::unordered_map<std::string, Seen> now;
   for (const core::NamedEllipse& link : links) {
     const core::Ellipse& e = link.ellipse;
-    EllipseSpec spec;
-    spec.name = robot_name + "/" + link.name;
-    spec.frame_id = frame;
-    spec.x = e.center.x();
-    spec.y = e.center.y();
-    spec.angle = e.angle;
-    spec.radius_x = e.radius_x;
-    spec.radius_y = e.radius_y;
+    EllipseSpec spec = planarSpec(e, robot_name + "/" + link.name, frame);
     const auto before = last_.find(link.name);
     if (before != last_.end() && stamp_s == before->second.stamp_s) {
       // Nothing newer from tf: the same placement, the same motion as last said.

@@ -68,6 +68,11 @@ std::optional<FieldError> findInvalidPaddedField(const EllipseSpec& spec, double
 /// The ellipse in its own frame with both radii grown by spec.padding + global_padding [m].
 core::Ellipse paddedEllipse(const EllipseSpec& spec, double global_padding);
 
+/// A planar, unpadded, standing spec named `name` in `frame` holding `ellipse` as it is (the
+/// inverse of paddedEllipse() with no padding).
+EllipseSpec planarSpec(const core::Ellipse& ellipse, const std::string& name,
+                       const std::string& frame);
+
 /// The ellipsoid in its own frame with all three radii grown as paddedEllipse() grows its two
 /// (radius + spec.padding + global_padding [m], summed in that order); requires spec.ellipsoid.
 core::Ellipsoid paddedEllipsoid(const EllipseSpec& spec, double global_padding);
