@@ -28,11 +28,11 @@ SensorObstacles toSpecs(const core::ContourEllipses& fit, const std::string& fra
   for (const core::ContourEllipse& contour : fit.ellipses) {
     const core::Ellipse& e = contour.ellipse;
     const std::size_t earlier = starts[contour.key]++;
-    result.ellipses.push_back(planarSpec(
-        e,
-        settings.name_prefix + std::to_string(contour.key) +
-            (earlier > 0 ? "_" + std::to_string(earlier) : std::string()),
-        frame_id));
+    result.ellipses.push_back(
+        planarSpec(e,
+                   settings.name_prefix + std::to_string(contour.key) +
+                       (earlier > 0 ? "_" + std::to_string(earlier) : std::string()),
+                   frame_id));
     result.spans.push_back({contour.key, contour.last_key});
   }
   return result;
