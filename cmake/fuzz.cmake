@@ -105,9 +105,11 @@ else()
   set(_fuzz_msg_target ellipse_collision_fuzz_messages)
 endif()
 
-add_library(ellipse_collision_fuzz_ros STATIC
-  "${_fuzz_root}/src/ros/conversions.cpp"
-  "${_fuzz_root}/src/ros/node_config.cpp")
+set(_fuzz_ros_sources "${_fuzz_root}/src/ros/conversions.cpp")
+foreach(_source ${ELLIPSE_COLLISION_PARAMETER_SOURCES})
+  list(APPEND _fuzz_ros_sources "${_fuzz_root}/${_source}")
+endforeach()
+add_library(ellipse_collision_fuzz_ros STATIC ${_fuzz_ros_sources})
 target_include_directories(ellipse_collision_fuzz_ros PUBLIC "${_fuzz_msg_include}" ${roscpp_INCLUDE_DIRS})
 target_link_libraries(ellipse_collision_fuzz_ros PUBLIC ellipse_collision_fuzz_core ${roscpp_LIBRARIES})
 target_compile_options(ellipse_collision_fuzz_ros PRIVATE ${_fuzz_compile_options})

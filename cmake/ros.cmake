@@ -2,13 +2,13 @@
 # conversion, tf, advertise and publish. ROS include directories are added per target, so the core
 # and the application layer never see them.
 add_library(ellipse_collision_ros
+  ${ELLIPSE_COLLISION_PARAMETER_SOURCES}
   src/ros/collision_markers.cpp
   src/ros/collision_node.cpp
   src/ros/conversions.cpp
   src/ros/gate_markers.cpp
   src/ros/incident_bag.cpp
   src/ros/incident_writer.cpp
-  src/ros/node_config.cpp
   src/ros/reconfigure.cpp
   src/ros/scan_obstacles.cpp
   src/ros/tf_lookup.cpp

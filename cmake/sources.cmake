@@ -86,3 +86,15 @@ set(ELLIPSE_COLLISION_APP_SOURCES
   src/app/tunable_settings.cpp
   src/app/velocity_command.cpp
   src/app/velocity_gate.cpp)
+
+# The ROS layer's parameter readers (the node's and scan_obstacles' configuration): part of
+# ellipse_collision_ros (cmake/ros.cmake), and compiled by the fuzz build for fuzz_node_config.
+set(ELLIPSE_COLLISION_PARAMETER_SOURCES
+  src/ros/ellipse_params.cpp
+  src/ros/fleet_params.cpp
+  src/ros/gate_params.cpp
+  src/ros/incident_params.cpp
+  src/ros/node_config.cpp
+  src/ros/param_reading.cpp
+  src/ros/scan_params.cpp
+  src/ros/source_params.cpp)

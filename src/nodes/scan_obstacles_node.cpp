@@ -1,4 +1,4 @@
-#include "ellipse_collision/ros/node_config.h"
+#include "ellipse_collision/ros/param_reading.h"
 #include "ellipse_collision/ros/scan_obstacles.h"
 
 int main(int argc, char** argv) {

@@ -8,7 +8,8 @@
 
 #include "ellipse_collision/app/collision_check.h"
 #include "ellipse_collision/ros/conversions.h"
-#include "ellipse_collision/ros/node_config.h"
+#include "ellipse_collision/ros/param_reading.h"
+#include "ellipse_collision/ros/scan_params.h"
 #include "ellipse_collision/ros/tf_lookup.h"
 
 namespace ellipse_collision {

@@ -8,8 +8,9 @@
 #include <limits>
 #include <string>
 
-#include "ellipse_collision/ros/node_config.h"
+#include "ellipse_collision/ros/param_reading.h"
 #include "ellipse_collision/ros/scan_obstacles.h"
+#include "ellipse_collision/ros/scan_params.h"
 #include "xyz_cloud.h"
 
 namespace ellipse_collision {

@@ -3,9 +3,7 @@
 #include <ros/node_handle.h>
 #include <xmlrpcpp/XmlRpcValue.h>
 
-#include <functional>
 #include <optional>
-#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -15,18 +13,11 @@
 #include "ellipse_collision/app/ellipse_spec.h"
 #include "ellipse_collision/app/fleet_footprint.h"
 #include "ellipse_collision/app/gate_config.h"
-#include "ellipse_collision/app/link_fitting.h"
-#include "ellipse_collision/app/obstacle_tracker.h"
-#include "ellipse_collision/app/scan_obstacles.h"
 #include "ellipse_collision/app/tunable_settings.h"
+#include "ellipse_collision/ros/ellipse_params.h"
+#include "ellipse_collision/ros/param_reading.h"
 
 namespace ellipse_collision {
-
-/// A configuration the node cannot run with; what() names the entry, the key, expected and actual.
-class ConfigError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
 
 // The scalar parameters' ranges live with their rule in the application layer (the same at
 // start-up and when reconfigured).
@@ -67,16 +58,6 @@ struct NodeConfig {
   app::FleetSettings fleet;
 };
 
-/// How a configuration error reads, at start-up and when reconfigured: "<where>, key '<key>':
-/// expected <expected>, got <actual>" (where: "parameter ~rate", "links[2]").
-std::string describeConfigError(const std::string& where, const app::FieldError& error);
-
-/// Fits the link ellipses of `links_from_urdf`: the URDF in parameter `param`, the links and
-/// padding of `options`. Throws a std::runtime_error naming the parameter (or link, mesh URI) on
-/// failure. The node passes ros/urdf_links.h's reader (urdfLinkFitter()); tests pass their own.
-using UrdfLinkFitter =
-    std::function<app::LinkFitResult(const std::string& param, const app::LinkFitOptions& options)>;
-
 /// Parses and validates the node's private namespace given as one XmlRpc struct. `links` is
 /// required (an empty list is fine) unless `links_from_urdf` is given, every other key optional;
 /// unknown keys are errors, so that a typo cannot silently fall back to a default. Integers are
@@ -85,17 +66,9 @@ using UrdfLinkFitter =
 /// `links_from_urdf: {param, links, padding}` appends the ellipses `fit_urdf_links` fits to
 /// `links` (an empty `fit_urdf_links` makes it an error). `default_robot_name` is
 /// fleet/robot_name's default (app::defaultFleetRobotName() of the node). Throws ConfigError.
-NodeConfig parseNodeConfig(const XmlRpc::XmlRpcValue& params,
+NodeConfig parseNodeConfig(const XmlRpc::XmlRpcValue& private_namespace,
                            const UrdfLinkFitter& fit_urdf_links = {},
                            const std::string& default_robot_name = "robot");
-
-/// Parses a list of ellipses as the node's `links` and `obstacles` are given: each entry a dict
-/// {name, frame, x, y, angle, radius_x, radius_y, padding (optional)} [m, rad], its fields checked
-/// with app::findInvalidPaddedField() and `global_padding` [m]. `key` names the list in messages
-/// (`key[i]`). Names are not checked against each other. Throws ConfigError naming the entry, the
-/// key, expected and actual value.
-std::vector<app::EllipseSpec> parseEllipseList(const XmlRpc::XmlRpcValue& list,
-                                               const std::string& key, double global_padding);
 
 /// $ROS_HOME, else ~/.ros (else /tmp without a home).
 std::string rosHome();
@@ -108,19 +81,5 @@ std::string defaultIncidentDirectory();
 /// Throws ConfigError.
 NodeConfig loadNodeConfig(const ros::NodeHandle& private_nh,
                           const UrdfLinkFitter& fit_urdf_links = {});
-
-/// Parses scan_obstacles' private namespace (every key optional, documented defaults in
-/// app::ScanObstacleSettings; unknown keys and wrong types are errors; ranges from
-/// app::findInvalidSetting()). Throws ConfigError naming the key.
-app::ScanObstacleSettings parseScanObstacleSettings(const XmlRpc::XmlRpcValue& params);
-
-/// Reads scan_obstacles' private namespace from the parameter server and parses it.
-app::ScanObstacleSettings loadScanObstacleSettings(const ros::NodeHandle& private_nh);
-
-/// Parses the `tracking` dict of scan_obstacles' private namespace (every key optional, defaults
-/// in app::TrackingSettings; ranges from app::findInvalidSetting()). Throws ConfigError naming
-/// the key.
-app::TrackingSettings parseTrackingSettings(const XmlRpc::XmlRpcValue& params);
-app::TrackingSettings loadTrackingSettings(const ros::NodeHandle& private_nh);
 
 }  // namespace ellipse_collision
