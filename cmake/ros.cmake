@@ -6,11 +6,13 @@ add_library(ellipse_collision_ros
   src/ros/collision_markers.cpp
   src/ros/collision_node.cpp
   src/ros/conversions.cpp
+  src/ros/fleet_publisher.cpp
   src/ros/gate_markers.cpp
   src/ros/incident_bag.cpp
   src/ros/incident_writer.cpp
   src/ros/reconfigure.cpp
   src/ros/scan_obstacles.cpp
+  src/ros/source_subscribers.cpp
   src/ros/tf_lookup.cpp
   src/ros/urdf_links.cpp)
 target_include_directories(ellipse_collision_ros PUBLIC include ${catkin_INCLUDE_DIRS})

@@ -8,7 +8,6 @@
 #include "ellipse_collision/core/number_format.h"
 #include "ellipse_collision/ros/conversions.h"
 #include "ellipse_collision/ros/incident_bag.h"
-#include "ellipse_collision/ros/scan_obstacles.h"
 #include "ellipse_collision/ros/tf_lookup.h"
 #include "ellipse_collision/ros/urdf_links.h"
 
@@ -110,16 +109,9 @@ CollisionNode::CollisionNode(const ros::NodeHandle& nh, const ros::NodeHandle& p
   remove_service_ =
       private_nh_.advertiseService("remove_obstacles", &CollisionNode::onRemoveObstacles, this);
   path_service_ = private_nh_.advertiseService("check_path", &CollisionNode::onCheckPath, this);
-  obstacles_sub_ = private_nh_.subscribe("obstacles", 10, &CollisionNode::onObstacles, this);
-  subscribeSources();
+  sources_ = std::make_unique<SourceSubscribers>(nh_, private_nh_, config_, *monitor_, tf_buffer_);
   if (config_.fleet.enabled) {
-    fleet_pub_ = nh_.advertise<EllipseArray>(config_.fleet.topic, 1);
-    fleet_timer_ = nh_.createTimer(ros::Duration(1.0 / config_.fleet.rate),
-                                   &CollisionNode::onFleetTimer, this);
-    ROS_INFO_STREAM("ellipse_collision: fleet: publishing '"
-                    << config_.fleet.robot_name << "' (" << config_.links.size() << " links) on "
-                    << fleet_pub_.getTopic() << " in '" << config_.fleet.frame << "' at "
-                    << core::formatNumber(config_.fleet.rate) << " Hz");
+    fleet_ = std::make_unique<FleetPublisher>(nh_, config_, *monitor_, tf_buffer_);
   }
 
   // The velocity gate: always advertised (it can be enabled at run time), off by default.
@@ -376,254 +368,24 @@ void CollisionNode::onMarkerSubscriber(const ros::SingleSubscriberPublisher& sub
   if (monitor_->state().valid) subscriber.publish(markers_.fullArray());
 }
 
-void CollisionNode::onObstacles(const EllipseArray::ConstPtr& msg) {
-  replaceSourceObstacles(0, fromMsg(*msg), msg->header.stamp);
-}
-
-void CollisionNode::subscribeSources() {
-  const std::vector<app::SourceSpec>& sources = config_.monitor.sources;
-  source_series_.resize(sources.size() + 1);
-  rosters_.resize(sources.size() + 1);
-  double roster_period_s = 0.0;
-  for (std::size_t i = 0; i < sources.size(); ++i) {
-    const app::SourceSpec& source = sources[i];
-    const std::size_t index = i + 1;
-    // "~x" is private, anything else resolves in the node's namespace.
-    const bool is_private = source.topic.front() == '~';
-    ros::NodeHandle& handle = is_private ? private_nh_ : nh_;
-    const std::string topic = is_private ? source.topic.substr(1) : source.topic;
-    if (source.type == app::SourceType::Scan || source.type == app::SourceType::Cloud) {
-      source_series_[index] =
-          std::make_unique<app::SensorObstacleSeries>(source.scan, source.tracking);
-    }
-    if (source.type == app::SourceType::Scan) {
-      source_subs_.push_back(handle.subscribe<sensor_msgs::LaserScan>(
-          topic, 1, [this, index](const sensor_msgs::LaserScan::ConstPtr& msg) {
-            onSourceScan(index, msg);
-          }));
-    } else if (source.type == app::SourceType::Cloud) {
-      source_subs_.push_back(handle.subscribe<sensor_msgs::PointCloud2>(
-          topic, 1, [this, index](const sensor_msgs::PointCloud2::ConstPtr& msg) {
-            onSourceCloud(index, msg);
-          }));
-    } else if (source.type == app::SourceType::Robots) {
-      rosters_[index] =
-          std::make_unique<app::FleetRoster>(config_.fleet.robot_name, source.timeout_s);
-      // Checked four times per timeout: a silent robot goes at most a quarter timeout late.
-      const double period_s = source.timeout_s / 4.0;
-      roster_period_s = roster_period_s > 0.0 ? std::min(roster_period_s, period_s) : period_s;
-      // Every robot's footprints on one topic: room for a round of a large fleet.
-      source_subs_.push_back(handle.subscribe<EllipseArray>(
-          topic, 100,
-          [this, index](const EllipseArray::ConstPtr& msg) { onSourceRobots(index, msg); }));
-    } else if (source.type == app::SourceType::Range) {
-      source_subs_.push_back(handle.subscribe<sensor_msgs::Range>(
-          topic, 10,
-          [this, index](const sensor_msgs::Range::ConstPtr& msg) { onSourceRange(index, msg); }));
-    } else {
-      source_subs_.push_back(handle.subscribe<EllipseArray>(
-          topic, 10,
-          [this, index](const EllipseArray::ConstPtr& msg) { onSourceEllipses(index, msg); }));
-    }
-    ROS_INFO_STREAM("ellipse_collision: source '"
-                    << source.name << "' (" << app::toString(source.type) << ") on "
-                    << source_subs_.back().getTopic() << ", "
-                    << (source.timeout_s > 0.0
-                            ? "silent after " + core::formatNumber(source.timeout_s) + " s"
-                            : std::string("no watchdog")));
-  }
-  if (roster_period_s > 0.0) {
-    roster_timer_ =
-        nh_.createTimer(ros::Duration(roster_period_s), &CollisionNode::onRosterTimer, this);
-  }
-}
-
-void CollisionNode::onSourceRobots(std::size_t source, const EllipseArray::ConstPtr& msg) {
-  app::FleetRoster& roster = *rosters_[source];
-  const ros::Time now = ros::Time::now();
-  if (const auto refused = roster.receive(now.toSec(), fromMsg(*msg))) {
-    refuseSourceMessage(source, *refused);
-    return;
-  }
-  // No wait for tf: every robot's footprint comes through here, many a second.
-  const std::string error =
-      monitor_->replaceSourceObstacles(source, roster.obstacles(), msg->header.stamp.toSec(),
-                                       now.toSec(), lookup(ros::Time(0), ros::Duration(0)));
-  if (!error.empty()) {
-    ROS_WARN_STREAM_THROTTLE(5.0, "ellipse_collision: refused a footprint on source '"
-                                      << config_.monitor.sources[source - 1].name
-                                      << "', the robots' previous links kept: " << error);
-  }
-}
-
-void CollisionNode::onRosterTimer(const ros::TimerEvent& /*event*/) {
-  const ros::Time now = ros::Time::now();
-  for (std::size_t source = 1; source < rosters_.size(); ++source) {
-    if (!rosters_[source]) continue;
-    const std::vector<std::string> dropped = rosters_[source]->dropSilent(now.toSec());
-    if (dropped.empty()) continue;
-    const app::SourceSpec& spec = config_.monitor.sources[source - 1];
-    for (const std::string& robot : dropped) {
-      // Robots leave: worth a line, not an error.
-      ROS_INFO_STREAM("ellipse_collision: source '"
-                      << spec.name << "': robot '" << robot << "' silent for more than "
-                      << core::formatNumber(spec.timeout_s) << " s, its links dropped");
-    }
-    const std::string error = monitor_->replaceSourceObstacles(
-        source, rosters_[source]->obstacles(), now.toSec(), now.toSec(),
-        lookup(ros::Time(0), ros::Duration(0)), /*heard=*/false);
-    if (!error.empty()) {
-      ROS_WARN_STREAM_THROTTLE(5.0, "ellipse_collision: source '" << spec.name << "': " << error);
-    }
-  }
-}
-
-void CollisionNode::onFleetTimer(const ros::TimerEvent& /*event*/) {
-  // A robot alone costs nothing (and warns of no missing map): the work waits for a listener.
-  if (fleet_pub_.getNumSubscribers() == 0) {
-    fleet_error_.clear();
-    return;
-  }
-  // No waiting: the latest transforms, in the one callback thread.
-  const app::PlacedLinks placed = app::placeLinks(
-      config_.links, config_.monitor.check.global_padding_m,
-      tfLookup(tf_buffer_, config_.fleet.frame, ros::Time(0), ros::Duration(0)),
-      app::Freshness{monitor_->settings().check.max_transform_age_s, ros::Time::now().toSec()});
-  if (!placed.error.empty()) {
-    // A robot without a map (fleet/frame absent) is normal alone: say it, slowly.
-    fleet_error_ = placed.error;
-    ROS_WARN_STREAM_THROTTLE(30.0, "ellipse_collision: fleet: not publishing '"
-                                       << config_.fleet.robot_name << "' in '"
-                                       << config_.fleet.frame << "': " << placed.error
-                                       << " (fleet/enabled: false turns this off)");
-    return;
-  }
-  fleet_error_.clear();
-  const ros::Time stamp = placed.stamp_s > 0.0 ? ros::Time(placed.stamp_s) : ros::Time::now();
-  EllipseArray msg;
-  msg.header.stamp = stamp;
-  msg.header.frame_id = config_.fleet.frame;
-  for (const app::EllipseSpec& spec : fleet_footprint_.update(
-           stamp.toSec(), placed.links, config_.fleet.robot_name, config_.fleet.frame)) {
-    msg.ellipses.push_back(toMsg(spec));
-  }
-  fleet_pub_.publish(msg);
-  ++fleet_sent_;
-}
-
 std::optional<diagnostic_msgs::DiagnosticStatus> CollisionNode::fleetStatus(double now_s) const {
+  if (!fleet_ && !sources_->hasRobots()) return std::nullopt;
   diagnostic_msgs::DiagnosticStatus status;
   status.name = private_nh_.getNamespace() + ": fleet";
   status.hardware_id = config_.fleet.frame;
   status.level = diagnostic_msgs::DiagnosticStatus::OK;
-  bool any = false;
-  if (config_.fleet.enabled) {
-    any = true;
-    if (!fleet_error_.empty()) {
-      status.level = diagnostic_msgs::DiagnosticStatus::WARN;
-      status.message = "not publishing '" + config_.fleet.robot_name + "' in '" +
-                       config_.fleet.frame + "': " + fleet_error_ +
-                       " (publish fleet/frame in tf, or set fleet/enabled: false)";
-    } else {
-      status.message =
-          (fleet_pub_.getNumSubscribers() > 0 ? "publishing '" : "nobody listening for '") +
-          config_.fleet.robot_name + "' on " + fleet_pub_.getTopic();
-    }
-    status.values.push_back(keyValue("robot name", config_.fleet.robot_name));
-    status.values.push_back(keyValue("footprints sent", std::to_string(fleet_sent_)));
+  if (fleet_) {
+    FleetPublisher::Status published = fleet_->status();
+    if (published.failing) status.level = diagnostic_msgs::DiagnosticStatus::WARN;
+    status.message = published.message;
+    for (const auto& [key, value] : published.values) status.values.push_back(keyValue(key, value));
   } else {
     status.message = "not publishing (fleet/enabled: false)";
   }
-  for (std::size_t source = 1; source < rosters_.size(); ++source) {
-    if (!rosters_[source]) continue;
-    any = true;
-    const std::string prefix = "source '" + config_.monitor.sources[source - 1].name + "' ";
-    for (const auto& [key, value] : rosters_[source]->healthValues(now_s)) {
-      status.values.push_back(keyValue(prefix + key, value));
-    }
+  for (const auto& [key, value] : sources_->robotsValues(now_s)) {
+    status.values.push_back(keyValue(key, value));
   }
-  if (!any) return std::nullopt;
   return status;
-}
-
-void CollisionNode::onSourceEllipses(std::size_t source, const EllipseArray::ConstPtr& msg) {
-  replaceSourceObstacles(source, fromMsg(*msg), msg->header.stamp);
-}
-
-void CollisionNode::onSourceScan(std::size_t source, const sensor_msgs::LaserScan::ConstPtr& msg) {
-  // The same pipeline as scan_obstacles, its cuts, names and tracks kept per source.
-  app::SensorObstacles obstacles = scanObstacles(*msg, *source_series_[source]);
-  trackSource(source, obstacles, msg->header, false);
-  replaceSensorObstacles(source, obstacles, msg->header.stamp);
-}
-
-void CollisionNode::onSourceCloud(std::size_t source,
-                                  const sensor_msgs::PointCloud2::ConstPtr& msg) {
-  std::vector<Eigen::Vector3f> points;
-  try {
-    points = cloudPoints(*msg);
-  } catch (const std::runtime_error& error) {
-    refuseSourceMessage(source, std::string("a cloud without x, y, z: ") + error.what());
-    return;
-  }
-  app::SensorObstacles obstacles = source_series_[source]->cloud(points, msg->header.frame_id);
-  trackSource(source, obstacles, msg->header, true);
-  replaceSensorObstacles(source, obstacles, msg->header.stamp);
-}
-
-void CollisionNode::trackSource(std::size_t source, app::SensorObstacles& obstacles,
-                                const std_msgs::Header& header, bool cloud) {
-  // No wait: the node's one callback thread also gates commands.
-  const std::string error = trackSensorObstacles(tf_buffer_, *source_series_[source], obstacles,
-                                                 header, cloud, ros::Duration(0));
-  if (!error.empty()) {
-    ROS_WARN_STREAM_THROTTLE(5.0, "ellipse_collision: source '"
-                                      << config_.monitor.sources[source - 1].name
-                                      << "': " << error);
-  }
-}
-
-void CollisionNode::onSourceRange(std::size_t source, const sensor_msgs::Range::ConstPtr& msg) {
-  app::SensorObstacles obstacles;
-  const std::optional<app::FieldError> invalid = app::rangeObstacles(
-      fromMsg(*msg), config_.monitor.sources[source - 1].scan.min_radius, &obstacles);
-  if (invalid) {
-    refuseSourceMessage(source, app::describeFieldError("sensor_msgs/Range", *invalid));
-    return;
-  }
-  replaceSourceObstacles(source, obstacles.ellipses, msg->header.stamp);
-}
-
-void CollisionNode::replaceSensorObstacles(std::size_t source,
-                                           const app::SensorObstacles& obstacles,
-                                           const ros::Time& stamp) {
-  if (!obstacles.skipped.empty()) {
-    ROS_WARN_STREAM_THROTTLE(5.0, "ellipse_collision: source '"
-                                      << config_.monitor.sources[source - 1].name << "' skipped "
-                                      << app::joinText(obstacles.skipped, "; "));
-  }
-  replaceSourceObstacles(source, obstacles.ellipses, stamp);
-}
-
-void CollisionNode::refuseSourceMessage(std::size_t source, const std::string& why) {
-  monitor_->sourceMessageRefused(source, why);
-  ROS_WARN_STREAM_THROTTLE(5.0, "ellipse_collision: refused a message of source '"
-                                    << config_.monitor.sources[source - 1].name
-                                    << "', its previous obstacles kept: " << why);
-}
-
-void CollisionNode::replaceSourceObstacles(std::size_t source,
-                                           const std::vector<app::EllipseSpec>& specs,
-                                           const ros::Time& stamp) {
-  const std::string error =
-      monitor_->replaceSourceObstacles(source, specs, stamp.toSec(), ros::Time::now().toSec(),
-                                       lookup(ros::Time(0), ros::Duration(config_.tf_timeout_s)));
-  if (error.empty()) return;
-  const std::string what =
-      source == 0 ? std::string("~obstacles message")
-                  : "message of source '" + config_.monitor.sources[source - 1].name + "'";
-  ROS_WARN_STREAM_THROTTLE(
-      5.0, "ellipse_collision: refused " << what << ", its previous obstacles kept: " << error);
 }
 
 bool CollisionNode::onCheckCollisions(CheckCollisions::Request& request,

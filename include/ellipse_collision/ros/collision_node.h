@@ -5,9 +5,6 @@
 #include <geometry_msgs/Twist.h>
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
-#include <sensor_msgs/LaserScan.h>
-#include <sensor_msgs/PointCloud2.h>
-#include <sensor_msgs/Range.h>
 #include <std_srvs/SetBool.h>
 #include <std_srvs/Trigger.h>
 #include <tf2_ros/buffer.h>
@@ -20,16 +17,15 @@
 #include <vector>
 
 #include "ellipse_collision/app/collision_monitor.h"
-#include "ellipse_collision/app/fleet_footprint.h"
-#include "ellipse_collision/app/fleet_roster.h"
-#include "ellipse_collision/app/sensor_obstacle_series.h"
 #include "ellipse_collision/core/scene_check.h"
 #include "ellipse_collision/ros/collision_markers.h"
+#include "ellipse_collision/ros/fleet_publisher.h"
 #include "ellipse_collision/ros/gate_markers.h"
 #include "ellipse_collision/ros/incident_writer.h"
 #include "ellipse_collision/ros/messages.h"
 #include "ellipse_collision/ros/node_config.h"
 #include "ellipse_collision/ros/reconfigure.h"
+#include "ellipse_collision/ros/source_subscribers.h"
 
 namespace ellipse_collision {
 
@@ -65,35 +61,9 @@ class CollisionNode {
   void onStoreTimer(const ros::WallTimerEvent& event);
   void onDiagnosticsTimer(const ros::TimerEvent& event);
   void onMarkerSubscriber(const ros::SingleSubscriberPublisher& subscriber);
-  void onObstacles(const EllipseArray::ConstPtr& msg);
-  /// Subscribes to every listed source (`sources`): source i + 1 of the monitor is sources[i].
-  void subscribeSources();
-  /// One message of source `source` (an ellipses source's EllipseArray, a scan source's ellipses
-  /// from its pipeline) handed to the monitor; a refusal is logged, naming the source.
-  void onSourceEllipses(std::size_t source, const EllipseArray::ConstPtr& msg);
-  void onSourceScan(std::size_t source, const sensor_msgs::LaserScan::ConstPtr& msg);
-  void onSourceCloud(std::size_t source, const sensor_msgs::PointCloud2::ConstPtr& msg);
-  /// The tracked velocities of a scan or cloud source's obstacles (trackSensorObstacles()).
-  void trackSource(std::size_t source, app::SensorObstacles& obstacles,
-                   const std_msgs::Header& header, bool cloud);
-  void onSourceRange(std::size_t source, const sensor_msgs::Range::ConstPtr& msg);
-  /// A robots source's footprint message: kept by the source's FleetRoster (own robot ignored,
-  /// a bad message refused whole), every other robot's links handed to the monitor.
-  void onSourceRobots(std::size_t source, const EllipseArray::ConstPtr& msg);
-  /// Drops the robots of every robots source silent past its timeout, logging each.
-  void onRosterTimer(const ros::TimerEvent& event);
-  /// fleet/: this robot's links in fleet/frame with their velocities over the last interval.
-  void onFleetTimer(const ros::TimerEvent& event);
   /// /diagnostics' "fleet" status: what is published (or why not) and each robots source's
   /// robots; none when the fleet is off and no robots source is listed.
   std::optional<diagnostic_msgs::DiagnosticStatus> fleetStatus(double now_s) const;
-  /// The scan pipeline's obstacles of one message of `source` (skipped clusters logged), handed on.
-  void replaceSensorObstacles(std::size_t source, const app::SensorObstacles& obstacles,
-                              const ros::Time& stamp);
-  /// A message of `source` that could not be converted: logged and reported for the source.
-  void refuseSourceMessage(std::size_t source, const std::string& why);
-  void replaceSourceObstacles(std::size_t source, const std::vector<app::EllipseSpec>& specs,
-                              const ros::Time& stamp);
   bool onCheckCollisions(CheckCollisions::Request& request, CheckCollisions::Response& response);
   bool onAddObstacles(AddObstacles::Request& request, AddObstacles::Response& response);
   bool onRemoveObstacles(RemoveObstacles::Request& request, RemoveObstacles::Response& response);
@@ -138,19 +108,10 @@ class CollisionNode {
   ros::Publisher collisions_pub_;
   ros::Publisher markers_pub_;
   ros::Publisher diagnostics_pub_;
-  ros::Subscriber obstacles_sub_;
-  std::vector<ros::Subscriber> source_subs_;  ///< one per listed source
-  /// A scan or cloud source's pipeline state (cuts and names kept from message to message), by
-  /// source index; null for other sources.
-  std::vector<std::unique_ptr<app::SensorObstacleSeries>> source_series_;
-  /// A robots source's robots, by source index; null for other sources.
-  std::vector<std::unique_ptr<app::FleetRoster>> rosters_;
-  ros::Timer roster_timer_;
-  ros::Publisher fleet_pub_;
-  ros::Timer fleet_timer_;
-  app::FleetFootprint fleet_footprint_;
-  std::string fleet_error_;  ///< why the last footprint was not sent ("" = it was)
-  std::size_t fleet_sent_{0};
+  /// ~obstacles and the listed sources, each message's obstacles to the monitor.
+  std::unique_ptr<SourceSubscribers> sources_;
+  /// fleet/: this robot's links for the others; null while fleet/enabled is false.
+  std::unique_ptr<FleetPublisher> fleet_;
   ros::ServiceServer check_service_;
   ros::ServiceServer add_service_;
   ros::ServiceServer remove_service_;
