@@ -21,7 +21,9 @@ constexpr long kMaxGrowthKiB = 2048;
 class Storm : public ::testing::Test, protected NodeServiceClient {
  protected:
   void SetUp() override {
-    ASSERT_TRUE(connectServicesAndObstacles(nh_, obstacles_, 100));
+    // Persistent, as a client calling hundreds of times a second connects: the storm is of new
+    // names, not of connections (NodeServiceClient::connectServices()).
+    ASSERT_TRUE(connectServicesAndObstacles(nh_, obstacles_, 100, /*persistent=*/true));
   }
   ros::NodeHandle nh_;
   ros::Publisher obstacles_;

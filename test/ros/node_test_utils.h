@@ -87,21 +87,26 @@ inline bool mentions(const std::vector<CollisionPair>& pairs, const std::string&
 /// derives from it and connects in SetUp, once the services are up.
 class NodeServiceClient {
  public:
-  void connectServices(ros::NodeHandle& nh) {
-    check_ = nh.serviceClient<CheckCollisions>(nodeTopic("check_collisions"));
-    add_ = nh.serviceClient<AddObstacles>(nodeTopic("add_obstacles"));
-    remove_ = nh.serviceClient<RemoveObstacles>(nodeTopic("remove_obstacles"));
+  /// `persistent`: one connection per service for every call, what a client calling many times a
+  /// second should use. A new connection per call (the default) loses a call now and then under
+  /// load in roscpp itself: the client can drop the connection on the server's hang-up before it
+  /// reads the answer (ros/ros_comm#1976); a persistent connection is never hung up. A node that
+  /// restarts needs new connections (respawn.test keeps the default).
+  void connectServices(ros::NodeHandle& nh, bool persistent = false) {
+    check_ = nh.serviceClient<CheckCollisions>(nodeTopic("check_collisions"), persistent);
+    add_ = nh.serviceClient<AddObstacles>(nodeTopic("add_obstacles"), persistent);
+    remove_ = nh.serviceClient<RemoveObstacles>(nodeTopic("remove_obstacles"), persistent);
   }
 
   /// What a test that drives the node through services and the ~obstacles topic needs first:
   /// the services up and connected, and `obstacles` advertised and subscribed to by the node.
   /// False if either took longer than 30 s.
   bool connectServicesAndObstacles(ros::NodeHandle& nh, ros::Publisher& obstacles,
-                                   std::uint32_t queue_size) {
+                                   std::uint32_t queue_size, bool persistent = false) {
     if (!ros::service::waitForService(nodeTopic("check_collisions"), ros::Duration(30))) {
       return false;
     }
-    connectServices(nh);
+    connectServices(nh, persistent);
     obstacles = nh.advertise<EllipseArray>(nodeTopic("obstacles"), queue_size);
     return waitUntil([&obstacles] { return obstacles.getNumSubscribers() > 0; }, 30.0);
   }

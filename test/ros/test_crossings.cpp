@@ -76,7 +76,8 @@ class Robot {
     odom_pub_ = nh.advertise<nav_msgs::Odometry>("/" + prefix + "/odom", 10);
     cmd_pub_ = nh.advertise<geometry_msgs::Twist>(node + "/cmd_vel_in", 10);
     state_sub_ = nh.subscribe(node + "/gate_state", 100, &Robot::onState, this);
-    check_ = nh.serviceClient<CheckCollisions>(node + "/check_collisions");
+    // Persistent: many calls to a node that never restarts (NodeServiceClient::connectServices()).
+    check_ = nh.serviceClient<CheckCollisions>(node + "/check_collisions", /*persistent=*/true);
   }
 
   bool connected() {
