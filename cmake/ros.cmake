@@ -47,8 +47,15 @@ add_executable(fit_link_ellipses src/tools/fit_link_ellipses.cpp)
 target_link_libraries(fit_link_ellipses ellipse_collision_ros)
 target_compile_options(fit_link_ellipses PRIVATE ${ELLIPSE_COLLISION_WARNINGS})
 
+# incident_replay: an incident bag's decisions judged again (doc/incidents.md, "Replay");
+# incident_report --replay runs it.
+add_executable(incident_replay src/tools/incident_replay.cpp)
+target_link_libraries(incident_replay ellipse_collision_ros)
+target_compile_options(incident_replay PRIVATE ${ELLIPSE_COLLISION_WARNINGS})
+add_dependencies(incident_replay ${PROJECT_NAME}_generate_messages_cpp)
+
 install(TARGETS ellipse_collision_ros ellipse_collision_nodelets ellipse_collision_node scan_obstacles
-  fit_link_ellipses
+  fit_link_ellipses incident_replay
   ARCHIVE DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION}
   LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION}
   RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})

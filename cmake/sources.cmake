@@ -63,6 +63,7 @@ set(ELLIPSE_COLLISION_APP_SOURCES
   src/app/gate_config.cpp
   src/app/gate_marker_layout.cpp
   src/app/incident_recorder.cpp
+  src/app/incident_replay.cpp
   src/app/joint_chain.cpp
   src/app/link_fitting.cpp
   src/app/marker_layout.cpp

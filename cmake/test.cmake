@@ -141,6 +141,7 @@ ellipse_collision_add_gtest(test_app LIBRARIES ellipse_collision_app quadmath SO
   test/app/test_field_error.cpp
   test/app/test_gate_config.cpp
   test/app/test_incident_recorder.cpp
+  test/app/test_incident_replay.cpp
   test/app/test_velocity_command.cpp
   test/app/test_transform_lookup.cpp
   test/app/test_placement_cache.cpp

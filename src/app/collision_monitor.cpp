@@ -339,6 +339,7 @@ void CollisionMonitor::recordDecision(double now_s, const GateDecision& decision
     scene.outcome = view->outcome;
     scene.robot = planarPose(view->robot.fixed_from_frame);
     scene.motions = &view->obstacle_motions;
+    if (gate_.lastMemory()) scene.memory = &*gate_.lastMemory();
   }
   recorder_.record(now_s, decision, &scene);
 }

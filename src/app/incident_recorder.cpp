@@ -143,6 +143,7 @@ void IncidentRecorder::record(double now_s, const GateDecision& decision,
       }
     }
     recorded.source_ages = scene->source_ages;
+    if (scene->memory) recorded.memory = *scene->memory;
     for (const auto& [frame, transform] : outcome.frames) {
       recorded.frame_ages.emplace_back(frame, !transform.ok ? -1.0
                                               : transform.stamp_s == 0.0

@@ -146,6 +146,68 @@ GateDecision gateOnScene(const VelocityCommand& command, const core::Scene& plac
   return decision;
 }
 
+namespace {
+
+/// The no-stop-and-go rule (braking rule on): while the input and the world stay the same and the
+/// free way ahead has not grown by more than kHoldHysteresisM, the scale never rises after it has
+/// fallen. `hold` is the memory before the decision; the memory after it is returned.
+std::optional<GateHold> holdScale(GateDecision& decision, const std::optional<GateHold>& hold,
+                                  const std::vector<PlacedMotion>& moving,
+                                  std::uint64_t world_revision, const GateConfig& config) {
+  constexpr double kHoldHysteresisM = 0.1;
+  const bool judged = decision.action == GateAction::Pass || decision.action == GateAction::Slow ||
+                      decision.action == GateAction::Stop || decision.action == GateAction::Escape;
+  // Only the braking rule makes a larger scale safe again as the base slows down; the ideal
+  // base's rule does not (its answers stay as they were).
+  if (!judged || config.base.ideal()) return std::nullopt;
+  bool world_moves = false;
+  for (const PlacedMotion& placed : moving) {
+    const core::Motion& m = placed.motion;
+    world_moves |= m.velocity.x() != 0.0 || m.velocity.y() != 0.0 || m.angular_velocity != 0.0;
+  }
+  const VelocityCommand& input = decision.input;
+  const bool same = hold && !world_moves && hold->world_revision == world_revision &&
+                    hold->input.linear == input.linear && hold->input.angular == input.angular;
+  // The way ahead opened (the limiting obstacle passed or turned away from): no longer the
+  // situation in which the scale fell.
+  const bool opened = same && decision.free_distance_m > hold->free_distance_m + kHoldHysteresisM;
+  if (same && !opened && decision.scale > hold->scale) {
+    // The base slowing down makes a larger scale safe again; taking it would start the base
+    // again toward what stopped it: stop-and-go.
+    const double held = hold->scale;
+    decision.reason += "; held at " + core::formatNumber(held) + " (from " +
+                       core::formatNumber(decision.scale) +
+                       "): input, world and the free way ahead are as when the scale fell, so "
+                       "it does not rise again";
+    decision.scale = held;
+    decision.output = scaledCommand(input, held);
+    if (held == 0.0) {
+      decision.action = GateAction::Stop;
+    } else if (decision.action == GateAction::Pass) {
+      decision.action = GateAction::Slow;
+    }
+  }
+  // The free way ahead is remembered at its shortest while the situation lasts.
+  const double free = same && !opened ? std::min(hold->free_distance_m, decision.free_distance_m)
+                                      : decision.free_distance_m;
+  return GateHold{input, decision.scale, world_revision, free};
+}
+
+}  // namespace
+
+GateDecision judgeOnScene(const VelocityCommand& command, const core::Scene& placed,
+                          const std::vector<PlacedMotion>& moving, const PlanarPose& robot,
+                          const core::AllowedPairs& allowed, const GateConfig& config,
+                          const GateMemory& memory, std::optional<GateHold>* hold,
+                          const core::IndexedObstacles* standing) {
+  GateDecision decision =
+      gateOnScene(command, placed, moving, robot, allowed, config, memory.base, standing);
+  std::optional<GateHold> next =
+      holdScale(decision, memory.hold, moving, memory.world_revision, config);
+  if (hold) *hold = std::move(next);
+  return decision;
+}
+
 VelocityGate::VelocityGate(GateConfig config) : config_(std::move(config)) {}
 
 GateDecision VelocityGate::record(GateDecision decision) {
@@ -191,6 +253,7 @@ PlanarPose planarPose(const Eigen::Isometry3d& pose) {
 }
 
 GateDecision VelocityGate::decide(const VelocityCommand& command, const GateView& view) {
+  last_memory_.reset();
   const CheckOutcome& outcome = *view.outcome;
   if (!outcome.error.empty()) {
     return record(
@@ -226,61 +289,15 @@ GateDecision VelocityGate::decide(const VelocityCommand& command, const GateView
   }
   // The robot frame's pose in the fixed frame's plane (its heading from its x axis).
   const PlanarPose planar = planarPose(robot.fixed_from_frame);
+  last_memory_ = GateMemory{baseAt(view.freshness.reference_s), hold_, view.world_revision};
   GateDecision decision =
-      gateOnScene(command, outcome.placed, view.obstacle_motions, planar, *view.allowed, config_,
-                  baseAt(view.freshness.reference_s), outcome.standing.get());
-  holdScale(decision, view);
+      judgeOnScene(command, outcome.placed, view.obstacle_motions, planar, *view.allowed, config_,
+                   *last_memory_, &hold_, outcome.standing.get());
   if (!missing.empty()) {
     decision.reason +=
         " (incomplete data, passed by on_incomplete: pass: " + joinText(missing, "; ") + ")";
   }
   return record(std::move(decision));
-}
-
-void VelocityGate::holdScale(GateDecision& decision, const GateView& view) {
-  const bool judged = decision.action == GateAction::Pass || decision.action == GateAction::Slow ||
-                      decision.action == GateAction::Stop || decision.action == GateAction::Escape;
-  // Only the braking rule makes a larger scale safe again as the base slows down; the ideal
-  // base's rule does not (its answers stay as they were).
-  if (!judged || config_.base.ideal()) {
-    last_judged_.reset();
-    return;
-  }
-  bool world_moves = false;
-  for (const PlacedMotion& placed : view.obstacle_motions) {
-    const core::Motion& m = placed.motion;
-    world_moves |= m.velocity.x() != 0.0 || m.velocity.y() != 0.0 || m.angular_velocity != 0.0;
-  }
-  const VelocityCommand& input = decision.input;
-  const bool same = last_judged_ && !world_moves &&
-                    last_judged_->world_revision == view.world_revision &&
-                    last_judged_->input.linear == input.linear &&
-                    last_judged_->input.angular == input.angular;
-  // The way ahead opened (the limiting obstacle passed or turned away from): no longer the
-  // situation in which the scale fell.
-  const bool opened =
-      same && decision.free_distance_m > last_judged_->free_distance_m + kHoldHysteresisM;
-  if (same && !opened && decision.scale > last_judged_->scale) {
-    // The base slowing down makes a larger scale safe again; taking it would start the base
-    // again toward what stopped it: stop-and-go.
-    const double held = last_judged_->scale;
-    decision.reason += "; held at " + core::formatNumber(held) + " (from " +
-                       core::formatNumber(decision.scale) +
-                       "): input, world and the free way ahead are as when the scale fell, so "
-                       "it does not rise again";
-    decision.scale = held;
-    decision.output = scaledCommand(input, held);
-    if (held == 0.0) {
-      decision.action = GateAction::Stop;
-    } else if (decision.action == GateAction::Pass) {
-      decision.action = GateAction::Slow;
-    }
-  }
-  // The free way ahead is remembered at its shortest while the situation lasts.
-  const double free = same && !opened
-                          ? std::min(last_judged_->free_distance_m, decision.free_distance_m)
-                          : decision.free_distance_m;
-  last_judged_ = Judged{input, decision.scale, view.world_revision, free};
 }
 
 void VelocityGate::measuredVelocity(const VelocityCommand& twist, double stamp_s) {

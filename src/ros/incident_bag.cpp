@@ -1,13 +1,19 @@
 #include "ellipse_collision/ros/incident_bag.h"
 
 #include <rosbag/bag.h>
+#include <rosbag/view.h>
 #include <std_msgs/String.h>
 
+#include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <iomanip>
+#include <map>
+#include <memory>
 #include <sstream>
 #include <stdexcept>
 
+#include "ellipse_collision/core/number_format.h"
 #include "ellipse_collision/ros/conversions.h"
 
 namespace ellipse_collision {
@@ -87,13 +93,30 @@ RecordedDecision toMsg(const app::RecordedDecision& recorded, const std::string&
     msg.frame_names.push_back(name);
     msg.frame_ages.push_back(age);
   }
+  if (const auto& memory = recorded.memory) {
+    msg.judged_by_rules = true;
+    const core::Twist& v = memory->base.velocity;
+    msg.base_velocity.linear.x = v.vx;
+    msg.base_velocity.linear.y = v.vy;
+    msg.base_velocity.angular.z = v.wz;
+    msg.command_period = memory->base.command_period;
+    msg.world_revision = memory->world_revision;
+    if (const auto& hold = memory->hold) {
+      msg.hold_active = true;
+      msg.hold_input = toMsg(hold->input);
+      msg.hold_scale = hold->scale;
+      msg.hold_world_revision = hold->world_revision;
+      msg.hold_free_distance = hold->free_distance_m;
+    }
+  }
   return msg;
 }
 
 std::string incidentSettingsYaml(const app::Incident& incident, const app::GateConfig& gate,
                                  const app::CheckSettings& check) {
   std::ostringstream yaml;
-  yaml << "trigger: " << quoted(incident.trigger) << "\n"
+  yaml << "format: " << kIncidentBagFormat << "\n"
+       << "trigger: " << quoted(incident.trigger) << "\n"
        << "trigger_time: " << exact(incident.trigger_s) << "\n"
        << "fixed_frame: " << quoted(check.fixed_frame) << "\n"
        << "padding: " << exact(check.global_padding_m) << "\n"
@@ -145,6 +168,271 @@ void writeIncidentBag(const std::string& path, const app::Incident& incident,
     std::remove(path.c_str());
     throw std::runtime_error(error.what());
   }
+}
+
+namespace {
+
+/// The `key: value` lines of the settings YAML as incidentSettingsYaml() writes them, the keys of
+/// the `gate:` block as "gate/horizon". Not a YAML parser: the format is this file's own.
+std::map<std::string, std::string> settingsLines(const std::string& yaml) {
+  std::map<std::string, std::string> values;
+  std::istringstream lines(yaml);
+  std::string line;
+  std::string block;
+  while (std::getline(lines, line)) {
+    const std::size_t colon = line.find(':');
+    if (line.empty() || colon == std::string::npos) continue;
+    const bool indented = line.rfind("  ", 0) == 0;
+    const std::size_t start = line.find_first_not_of(' ');
+    const std::string key = line.substr(start, colon - start);
+    std::string value = colon + 1 < line.size() ? line.substr(colon + 1) : "";
+    value.erase(0, value.find_first_not_of(' '));
+    if (!indented && value.empty()) {
+      block = key + "/";
+      continue;
+    }
+    values[(indented ? block : std::string()) + key] = value;
+  }
+  return values;
+}
+
+/// The single-quoted YAML strings in `text`, in order ('' is a quote).
+std::vector<std::string> quotedStrings(const std::string& text) {
+  std::vector<std::string> strings;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] != '\'') continue;
+    std::string value;
+    for (++i; i < text.size(); ++i) {
+      if (text[i] == '\'' && i + 1 < text.size() && text[i + 1] == '\'') {
+        value += '\'';
+        ++i;
+      } else if (text[i] == '\'') {
+        break;
+      } else {
+        value += text[i];
+      }
+    }
+    strings.push_back(value);
+  }
+  return strings;
+}
+
+class SettingsReader {
+ public:
+  explicit SettingsReader(const std::string& yaml) : values_(settingsLines(yaml)) {}
+
+  const std::string& error() const { return error_; }
+  bool has(const std::string& key) const { return values_.count(key) != 0; }
+
+  double number(const std::string& key) {
+    const std::string* text = raw(key);
+    if (!text) return 0.0;
+    errno = 0;
+    char* end = nullptr;
+    const double value = std::strtod(text->c_str(), &end);
+    if (text->empty() || *end != '\0' || errno == ERANGE) fail(key, *text, "a number");
+    return value;
+  }
+  bool flag(const std::string& key) {
+    const std::string* text = raw(key);
+    if (!text) return false;
+    if (*text != "true" && *text != "false") fail(key, *text, "true or false");
+    return *text == "true";
+  }
+  std::string text(const std::string& key) {
+    const std::string* value = raw(key);
+    if (!value) return "";
+    const std::vector<std::string> strings = quotedStrings(*value);
+    if (strings.size() != 1) fail(key, *value, "a quoted string");
+    return strings.empty() ? "" : strings[0];
+  }
+  const std::string* raw(const std::string& key) {
+    const auto found = values_.find(key);
+    if (found != values_.end()) return &found->second;
+    if (error_.empty()) error_ = "settings: no '" + key + "'";
+    return nullptr;
+  }
+  void fail(const std::string& key, const std::string& value, const std::string& expected) {
+    if (error_.empty()) error_ = "settings: " + key + " = " + value + ": expected " + expected;
+  }
+
+ private:
+  std::map<std::string, std::string> values_;
+  std::string error_;
+};
+
+}  // namespace
+
+std::string parseIncidentSettingsYaml(const std::string& yaml, app::ReplaySettings* settings) {
+  SettingsReader in(yaml);
+  if (!in.has("format")) {
+    return "settings: no 'format': the bag was written before replay was possible (format 1); "
+           "it holds no base velocity or hold state to judge its decisions again with";
+  }
+  const double format = in.number("format");
+  if (in.error().empty() && format != kIncidentBagFormat) {
+    return "settings: format = " + core::formatNumber(format) + ": this version replays format " +
+           std::to_string(kIncidentBagFormat);
+  }
+  app::GateConfig& gate = settings->gate;
+  gate.enabled = in.flag("gate/enabled");
+  gate.robot_frame = in.text("gate/robot_frame");
+  gate.timing.horizon = in.number("gate/horizon");
+  gate.timing.time_before_collision = in.number("gate/time_before_collision");
+  gate.timing.stop_time = in.number("gate/stop_time");
+  gate.timing.margin = in.number("gate/margin");
+  gate.timing.resolution = in.number("gate/resolution");
+  gate.cmd_vel_timeout_s = in.number("gate/cmd_vel_timeout");
+  gate.max_linear_speed = in.number("gate/max_linear_speed");
+  gate.max_angular_speed = in.number("gate/max_angular_speed");
+  gate.base.reaction_time = in.number("gate/reaction_time");
+  gate.base.linear_deceleration = in.number("gate/max_linear_deceleration");
+  gate.base.angular_deceleration = in.number("gate/max_angular_deceleration");
+  gate.odom_topic = in.text("gate/odom_topic");
+  if (const std::string* policy = in.raw("gate/on_incomplete")) {
+    if (const auto invalid = app::parseOnIncomplete(*policy, &gate.on_incomplete)) {
+      return app::describeFieldError("settings", *invalid);
+    }
+  }
+  const std::string* pairs = in.raw("allowed_pairs");
+  if (!in.error().empty()) return in.error();
+  const std::vector<std::string> names = quotedStrings(*pairs);
+  if (names.size() % 2 != 0) {
+    return "settings: allowed_pairs = " + *pairs + ": expected a list of pairs of names";
+  }
+  for (std::size_t i = 0; i < names.size(); i += 2) settings->allowed.add(names[i], names[i + 1]);
+  if (const auto invalid = app::findInvalidGateSetting(gate)) {
+    return app::describeFieldError("settings", *invalid);
+  }
+  return "";
+}
+
+namespace {
+
+core::NamedEllipse placedEllipse(const Ellipse& msg, core::EllipseRole role) {
+  core::Ellipse e;
+  e.center = Eigen::Vector2d(msg.x, msg.y);
+  e.angle = msg.angle;
+  e.radius_x = msg.radius_x;
+  e.radius_y = msg.radius_y;
+  return {msg.name, role, e};
+}
+
+/// The decision `msg` (number `index` of the bag) with the obstacles of its set (`last`, read
+/// from an earlier decision unless it carries them); the error naming the field, or "".
+std::string decisionFromMsg(const RecordedDecision& msg, std::size_t index,
+                            std::shared_ptr<const app::ObstacleSnapshot>* last,
+                            app::RecordedDecision* recorded) {
+  const std::string where = "decisions[" + std::to_string(index) + "].";
+  recorded->stamp_s = msg.header.stamp.toSec();
+  const GateState& state = msg.decision;
+  app::GateDecision& d = recorded->decision;
+  std::vector<core::GateAction> action;
+  if (app::parseIncidentActions({state.action}, &action)) {
+    return where + "decision.action = '" + state.action + "': expected a gate action";
+  }
+  d.action = action.front();
+  d.scale = state.scale;
+  d.input = fromMsg(state.input);
+  d.output = fromMsg(state.output);
+  d.contact_predicted = state.contact_predicted;
+  d.time_to_contact_s = state.time_to_contact;
+  d.link = state.link;
+  d.obstacle = state.obstacle;
+  d.contact_point = Eigen::Vector2d(state.contact_point.x, state.contact_point.y);
+  d.braking_distance_m = state.braking_distance;
+  d.free_distance_m = state.free_distance;
+  d.unavoidable = state.unavoidable;
+  d.impact_speed = state.impact_speed;
+  d.reason = state.reason;
+  recorded->judged_scene = msg.judged_scene;
+  recorded->complete = msg.complete;
+  recorded->robot.position = Eigen::Vector2d(msg.robot.x, msg.robot.y);
+  recorded->robot.yaw = msg.robot.theta;
+  for (const Ellipse& link : msg.links.ellipses) {
+    recorded->links.push_back(placedEllipse(link, core::EllipseRole::Link));
+  }
+  if (msg.obstacles_changed) {
+    auto snapshot = std::make_shared<app::ObstacleSnapshot>();
+    snapshot->id = msg.obstacle_set;
+    for (const Ellipse& obstacle : msg.obstacles.ellipses) {
+      snapshot->obstacles.push_back(placedEllipse(obstacle, core::EllipseRole::Obstacle));
+    }
+    *last = std::move(snapshot);
+  } else if (msg.obstacle_set != (*last)->id) {
+    return where + "obstacle_set = " + std::to_string(msg.obstacle_set) +
+           ": expected the set of an earlier decision (" + std::to_string((*last)->id) +
+           ") or obstacles_changed";
+  }
+  recorded->obstacles = *last;
+  const std::size_t moving = msg.moving_obstacles.size();
+  if (msg.moving_vx.size() != moving || msg.moving_vy.size() != moving ||
+      msg.moving_angular_velocity.size() != moving) {
+    return where + "moving_vx, moving_vy, moving_angular_velocity: expected " +
+           std::to_string(moving) + " each, as moving_obstacles";
+  }
+  for (std::size_t i = 0; i < moving; ++i) {
+    if (msg.moving_obstacles[i] >= (*last)->obstacles.size()) {
+      return where + "moving_obstacles[" + std::to_string(i) +
+             "] = " + std::to_string(msg.moving_obstacles[i]) + ": expected an index below " +
+             std::to_string((*last)->obstacles.size()) + " (the set's obstacles)";
+    }
+    core::Motion motion;
+    motion.velocity = Eigen::Vector2d(msg.moving_vx[i], msg.moving_vy[i]);
+    motion.angular_velocity = msg.moving_angular_velocity[i];
+    recorded->motions.push_back({msg.moving_obstacles[i], motion});
+  }
+  if (msg.judged_by_rules) {
+    app::GateMemory memory;
+    memory.base.velocity = {msg.base_velocity.linear.x, msg.base_velocity.linear.y,
+                            msg.base_velocity.angular.z};
+    memory.base.command_period = msg.command_period;
+    memory.world_revision = msg.world_revision;
+    if (msg.hold_active) {
+      memory.hold = app::GateHold{fromMsg(msg.hold_input), msg.hold_scale, msg.hold_world_revision,
+                                  msg.hold_free_distance};
+    }
+    recorded->memory = memory;
+  }
+  return "";
+}
+
+}  // namespace
+
+std::string readIncidentBag(const std::string& path, ReplayInput* input) {
+  try {
+    rosbag::Bag bag(path, rosbag::bagmode::Read);
+    bool have_settings = false;
+    for (const rosbag::MessageInstance& m : rosbag::View(bag, rosbag::TopicQuery("settings"))) {
+      const auto settings = m.instantiate<std_msgs::String>();
+      if (!settings) return path + ": settings is a " + m.getDataType() + ", not std_msgs/String";
+      const std::string error = parseIncidentSettingsYaml(settings->data, &input->settings);
+      if (!error.empty()) return path + ": " + error;
+      have_settings = true;
+      break;
+    }
+    if (!have_settings) return path + ": no settings topic: not an incident bag";
+    const std::string md5 = ros::message_traits::md5sum<RecordedDecision>();
+    auto last = std::make_shared<const app::ObstacleSnapshot>();
+    std::size_t index = 0;
+    for (const rosbag::MessageInstance& m : rosbag::View(bag, rosbag::TopicQuery("decisions"))) {
+      if (m.getDataType() != ros::message_traits::datatype<RecordedDecision>() ||
+          m.getMD5Sum() != md5) {
+        return path + ": decisions are " + m.getDataType() + " (md5 " + m.getMD5Sum() +
+               "), not the " + ros::message_traits::datatype<RecordedDecision>() + " (md5 " + md5 +
+               ") this version replays: the bag is of another format";
+      }
+      const auto msg = m.instantiate<RecordedDecision>();
+      app::RecordedDecision recorded;
+      const std::string error = decisionFromMsg(*msg, index++, &last, &recorded);
+      if (!error.empty()) return path + ": " + error;
+      input->decisions.push_back(std::move(recorded));
+    }
+    bag.close();
+  } catch (const std::exception& error) {
+    return path + ": " + error.what();
+  }
+  return "";
 }
 
 }  // namespace ellipse_collision

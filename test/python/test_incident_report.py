@@ -3,7 +3,8 @@
 format (doc/incidents.md): the page names the action and the limiting pair and lists every
 decision; the scene figure has the limiting link, the limiting obstacle and another obstacle drawn
 in their colours where the bag puts them, and nothing where it has nothing; a bag of plain
-~gate_state messages gives a page without a scene.
+~gate_state messages gives a page without a scene. --replay reproduces the bags the node wrote
+(test/incidents/), names a changed decision's field and refuses bags of an older format.
 
 usage: test_incident_report.py [--gtest_output=xml:FILE]
 (run by `catkin_make run_tests` after `source devel/setup.bash`, see cmake/test.cmake)
@@ -11,6 +12,7 @@ usage: test_incident_report.py [--gtest_output=xml:FILE]
 import importlib.machinery
 import importlib.util
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -152,6 +154,88 @@ class IncidentReport(unittest.TestCase):
                              timeout=120)
         self.assertEqual(run.returncode, 1)
         self.assertIn("holds no gate decisions", run.stderr)
+
+
+COMMITTED = os.path.join(os.path.dirname(os.path.realpath(__file__)), "..", "incidents")
+SUMMARY = re.compile(r"^replay: (\d+) of (\d+) decisions reproduced", re.MULTILINE)
+
+
+def replay(bag):
+    return subprocess.run([sys.executable, SCRIPT, "--replay", bag], capture_output=True,
+                          text=True, timeout=120)
+
+
+class Replay(unittest.TestCase):
+    """--replay: the bags the node wrote (test/incidents/) reproduce every decision its rules
+    judged; a tampered one is named; bags of an older or another format are refused."""
+
+    def setUp(self):
+        self.directory = tempfile.mkdtemp(prefix="incident_replay_test_")
+        self.bags = sorted(os.path.join(COMMITTED, name) for name in os.listdir(COMMITTED)
+                           if name.endswith(".bag"))
+
+    def tearDown(self):
+        shutil.rmtree(self.directory, ignore_errors=True)
+
+    def test_the_committed_bags_are_reproduced(self):
+        self.assertGreaterEqual(len(self.bags), 2)
+        for bag in self.bags:
+            run = replay(bag)
+            self.assertEqual(run.returncode, 0, bag + "\n" + run.stdout + run.stderr)
+            found = SUMMARY.search(run.stdout)
+            self.assertIsNotNone(found, run.stdout)
+            self.assertEqual(found.group(1), found.group(2))
+            self.assertGreater(int(found.group(2)), 5, bag)
+
+    def copy_with(self, source, change):
+        """`source` rewritten to a bag of its own, each decision message passed through
+        change(index, msg)."""
+        path = os.path.join(self.directory, "changed.bag")
+        with rosbag.Bag(source) as bag_in, rosbag.Bag(path, "w") as bag_out:
+            index = 0
+            for topic, msg, stamp in bag_in.read_messages():
+                if topic == "decisions":
+                    msg = change(index, msg)
+                    index += 1
+                bag_out.write(topic, msg, stamp)
+        return path
+
+    def test_a_changed_decision_is_named_with_both_values(self):
+        def change(index, msg):
+            if msg.judged_by_rules and msg.decision.action == "STOP" and not changed:
+                changed.append((index, msg.decision.scale))
+                msg.decision.scale = 0.25
+            return msg
+
+        changed = []
+        run = replay(self.copy_with(self.bags[0], change))
+        self.assertEqual(changed[0][1], 0.0)
+        self.assertEqual(run.returncode, 1, run.stdout + run.stderr)
+        lines = run.stdout.splitlines()
+        self.assertEqual(len(lines), 2, run.stdout)
+        self.assertRegex(lines[0], r"^decision %d at [0-9.]+ s: scale recorded 0.25, replayed 0$"
+                         % changed[0][0])
+        found = SUMMARY.search(run.stdout)
+        self.assertEqual(int(found.group(1)), int(found.group(2)) - 1)
+
+    def test_a_bag_of_the_older_format_is_refused(self):
+        # Written as the node wrote bags before the replay's fields: no `format` in settings.
+        old = os.path.join(self.directory, "old.bag")
+        with rosbag.Bag(old, "w") as bag:
+            bag.write("settings", String(data="trigger: 'STOP'\ntrigger_time: 10.0\n"),
+                      rospy.Time.from_sec(9.8))
+            msg = decision(9.8, "STOP", True, 1.0)
+            bag.write("decisions", msg, msg.header.stamp)
+        run = replay(old)
+        self.assertEqual(run.returncode, 2)
+        self.assertIn("no 'format': the bag was written before replay was possible", run.stderr)
+        self.assertNotIn("reproduced", run.stdout)
+
+    def test_decisions_of_another_type_are_refused(self):
+        run = replay(self.copy_with(self.bags[0], lambda index, msg: String(data="decision")))
+        self.assertEqual(run.returncode, 2)
+        self.assertIn("decisions are std_msgs/String", run.stderr)
+        self.assertIn("the bag is of another format", run.stderr)
 
 
 if __name__ == "__main__":

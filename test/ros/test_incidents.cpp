@@ -1,6 +1,7 @@
 // The incident recorder through the real node (incidents.test): a provoked STOP is written to a
-// bag under incident/directory with the decisions around it and what they judged;
-// ~save_incident writes one; max_files is kept; an unwritable directory warns and gating goes on.
+// bag under incident/directory with the decisions around it and what they judged, and its replay
+// reproduces every decision (braking on); ~save_incident writes one; max_files is kept; an
+// unwritable directory warns and gating goes on.
 #include <diagnostic_msgs/DiagnosticArray.h>
 #include <geometry_msgs/Twist.h>
 #include <gtest/gtest.h>
@@ -12,6 +13,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <iostream>
 #include <mutex>
 #include <optional>
 #include <string>
@@ -117,6 +119,11 @@ TEST_F(Incidents, StopIsWrittenWithWhatTheGateJudged) {
     ASSERT_TRUE(command(0, 0.0));
     ros::WallDuration(0.05).sleep();
   }
+  // Creeping toward it passes: the base's velocity is then not zero when the stop comes.
+  for (int i = 0; i < 3; ++i) {
+    ASSERT_TRUE(command(0, 0.05));
+    ros::WallDuration(0.05).sleep();
+  }
   for (int i = 0; i < 3; ++i) {
     ASSERT_TRUE(command(0, 1.0));
     ros::WallDuration(0.05).sleep();
@@ -187,6 +194,26 @@ TEST_F(Incidents, StopIsWrittenWithWhatTheGateJudged) {
   EXPECT_EQ(stop->source_names[0], "obstacles");
   EXPECT_EQ(stop->header.frame_id, "base_link");
   bag.close();
+
+  // The replay judges every decision the gate's rules judged again from the bag alone, with the
+  // braking rule on and the base moving: all reproduced bit for bit.
+  EXPECT_NE(settings.find("max_linear_deceleration: 1.5"), std::string::npos) << settings;
+  std::size_t by_rules = 0;
+  bool from_moving_base = false;
+  for (const RecordedDecision& d : decisions) {
+    by_rules += d.judged_by_rules;
+    from_moving_base |= d.judged_by_rules && d.base_velocity.linear.x > 0.0;
+  }
+  EXPECT_TRUE(stop->judged_by_rules);
+  EXPECT_TRUE(from_moving_base);
+  const test::CommandRun replay = test::runCommand(
+      "rosrun ellipse_collision incident_report --replay " + directory_ + "/" + bags[0], 30);
+  EXPECT_EQ(replay.exit_status, 0) << replay.output;
+  std::cout << replay.output;  // the summary in the test's log
+  const std::string all = std::to_string(by_rules);
+  EXPECT_NE(replay.output.find("replay: " + all + " of " + all + " decisions reproduced"),
+            std::string::npos)
+      << replay.output;
 
   // ~save_incident writes one at once; with max_files 2 the oldest goes.
   std_srvs::Trigger::Response answer = saveIncident(kNode);

@@ -76,6 +76,9 @@ struct RecordedDecision {
   /// message or transform (-1 = none yet; 0 for a timeless transform).
   std::vector<std::pair<std::string, double>> source_ages;
   std::vector<std::pair<std::string, double>> frame_ages;
+  /// What the gate's rules took besides the scene (GateMemory); nothing when the decision was
+  /// made before them (a screened command, TIMEOUT, a failed check, INCOMPLETE).
+  std::optional<GateMemory> memory;
 };
 
 /// What the recorder sees of a decision judged on a scene (the gate's GateView).
@@ -84,6 +87,7 @@ struct DecisionScene {
   PlanarPose robot;
   const std::vector<PlacedMotion>* motions{nullptr};
   std::vector<std::pair<std::string, double>> source_ages;
+  const GateMemory* memory{nullptr};  ///< when the gate's rules judged it
 };
 
 /// The decisions around one trigger: oldest first.

@@ -87,6 +87,35 @@ GateDecision gateOnScene(const VelocityCommand& command, const core::Scene& plac
                          const core::BaseState& base = {},
                          const core::IndexedObstacles* standing = nullptr);
 
+/// The no-stop-and-go rule's memory (braking rule on): the last decision by the rules (PASS,
+/// SLOW, STOP, ESCAPE), its input, scale and world, and the shortest free way ahead since [m].
+struct GateHold {
+  VelocityCommand input;
+  double scale{1.0};
+  std::uint64_t world_revision{0};
+  double free_distance_m{0.0};
+};
+
+/// What the gate's rules take besides the placed scene and the settings: the base now (its
+/// velocity and command period; its dynamics are the settings'), the hold before the decision
+/// and the stored obstacles' revision. Recorded with each decision, so that it can be judged
+/// again bit for bit (app::replayDecision()).
+struct GateMemory {
+  core::BaseState base;
+  std::optional<GateHold> hold;
+  std::uint64_t world_revision{0};
+};
+
+/// The gate's rules on a placed scene: gateOnScene() with `memory.base`, then the no-stop-and-go
+/// rule (the scale does not rise while input, world and the free way ahead stay as when it fell);
+/// `hold`, when given, receives the memory the next decision starts from. The one decision the
+/// node and the replay both run.
+GateDecision judgeOnScene(const VelocityCommand& command, const core::Scene& placed,
+                          const std::vector<PlacedMotion>& moving, const PlanarPose& robot,
+                          const core::AllowedPairs& allowed, const GateConfig& config,
+                          const GateMemory& memory, std::optional<GateHold>* hold = nullptr,
+                          const core::IndexedObstacles* standing = nullptr);
+
 /// What the gate judges a command on, gathered by the monitor from the full check it ran.
 struct GateView {
   const CheckOutcome* outcome{nullptr};  ///< the full check (placed scene, completeness)
@@ -138,31 +167,23 @@ class VelocityGate {
   /// 1.25 cmd_vel_timeout, or 0.1 s without one).
   core::BaseState baseAt(double now_s) const;
 
+  /// What the rules took for the last decide() (the incident recorder keeps it); nothing when
+  /// that decision was made before them (a failed check, INCOMPLETE).
+  const std::optional<GateMemory>& lastMemory() const { return last_memory_; }
+
   /// The gate's values for /diagnostics ("gate", "gate reason", "gate stops", "gate slow-downs").
   std::vector<std::pair<std::string, std::string>> healthValues() const;
 
  private:
   GateDecision record(GateDecision decision);
 
-  /// The no-stop-and-go rule (braking rule on): while the input and the world stay the same and
-  /// the free way ahead has not grown by more than kHoldHysteresisM, the scale never rises after
-  /// it has fallen.
-  static constexpr double kHoldHysteresisM = 0.1;
-  void holdScale(GateDecision& decision, const GateView& view);
-
   GateConfig config_;
   std::deque<double> intervals_;  ///< between the last commands [s]
   std::optional<double> last_command_at_;
   VelocityCommand last_output_;                                 ///< what the base was last told
   std::optional<std::pair<VelocityCommand, double>> measured_;  ///< odometry and its stamp
-  /// The last decision by the rules (PASS, SLOW, STOP, ESCAPE): its input, scale and world.
-  struct Judged {
-    VelocityCommand input;
-    double scale{1.0};
-    std::uint64_t world_revision{0};
-    double free_distance_m{0.0};  ///< the shortest free way ahead since [m]
-  };
-  std::optional<Judged> last_judged_;
+  std::optional<GateHold> hold_;           ///< the no-stop-and-go rule's memory (judgeOnScene())
+  std::optional<GateMemory> last_memory_;  ///< what the rules took for the last decide()
   bool heard_{false};           ///< a command came, or the watchdog started counting
   double last_command_s_{0.0};  ///< when the last command came (or the watchdog started)
   bool timeout_sent_{false};    ///< the watchdog's zero went out since the last command
