@@ -1,5 +1,7 @@
 #include "ellipse_collision/ros/conversions.h"
 
+#include "ellipse_collision/app/incident_recorder.h"
+
 namespace ellipse_collision {
 
 app::EllipseSpec fromMsg(const Ellipse& msg) {
@@ -225,6 +227,26 @@ GateState toMsg(const app::GateDecision& decision) {
   msg.impact_speed = decision.impact_speed;
   msg.reason = decision.reason;
   return msg;
+}
+
+bool fromMsg(const GateState& msg, app::GateDecision* decision) {
+  std::vector<core::GateAction> action;
+  if (app::parseIncidentActions({msg.action}, &action)) return false;
+  decision->action = action.front();
+  decision->scale = msg.scale;
+  decision->input = fromMsg(msg.input);
+  decision->output = fromMsg(msg.output);
+  decision->contact_predicted = msg.contact_predicted;
+  decision->time_to_contact_s = msg.time_to_contact;
+  decision->link = msg.link;
+  decision->obstacle = msg.obstacle;
+  decision->contact_point = Eigen::Vector2d(msg.contact_point.x, msg.contact_point.y);
+  decision->braking_distance_m = msg.braking_distance;
+  decision->free_distance_m = msg.free_distance;
+  decision->unavoidable = msg.unavoidable;
+  decision->impact_speed = msg.impact_speed;
+  decision->reason = msg.reason;
+  return true;
 }
 
 }  // namespace ellipse_collision

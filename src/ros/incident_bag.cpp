@@ -325,26 +325,9 @@ std::string decisionFromMsg(const RecordedDecision& msg, std::size_t index,
                             app::RecordedDecision* recorded) {
   const std::string where = "decisions[" + std::to_string(index) + "].";
   recorded->stamp_s = msg.header.stamp.toSec();
-  const GateState& state = msg.decision;
-  app::GateDecision& d = recorded->decision;
-  std::vector<core::GateAction> action;
-  if (app::parseIncidentActions({state.action}, &action)) {
-    return where + "decision.action = '" + state.action + "': expected a gate action";
+  if (!fromMsg(msg.decision, &recorded->decision)) {
+    return where + "decision.action = '" + msg.decision.action + "': expected a gate action";
   }
-  d.action = action.front();
-  d.scale = state.scale;
-  d.input = fromMsg(state.input);
-  d.output = fromMsg(state.output);
-  d.contact_predicted = state.contact_predicted;
-  d.time_to_contact_s = state.time_to_contact;
-  d.link = state.link;
-  d.obstacle = state.obstacle;
-  d.contact_point = Eigen::Vector2d(state.contact_point.x, state.contact_point.y);
-  d.braking_distance_m = state.braking_distance;
-  d.free_distance_m = state.free_distance;
-  d.unavoidable = state.unavoidable;
-  d.impact_speed = state.impact_speed;
-  d.reason = state.reason;
   recorded->judged_scene = msg.judged_scene;
   recorded->complete = msg.complete;
   recorded->robot.position = Eigen::Vector2d(msg.robot.x, msg.robot.y);

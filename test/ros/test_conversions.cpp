@@ -192,6 +192,51 @@ TEST(Conversions, NearPairSurvivesTheRoundTripThroughTheClearanceMessage) {
   EXPECT_EQ(msgs[1].point_b.y, 4.0);
 }
 
+// The incident replay reads decisions back from ~gate_state's message: every field returns as it
+// was written, and an action the gate does not have is refused.
+TEST(Conversions, AGateDecisionSurvivesTheRoundTripThroughGateState) {
+  app::GateDecision decision;
+  decision.action = core::GateAction::Slow;
+  decision.scale = 0.4375;
+  decision.input.linear = Eigen::Vector3d(1.5, -0.25, 0.0);
+  decision.input.angular = Eigen::Vector3d(0.0, 0.0, 0.75);
+  decision.output.linear = decision.input.linear * decision.scale;
+  decision.output.angular = decision.input.angular * decision.scale;
+  decision.contact_predicted = true;
+  decision.time_to_contact_s = 1.125;
+  decision.link = "base_link";
+  decision.obstacle = "front/scan_3";
+  decision.contact_point = Eigen::Vector2d(2.5, -0.125);
+  decision.braking_distance_m = 0.9;
+  decision.free_distance_m = 1.7;
+  decision.unavoidable = false;
+  decision.impact_speed = 0.0;
+  decision.reason = "slows for 'front/scan_3'";
+  app::GateDecision back;
+  ASSERT_TRUE(fromMsg(toMsg(decision), &back));
+  EXPECT_EQ(back.action, decision.action);
+  EXPECT_EQ(back.scale, decision.scale);
+  EXPECT_EQ(back.input.linear, decision.input.linear);
+  EXPECT_EQ(back.input.angular, decision.input.angular);
+  EXPECT_EQ(back.output.linear, decision.output.linear);
+  EXPECT_EQ(back.output.angular, decision.output.angular);
+  EXPECT_EQ(back.contact_predicted, decision.contact_predicted);
+  EXPECT_EQ(back.time_to_contact_s, decision.time_to_contact_s);
+  EXPECT_EQ(back.link, decision.link);
+  EXPECT_EQ(back.obstacle, decision.obstacle);
+  EXPECT_EQ(back.contact_point, decision.contact_point);
+  EXPECT_EQ(back.braking_distance_m, decision.braking_distance_m);
+  EXPECT_EQ(back.free_distance_m, decision.free_distance_m);
+  EXPECT_EQ(back.unavoidable, decision.unavoidable);
+  EXPECT_EQ(back.reason, decision.reason);
+
+  GateState unknown = toMsg(decision);
+  unknown.action = "BRAKE";
+  app::GateDecision untouched;
+  EXPECT_FALSE(fromMsg(unknown, &untouched));
+  EXPECT_EQ(untouched.scale, app::GateDecision().scale);
+}
+
 TEST(Conversions, ARangeMessageKeepsEveryFieldNonFiniteOnesIncluded) {
   sensor_msgs::Range msg;
   msg.header.frame_id = "sonar_left";

@@ -63,5 +63,8 @@ geometry_msgs::Twist toMsg(const app::VelocityCommand& command);
 
 /// The gate's decision as ~gate_state shows it (header left to the caller).
 GateState toMsg(const app::GateDecision& decision);
+/// The inverse of toMsg(GateDecision) (a time_to_contact without a predicted contact reads as
+/// written, 0); false, and `decision` unchanged, when `msg.action` names no gate action.
+bool fromMsg(const GateState& msg, app::GateDecision* decision);
 
 }  // namespace ellipse_collision
