@@ -37,6 +37,10 @@ std::optional<std::string> FleetRoster::receive(double now_s,
 std::vector<std::string> FleetRoster::dropSilent(double now_s) {
   std::vector<std::string> dropped;
   for (auto it = robots_.begin(); it != robots_.end();) {
+    // Heard "after" now: the clock jumped back (a simulation restarted). Its footprint is kept, as
+    // the node keeps what it cannot disprove, but its silence counts from now, so a robot that is
+    // not heard from again goes after one timeout instead of after the jump's length.
+    if (it->second.heard_s > now_s) it->second.heard_s = now_s;
     if (now_s - it->second.heard_s > timeout_s_) {
       dropped.push_back(it->first);
       dropped_.insert(it->first);

@@ -61,6 +61,19 @@ TEST(FleetRoster, RobotsSilentPastTheTimeoutAreDropped) {
   EXPECT_EQ(roster.healthValues(1.6)[1].second, "none");
 }
 
+// A simulation restarted: the clock went from 100 s back to 5 s. The robots heard at 100 s are
+// kept for one timeout from the jump, not until the clock reaches 101 s again.
+TEST(FleetRoster, AfterTheClockJumpsBackASilentRobotGoesAfterOneTimeout) {
+  FleetRoster roster("r1", 1.0);
+  roster.receive(100.0, {link("r2/base_link", 3.0)});
+  EXPECT_TRUE(roster.dropSilent(5.0).empty());
+  ASSERT_EQ(roster.robots(5.0).size(), 1u);
+  EXPECT_EQ(roster.robots(5.0)[0].age_s, 0.0);
+  EXPECT_TRUE(roster.dropSilent(6.0).empty());  // 1 s since the jump: kept
+  EXPECT_EQ(roster.dropSilent(6.5), std::vector<std::string>{"r2"});
+  EXPECT_TRUE(roster.obstacles().empty());
+}
+
 TEST(FleetRoster, AMessageWithABadEntryIsRefusedWholeNamingIt) {
   FleetRoster roster("r1", 1.0);
   roster.receive(0.0, {link("r2/base_link", 3.0)});

@@ -28,7 +28,8 @@ class FleetRoster {
   /// Each robot in it replaces its previous links.
   std::optional<std::string> receive(double now_s, const std::vector<EllipseSpec>& ellipses);
 
-  /// Drops the robots last heard from more than the timeout before `now_s`; their names.
+  /// Drops the robots last heard from more than the timeout before `now_s`; their names. A robot
+  /// last heard after `now_s` (the clock jumped back) counts as heard at `now_s`.
   std::vector<std::string> dropSilent(double now_s);
 
   /// Every other robot's links, robots in name order.
