@@ -370,11 +370,18 @@ GateView CollisionMonitor::gateView(const CheckOutcome& outcome, double now_s,
   const std::set<std::string>& moving = registry_.movingNames();
   if (moving.empty()) return view;
   const auto add = [&](std::size_t i) {
-    const EllipseSpec& spec = registry_.entries().at(placed.name(i)).spec;
-    const auto frame = outcome.frames.find(spec.frame_id);
-    if (frame != outcome.frames.end()) {
-      view.obstacle_motions.push_back({i, ownMotion(spec, frame->second.fixed_from_frame)});
+    const StoredEllipse& stored = registry_.entries().at(placed.name(i));
+    const auto frame = outcome.frames.find(stored.spec.frame_id);
+    if (frame == outcome.frames.end()) return;
+    // A topic obstacle was where its message put it at the message's stamp; a stamp ahead of
+    // the clock (another computer's clock) advances it by nothing.
+    double since_s = 0.0;
+    if (stored.source == EllipseSource::TopicObstacle) {
+      const double stamp_s = registry_.topicStamp(stored.topic_source);
+      if (stamp_s > 0.0 && now_s > stamp_s) since_s = now_s - stamp_s;
     }
+    view.obstacle_motions.push_back(
+        {i, ownMotion(stored.spec, frame->second.fixed_from_frame), since_s});
   };
   // A check that placed every stored ellipse placed them in the cache's order, whose moving
   // positions are kept per registry revision; otherwise every placed name is looked up.

@@ -226,7 +226,8 @@ std::string EllipseRegistry::replaceTopicObstacles(const std::vector<EllipseSpec
       trackOwnMotion(*found[i]);
     }
   }
-  if (topic_source == 0) topic_stamp_s_ = stamp_s;
+  if (topic_source >= topic_stamps_s_.size()) topic_stamps_s_.resize(topic_source + 1, 0.0);
+  topic_stamps_s_[topic_source] = stamp_s;
   ++revision_;
   topic_order.entries = std::move(found);
   topic_order.revision = revision_;
@@ -241,7 +242,7 @@ StoredObstacles EllipseRegistry::runtimeObstacles() const {
       stored.topic.push_back(named.second.spec);
     }
   }
-  stored.topic_stamp_s = topic_stamp_s_;
+  stored.topic_stamp_s = topic_stamps_s_[0];
   return stored;
 }
 
@@ -264,7 +265,7 @@ std::string EllipseRegistry::restore(const StoredObstacles& stored) {
   const std::array<std::size_t, 4> counts_before = counts_;
   const std::vector<std::size_t> topic_counts_before = topic_counts_;
   const std::set<std::string> service_names_before = service_names_;
-  const double stamp_before = topic_stamp_s_;
+  const double stamp_before = topic_stamps_s_[0];
   std::string error = addObstacles(stored.service, "service obstacles");
   if (error.empty()) error = replaceTopicObstacles(stored.topic, "topic obstacles", stored.topic_stamp_s);
   if (!error.empty()) {
@@ -272,14 +273,14 @@ std::string EllipseRegistry::restore(const StoredObstacles& stored) {
     counts_ = counts_before;
     topic_counts_ = topic_counts_before;
     service_names_ = service_names_before;
-    topic_stamp_s_ = stamp_before;
+    topic_stamps_s_[0] = stamp_before;
     ++revision_;
   }
   return error;
 }
 
 std::size_t EllipseRegistry::dropExpiredTopicObstacles(double now_s, double timeout_s) {
-  if (timeout_s <= 0.0 || now_s - topic_stamp_s_ <= timeout_s || topicCount(0) == 0) return 0;
+  if (timeout_s <= 0.0 || now_s - topic_stamps_s_[0] <= timeout_s || topicCount(0) == 0) return 0;
   std::size_t dropped = 0;
   for (auto it = entries_.begin(); it != entries_.end();) {
     if (it->second.source == EllipseSource::TopicObstacle && it->second.topic_source == 0) {

@@ -1,5 +1,6 @@
 #include "ellipse_collision/app/fleet_roster.h"
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 
@@ -9,7 +10,8 @@
 namespace ellipse_collision::app {
 
 std::optional<std::string> FleetRoster::receive(double now_s,
-                                                const std::vector<EllipseSpec>& ellipses) {
+                                                const std::vector<EllipseSpec>& ellipses,
+                                                double stamp_s) {
   std::map<std::string, std::vector<EllipseSpec>> by_robot;
   std::set<std::string> names;
   for (std::size_t i = 0; i < ellipses.size(); ++i) {
@@ -28,7 +30,7 @@ std::optional<std::string> FleetRoster::receive(double now_s,
     if (robot != own_name_) by_robot[robot].push_back(e);
   }
   for (auto& [robot, links] : by_robot) {
-    robots_[robot] = {now_s, std::move(links)};
+    robots_[robot] = {now_s, stamp_s > 0.0 ? stamp_s : now_s, std::move(links)};
     dropped_.erase(robot);
   }
   return std::nullopt;
@@ -53,10 +55,26 @@ std::vector<std::string> FleetRoster::dropSilent(double now_s) {
 }
 
 std::vector<EllipseSpec> FleetRoster::obstacles() const {
+  const double newest_s = stamp();
   std::vector<EllipseSpec> all;
-  for (const auto& [robot, kept] : robots_)
-    all.insert(all.end(), kept.links.begin(), kept.links.end());
+  for (const auto& [robot, kept] : robots_) {
+    const double since_s = newest_s - kept.stamp_s;
+    for (EllipseSpec link : kept.links) {
+      // The motion the node predicts with (a straight line, turning about its centre), over the
+      // time this robot's footprint is older than the newest.
+      link.x += link.vx * since_s;
+      link.y += link.vy * since_s;
+      link.angle += link.angular_velocity * since_s;
+      all.push_back(std::move(link));
+    }
+  }
   return all;
+}
+
+double FleetRoster::stamp() const {
+  double newest_s = 0.0;
+  for (const auto& [robot, kept] : robots_) newest_s = std::max(newest_s, kept.stamp_s);
+  return newest_s;
 }
 
 std::vector<FleetRoster::Robot> FleetRoster::robots(double now_s) const {

@@ -139,7 +139,7 @@ void IncidentRecorder::record(double now_s, const GateDecision& decision,
     if (scene->motions) {
       for (const PlacedMotion& m : *scene->motions) {
         if (m.index >= first_obstacle)
-          recorded.motions.push_back({m.index - first_obstacle, m.motion});
+          recorded.motions.push_back({m.index - first_obstacle, m.motion, m.since_s});
       }
     }
     recorded.source_ages = scene->source_ages;

@@ -101,7 +101,7 @@ GateDecision replayDecision(const RecordedDecision& recorded, const ReplaySettin
   std::vector<PlacedMotion> moving;
   moving.reserve(recorded.motions.size());
   for (const ObstacleMotion& m : recorded.motions) {
-    moving.push_back({recorded.links.size() + m.index, m.motion});
+    moving.push_back({recorded.links.size() + m.index, m.motion, m.since_s});
   }
   // The base's dynamics are the settings' (as the node's VelocityGate::baseAt() takes them).
   GateMemory memory = *recorded.memory;

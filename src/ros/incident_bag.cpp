@@ -84,6 +84,7 @@ RecordedDecision toMsg(const app::RecordedDecision& recorded, const std::string&
     msg.moving_vx.push_back(m.motion.velocity.x());
     msg.moving_vy.push_back(m.motion.velocity.y());
     msg.moving_angular_velocity.push_back(m.motion.angular_velocity);
+    msg.moving_since.push_back(m.since_s);
   }
   for (const auto& [name, age] : recorded.source_ages) {
     msg.source_names.push_back(name);
@@ -350,8 +351,8 @@ std::string decisionFromMsg(const RecordedDecision& msg, std::size_t index,
   recorded->obstacles = *last;
   const std::size_t moving = msg.moving_obstacles.size();
   if (msg.moving_vx.size() != moving || msg.moving_vy.size() != moving ||
-      msg.moving_angular_velocity.size() != moving) {
-    return where + "moving_vx, moving_vy, moving_angular_velocity: expected " +
+      msg.moving_angular_velocity.size() != moving || msg.moving_since.size() != moving) {
+    return where + "moving_vx, moving_vy, moving_angular_velocity, moving_since: expected " +
            std::to_string(moving) + " each, as moving_obstacles";
   }
   for (std::size_t i = 0; i < moving; ++i) {
@@ -363,7 +364,7 @@ std::string decisionFromMsg(const RecordedDecision& msg, std::size_t index,
     core::Motion motion;
     motion.velocity = Eigen::Vector2d(msg.moving_vx[i], msg.moving_vy[i]);
     motion.angular_velocity = msg.moving_angular_velocity[i];
-    recorded->motions.push_back({msg.moving_obstacles[i], motion});
+    recorded->motions.push_back({msg.moving_obstacles[i], motion, msg.moving_since[i]});
   }
   if (msg.judged_by_rules) {
     app::GateMemory memory;

@@ -99,13 +99,13 @@ std::vector<std::pair<std::string, std::string>> SourceSubscribers::robotsValues
 void SourceSubscribers::onRobots(std::size_t source, const EllipseArray::ConstPtr& msg) {
   app::FleetRoster& roster = *rosters_[source];
   const ros::Time now = ros::Time::now();
-  if (const auto refused = roster.receive(now.toSec(), fromMsg(*msg))) {
+  if (const auto refused = roster.receive(now.toSec(), fromMsg(*msg), msg->header.stamp.toSec())) {
     refuse(source, *refused);
     return;
   }
   // No wait for tf: every robot's footprint comes through here, many a second.
   const std::string error = monitor_.replaceSourceObstacles(
-      source, roster.obstacles(), msg->header.stamp.toSec(), now.toSec(), lookup(ros::Duration(0)));
+      source, roster.obstacles(), roster.stamp(), now.toSec(), lookup(ros::Duration(0)));
   if (!error.empty()) {
     ROS_WARN_STREAM_THROTTLE(5.0, "ellipse_collision: refused a footprint on source '"
                                       << spec(source).name
@@ -125,9 +125,10 @@ void SourceSubscribers::onRosterTimer(const ros::TimerEvent& /*event*/) {
                       << spec(source).name << "': robot '" << robot << "' silent for more than "
                       << core::formatNumber(spec(source).timeout_s) << " s, its links dropped");
     }
-    const std::string error = monitor_.replaceSourceObstacles(
-        source, rosters_[source]->obstacles(), now.toSec(), now.toSec(), lookup(ros::Duration(0)),
-        /*heard=*/false);
+    const std::string error = monitor_.replaceSourceObstacles(source, rosters_[source]->obstacles(),
+                                                              rosters_[source]->stamp(),
+                                                              now.toSec(), lookup(ros::Duration(0)),
+                                                              /*heard=*/false);
     if (!error.empty()) {
       ROS_WARN_STREAM_THROTTLE(
           5.0, "ellipse_collision: source '" << spec(source).name << "': " << error);

@@ -37,6 +37,9 @@ TEST(FleetRoster, KeepsEachOtherRobotsLatestLinksAndIgnoresItsOwn) {
   EXPECT_FALSE(roster.receive(0.2, {link("r2/base_link", 2.9, -1.0)}));
   EXPECT_EQ(names(roster.obstacles()), (std::vector<std::string>{"r2/base_link", "r3/base_link"}));
   EXPECT_EQ(roster.obstacles()[0].x, 2.9);
+  // r3's footprint (0.1 s) is advanced to r2's (0.2 s) by its velocity: both as of 0.2 s.
+  EXPECT_EQ(roster.stamp(), 0.2);
+  EXPECT_NEAR(roster.obstacles()[1].x, -2.0 + 0.5 * 0.1, 1e-15);
   const auto robots = roster.robots(0.5);
   ASSERT_EQ(robots.size(), 2u);
   EXPECT_EQ(robots[0].name, "r2");
@@ -88,6 +91,32 @@ TEST(FleetRoster, AMessageWithABadEntryIsRefusedWholeNamingIt) {
   // Nothing of these messages was taken.
   ASSERT_EQ(roster.obstacles().size(), 1u);
   EXPECT_EQ(roster.obstacles()[0].x, 3.0);
+}
+
+TEST(FleetRoster, FootprintsHeardAtDifferentTimesAreGivenAsOfTheNewestStamp) {
+  // Stamps are when the robots were where they say (their tf), not when they were heard: r2's
+  // footprint 0.3 s older than r3's has moved on by 0.3 s of its velocity and turn.
+  FleetRoster roster("r1", 1.0);
+  EllipseSpec turning = link("r2/arm", 3.0, -1.0);
+  turning.vy = 0.5;
+  turning.angular_velocity = 2.0;
+  EXPECT_FALSE(roster.receive(10.0, {turning}, 9.6));
+  EXPECT_EQ(roster.stamp(), 9.6);
+  EXPECT_EQ(roster.obstacles()[0].x, 3.0) << "alone, it is as of its own stamp";
+  EXPECT_FALSE(roster.receive(10.05, {link("r3/base_link", -2.0, 0.5)}, 9.9));
+  EXPECT_EQ(roster.stamp(), 9.9);
+  const std::vector<EllipseSpec> both = roster.obstacles();
+  ASSERT_EQ(both.size(), 2u);
+  EXPECT_NEAR(both[0].x, 3.0 - 0.3, 1e-12);
+  EXPECT_NEAR(both[0].y, 0.5 * 0.3, 1e-12);
+  EXPECT_NEAR(both[0].angle, 2.0 * 0.3, 1e-12);
+  EXPECT_EQ(both[0].vx, -1.0);
+  EXPECT_EQ(both[1].x, -2.0);
+  // An unstamped footprint counts as seen when heard.
+  EXPECT_FALSE(roster.receive(10.2, {link("r4/base_link", 1.0)}));
+  EXPECT_EQ(roster.stamp(), 10.2);
+  EXPECT_TRUE(FleetRoster("r1", 1.0).obstacles().empty());
+  EXPECT_EQ(FleetRoster("r1", 1.0).stamp(), 0.0);
 }
 
 }  // namespace

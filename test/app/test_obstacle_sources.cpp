@@ -293,9 +293,10 @@ TEST(RobotsSource, OtherRobotsKeepTheirNamesAndComeAndGoWithoutMakingAnswersInco
   forward.linear.x() = 0.5;
   EXPECT_EQ(monitor.gateCommand(forward, 5.0, frames, everyFrameAtOriginAt()).action,
             GateAction::Pass);
-  // Coming at the robot at 1 m/s: contact in 0.8 s, sooner than time_before_collision.
+  // Coming at the robot at 1 m/s, seen 0.1 s ago: contact in 0.73 s, sooner than
+  // time_before_collision.
   other.vx = -1.0;
-  ASSERT_EQ(monitor.replaceSourceObstacles(3, {other}, 1.1, 1.1, frames), "");
+  ASSERT_EQ(monitor.replaceSourceObstacles(3, {other}, 4.9, 4.9, frames), "");
   const GateDecision decision = monitor.gateCommand(forward, 5.0, frames, everyFrameAtOriginAt());
   EXPECT_NE(decision.action, GateAction::Pass) << decision.reason;
   EXPECT_NE(decision.reason.find("r2/front"), std::string::npos) << decision.reason;
@@ -306,6 +307,38 @@ TEST(RobotsSource, OtherRobotsKeepTheirNamesAndComeAndGoWithoutMakingAnswersInco
   ASSERT_EQ(monitor.replaceSourceObstacles(3, {}, 5.0, 5.0, frames, /*heard=*/false), "");
   EXPECT_FALSE(monitor.registry().contains("r2/front"));
   EXPECT_EQ(monitor.sourceFreshness().stats(5.0)[3].messages, 2u);
+}
+
+TEST(RobotsSource, AMovingFootprintIsJudgedWhereItsVelocityHasTakenItSinceItsStamp) {
+  // The gate decides for now: another robot's link seen at its message's stamp has moved on by
+  // its velocity since. A footprint 0.5 s old coming at 1 m/s from 2.313 m is judged as a fresh
+  // one from 1.813 m (slowed to keep time_before_collision), and unlike a fresh one from 2.313 m.
+  MonitorSettings settings = twoSources();
+  settings.sources = {source("robots", SourceType::Robots, "/fleet/footprints", 1.0)};
+  const TransformLookup frames = everyFrameAtOrigin();
+  VelocityCommand forward;
+  forward.linear.x() = 0.5;
+  const auto decide = [&](double x, double stamp_s, double now_s) {
+    CollisionMonitor monitor(settings, {circle("body", "base_link", 0, 0, 0.3)}, {}, {}, {});
+    app::EllipseSpec other = circle("r2/front", "map", x, 0.0, 0.3);
+    other.vx = -1.0;
+    EXPECT_EQ(monitor.replaceSourceObstacles(1, {other}, stamp_s, stamp_s, frames), "");
+    return monitor.gateCommand(forward, now_s, frames, everyFrameAtOriginAt());
+  };
+  const GateDecision old_footprint = decide(2.313, 9.5, 10.0);
+  const GateDecision fresh_nearer = decide(1.813, 10.0, 10.0);
+  const GateDecision fresh_same = decide(2.313, 10.0, 10.0);
+  EXPECT_EQ(old_footprint.action, GateAction::Slow) << old_footprint.reason;
+  EXPECT_EQ(old_footprint.action, fresh_nearer.action);
+  EXPECT_EQ(old_footprint.scale, fresh_nearer.scale);
+  EXPECT_NEAR(old_footprint.time_to_contact_s, fresh_nearer.time_to_contact_s, 1e-9);
+  // Closing at 1 + 0.5 k m/s over 1.213 m keeps 1 s for k up to 0.426: 0.42 on the grid.
+  EXPECT_NEAR(old_footprint.scale, 0.42, 1e-12);
+  EXPECT_GT(fresh_same.scale, old_footprint.scale + 0.3) << fresh_same.reason;
+  // A stamp ahead of the clock (another computer's) advances it by nothing.
+  const GateDecision ahead = decide(2.313, 10.5, 10.0);
+  EXPECT_EQ(ahead.scale, fresh_same.scale);
+  EXPECT_EQ(ahead.time_to_contact_s, fresh_same.time_to_contact_s);
 }
 
 TEST(RobotsSource, RequiredMakesItsSilenceIncomplete) {

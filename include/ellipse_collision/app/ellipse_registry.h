@@ -77,8 +77,11 @@ class EllipseRegistry {
   /// Puts back what runtimeObstacles() returned (after a restart), through the same rules as the
   /// service and the topic; "" or why it was refused (then nothing is restored).
   std::string restore(const StoredObstacles& stored);
-  /// The stamp of the current topic obstacles [s] (0 = none or unstamped).
-  double topicStamp() const { return topic_stamp_s_; }
+  /// The stamp [s] of the message that brought the topic obstacles of `topic_source` (0 = none
+  /// or unstamped): where a moving one was when it was seen.
+  double topicStamp(std::size_t topic_source = 0) const {
+    return topic_source < topic_stamps_s_.size() ? topic_stamps_s_[topic_source] : 0.0;
+  }
 
   const std::map<std::string, StoredEllipse>& entries() const { return entries_; }
   bool contains(const std::string& name) const { return entries_.count(name) != 0; }
@@ -122,7 +125,7 @@ class EllipseRegistry {
   std::set<std::string> service_names_;
   std::set<std::string> moving_names_;  ///< movingNames()
   RegistryLimits limits_;
-  double topic_stamp_s_{0.0};
+  std::vector<double> topic_stamps_s_{0.0};  ///< topicStamp() per topic_source
   std::uint64_t revision_{0};
   /// The topic obstacles' entries in the order of the last accepted message, valid while
   /// revision_ is `revision` (every other change of the entries moves revision_ on). A stream

@@ -22,18 +22,23 @@ class FleetRoster {
   FleetRoster(std::string own_name, double timeout_s)
       : own_name_(std::move(own_name)), timeout_s_(timeout_s) {}
 
-  /// A footprint message received at `now_s` [s]: every ellipse must be named "<robot>/<link>",
-  /// each name once, and pass findInvalidField(); otherwise the whole message is refused, naming
-  /// the entry.
+  /// A footprint message received at `now_s` [s], stamped `stamp_s` [s] (0 = unstamped: taken
+  /// as seen at `now_s`): every ellipse must be named "<robot>/<link>", each name once, and pass
+  /// findInvalidField(); otherwise the whole message is refused, naming the entry.
   /// Each robot in it replaces its previous links.
-  std::optional<std::string> receive(double now_s, const std::vector<EllipseSpec>& ellipses);
+  std::optional<std::string> receive(double now_s, const std::vector<EllipseSpec>& ellipses,
+                                     double stamp_s = 0.0);
 
   /// Drops the robots last heard from more than the timeout before `now_s`; their names. A robot
   /// last heard after `now_s` (the clock jumped back) counts as heard at `now_s`.
   std::vector<std::string> dropSilent(double now_s);
 
-  /// Every other robot's links, robots in name order.
+  /// Every other robot's links, robots in name order, each robot's advanced by its links'
+  /// velocities from its own footprint's stamp to stamp(): the robots heard at different times
+  /// as of one time, which the node then advances to the decision's time.
   std::vector<EllipseSpec> obstacles() const;
+  /// The newest footprint's stamp [s] (0 = no robot kept): the time obstacles() holds.
+  double stamp() const;
 
   struct Robot {
     std::string name;
@@ -50,6 +55,7 @@ class FleetRoster {
  private:
   struct Kept {
     double heard_s{0.0};
+    double stamp_s{0.0};  ///< when its links were where they are
     std::vector<EllipseSpec> links;
   };
   std::string own_name_;

@@ -58,6 +58,7 @@ struct ObstacleSnapshot {
 struct ObstacleMotion {
   std::size_t index{0};
   core::Motion motion;
+  double since_s{0.0};  ///< [s] its message's age at the decision (PlacedMotion::since_s)
 };
 
 /// One gate decision and what it judged.

@@ -67,20 +67,23 @@ struct PlanarPose {
 /// axis.
 PlanarPose planarPose(const Eigen::Isometry3d& pose);
 
-/// An obstacle of a placed scene that moves by its own velocity: its index in the scene and its
-/// motion in the fixed frame.
+/// An obstacle of a placed scene that moves by its own velocity: its index in the scene, its
+/// motion in the fixed frame, and how long before the decision it was where the scene places it
+/// (its message's age): the gate judges it where that motion has taken it since.
 struct PlacedMotion {
   std::size_t index{0};
   core::Motion motion;
+  double since_s{0.0};  ///< [s] >= 0; 0 = placed as of now (unstamped, or no age)
 };
 
 /// The gate on a placed scene: `placed` (links and obstacles in the fixed frame) moved into the
-/// robot frame at `robot` (links rigidly with it, obstacles by `moving`, by increasing index; the
-/// others stand still), then core::gateTwist() on the command's planar part (linear.x, linear.y,
-/// angular.z) and its answer put back into the fixed frame. A core error stops (an internal
-/// failure never passes). `standing`, when given, is the grid of exactly `placed`'s obstacles,
-/// its last entries (CheckOutcome::standing): the obstacles near the robot are looked up there
-/// instead of scanning all of them, with the same answer bit for bit.
+/// robot frame at `robot` (links rigidly with it, obstacles by `moving`, by increasing index, each
+/// first advanced by its motion over its `since_s`; the others stand still), then core::gateTwist()
+/// on the command's planar part (linear.x, linear.y, angular.z) and its answer put back into the
+/// fixed frame. A core error stops (an internal failure never passes). `standing`, when given, is
+/// the grid of exactly `placed`'s obstacles, its last entries (CheckOutcome::standing): the
+/// obstacles near the robot are looked up there instead of scanning all of them, with the same
+/// answer bit for bit.
 GateDecision gateOnScene(const VelocityCommand& command, const core::Scene& placed,
                          const std::vector<PlacedMotion>& moving, const PlanarPose& robot,
                          const core::AllowedPairs& allowed, const GateConfig& config,

@@ -17,9 +17,9 @@ RecordedDecision toMsg(const app::RecordedDecision& recorded, const std::string&
                        bool with_obstacles);
 
 /// The format of the incident bags written here (`format` in `settings`): 2 added what a replay
-/// needs (RecordedDecision's judged_by_rules and the fields after it). Bags without it (format 1)
-/// cannot be replayed.
-constexpr int kIncidentBagFormat = 2;
+/// needs (RecordedDecision's judged_by_rules and the fields after it), 3 the moving obstacles'
+/// ages (moving_since). Bags of another format cannot be replayed.
+constexpr int kIncidentBagFormat = 3;
 
 /// The `settings` topic of an incident bag: YAML of the format, the trigger and of what the gate
 /// judged with (fixed_frame, padding, self_collision, allowed_pairs and every gate/ key), as
