@@ -1,7 +1,5 @@
 #include "ellipse_collision/ros/scan_params.h"
 
-#include <ros/param.h>
-
 #include <utility>
 
 #include "ellipse_collision/app/collision_check.h"
@@ -111,11 +109,7 @@ app::ScanObstacleSettings parseScanObstacleSettings(const XmlRpcValue& private_n
 }
 
 app::ScanObstacleSettings loadScanObstacleSettings(const ros::NodeHandle& private_nh) {
-  XmlRpcValue private_namespace;
-  if (!ros::param::get(private_nh.getNamespace(), private_namespace)) {
-    private_namespace = XmlRpcValue();
-  }
-  return parseScanObstacleSettings(private_namespace);
+  return parseScanObstacleSettings(params::privateNamespace(private_nh));
 }
 
 app::TrackingSettings parseTrackingSettings(const XmlRpcValue& private_namespace) {
@@ -134,11 +128,7 @@ app::TrackingSettings parseTrackingSettings(const XmlRpcValue& private_namespace
 }
 
 app::TrackingSettings loadTrackingSettings(const ros::NodeHandle& private_nh) {
-  XmlRpcValue private_namespace;
-  if (!ros::param::get(private_nh.getNamespace(), private_namespace)) {
-    private_namespace = XmlRpcValue();
-  }
-  return parseTrackingSettings(private_namespace);
+  return parseTrackingSettings(params::privateNamespace(private_nh));
 }
 
 }  // namespace ellipse_collision
