@@ -108,10 +108,6 @@ app::ScanObstacleSettings parseScanObstacleSettings(const XmlRpcValue& private_n
   return settings;
 }
 
-app::ScanObstacleSettings loadScanObstacleSettings(const ros::NodeHandle& private_nh) {
-  return parseScanObstacleSettings(params::privateNamespace(private_nh));
-}
-
 app::TrackingSettings parseTrackingSettings(const XmlRpcValue& private_namespace) {
   app::TrackingSettings settings;
   if (private_namespace.getType() != XmlRpcValue::TypeStruct ||
@@ -125,10 +121,6 @@ app::TrackingSettings parseTrackingSettings(const XmlRpcValue& private_namespace
     params::fail("parameter ~" + invalid->key, invalid->key, invalid->expected, invalid->actual);
   }
   return settings;
-}
-
-app::TrackingSettings loadTrackingSettings(const ros::NodeHandle& private_nh) {
-  return parseTrackingSettings(params::privateNamespace(private_nh));
 }
 
 }  // namespace ellipse_collision
