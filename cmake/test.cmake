@@ -181,6 +181,13 @@ ellipse_collision_add_gtest(test_scan_contours LIBRARIES ellipse_collision_app S
 ellipse_collision_add_gtest(test_ros_units LIBRARIES ellipse_collision_ros SOURCES
   test/ros/test_conversions.cpp
   test/ros/test_node_config.cpp
+  test/ros/test_param_reading.cpp
+  test/ros/test_ellipse_params.cpp
+  test/ros/test_gate_params.cpp
+  test/ros/test_fleet_params.cpp
+  test/ros/test_incident_params.cpp
+  test/ros/test_source_params.cpp
+  test/ros/test_scan_params.cpp
   test/ros/test_collision_markers.cpp
   test/ros/test_scan_obstacles_units.cpp
   test/ros/test_gate_markers.cpp
