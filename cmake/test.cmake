@@ -157,7 +157,9 @@ ellipse_collision_add_gtest(test_app LIBRARIES ellipse_collision_app quadmath SO
   test/app/test_collision_monitor.cpp
   test/app/test_velocity_gate.cpp
   test/app/test_gate_marker_layout.cpp
-  test/app/test_obstacle_sources.cpp
+  test/app/test_obstacle_source.cpp
+  test/app/test_source_freshness.cpp
+  test/app/test_contact_prediction.cpp
   test/app/test_obstacle_store.cpp
   test/app/test_obstacle_store_writer.cpp
   test/app/test_check_health.cpp
