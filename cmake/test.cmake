@@ -40,6 +40,7 @@ ellipse_collision_add_gtest(test_core LIBRARIES ellipse_collision_core quadmath 
   test/core/test_rotating_step_bounds.cpp
   test/core/test_enclosing_ellipsoid.cpp
   test/core/test_ellipse_polygon.cpp
+  test/core/test_scan_contours.cpp
   test/support/contact_scale_oracle.cpp)
 # The early-out stages are internal to overlap(): their test reads src/core's detail headers.
 target_include_directories(test_core PRIVATE ${PROJECT_SOURCE_DIR}/src/core)
