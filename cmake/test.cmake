@@ -40,6 +40,7 @@ ellipse_collision_add_gtest(test_core LIBRARIES ellipse_collision_core quadmath 
   test/core/test_rotating_step_bounds.cpp
   test/core/test_enclosing_ellipsoid.cpp
   test/core/test_ellipse_polygon.cpp
+  test/core/test_scan_contours.cpp
   test/support/contact_scale_oracle.cpp)
 # The early-out stages are internal to overlap(): their test reads src/core's detail headers.
 target_include_directories(test_core PRIVATE ${PROJECT_SOURCE_DIR}/src/core)
@@ -157,7 +158,9 @@ ellipse_collision_add_gtest(test_app LIBRARIES ellipse_collision_app quadmath SO
   test/app/test_collision_monitor.cpp
   test/app/test_velocity_gate.cpp
   test/app/test_gate_marker_layout.cpp
-  test/app/test_obstacle_sources.cpp
+  test/app/test_obstacle_source.cpp
+  test/app/test_source_freshness.cpp
+  test/app/test_contact_prediction.cpp
   test/app/test_obstacle_store.cpp
   test/app/test_obstacle_store_writer.cpp
   test/app/test_check_health.cpp
@@ -181,6 +184,13 @@ ellipse_collision_add_gtest(test_scan_contours LIBRARIES ellipse_collision_app S
 ellipse_collision_add_gtest(test_ros_units LIBRARIES ellipse_collision_ros SOURCES
   test/ros/test_conversions.cpp
   test/ros/test_node_config.cpp
+  test/ros/test_param_reading.cpp
+  test/ros/test_ellipse_params.cpp
+  test/ros/test_gate_params.cpp
+  test/ros/test_fleet_params.cpp
+  test/ros/test_incident_params.cpp
+  test/ros/test_source_params.cpp
+  test/ros/test_scan_params.cpp
   test/ros/test_collision_markers.cpp
   test/ros/test_scan_obstacles_units.cpp
   test/ros/test_gate_markers.cpp

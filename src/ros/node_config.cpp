@@ -1,7 +1,6 @@
 #include "ellipse_collision/ros/node_config.h"
 
 #include <ros/names.h>
-#include <ros/param.h>
 
 #include <cstdlib>
 #include <map>
@@ -223,9 +222,8 @@ std::string defaultObstacleStore(const std::string& node_name) {
 }
 
 NodeConfig loadNodeConfig(const ros::NodeHandle& private_nh, const UrdfLinkFitter& fit_urdf_links) {
-  XmlRpcValue params;
   // Absent namespace: no parameters at all, which parseNodeConfig reports as a missing ~links.
-  if (!ros::param::get(private_nh.getNamespace(), params)) params = XmlRpcValue();
+  const XmlRpcValue params = privateNamespace(private_nh);
   // The private namespace is the node's name; its parent the node's namespace.
   const std::string& node_name = private_nh.getNamespace();
   return parseNodeConfig(

@@ -1,5 +1,8 @@
 #include "ellipse_collision/ros/param_reading.h"
 
+#include <ros/node_handle.h>
+#include <ros/param.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -16,6 +19,12 @@ std::string describeConfigError(const std::string& where, const app::FieldError&
 }
 
 namespace params {
+
+XmlRpcValue privateNamespace(const ros::NodeHandle& private_nh) {
+  XmlRpcValue value;
+  if (!ros::param::get(private_nh.getNamespace(), value)) return XmlRpcValue();
+  return value;
+}
 
 std::optional<std::string> unknownKey(const XmlRpcValue& value,
                                       const std::vector<std::string>& keys) {

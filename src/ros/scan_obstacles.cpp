@@ -5,6 +5,7 @@
 #include <boost/make_shared.hpp>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 #include "ellipse_collision/app/collision_check.h"
 #include "ellipse_collision/ros/conversions.h"
@@ -78,8 +79,19 @@ app::SensorObstacles scanObstacles(const sensor_msgs::LaserScan& scan,
                      scan.range_max, scan.header.frame_id);
 }
 
+namespace {
+
+/// The private namespace read once, the pipeline's and the tracking's settings parsed from it.
+app::SensorObstacleSeries seriesFromParameters(const ros::NodeHandle& private_nh) {
+  const XmlRpc::XmlRpcValue parameters = params::privateNamespace(private_nh);
+  app::ScanObstacleSettings settings = parseScanObstacleSettings(parameters);
+  return app::SensorObstacleSeries(std::move(settings), parseTrackingSettings(parameters));
+}
+
+}  // namespace
+
 ScanObstaclesNode::ScanObstaclesNode(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
-    : nh_(nh), series_(loadScanObstacleSettings(private_nh), loadTrackingSettings(private_nh)) {
+    : nh_(nh), series_(seriesFromParameters(private_nh)) {
   obstacles_pub_ = nh_.advertise<EllipseArray>("obstacles", 1);
   scan_sub_ = nh_.subscribe<sensor_msgs::LaserScan>("scan", 1, &ScanObstaclesNode::onScan, this);
   cloud_sub_ =

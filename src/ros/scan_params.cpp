@@ -1,7 +1,5 @@
 #include "ellipse_collision/ros/scan_params.h"
 
-#include <ros/param.h>
-
 #include <utility>
 
 #include "ellipse_collision/app/collision_check.h"
@@ -110,14 +108,6 @@ app::ScanObstacleSettings parseScanObstacleSettings(const XmlRpcValue& private_n
   return settings;
 }
 
-app::ScanObstacleSettings loadScanObstacleSettings(const ros::NodeHandle& private_nh) {
-  XmlRpcValue private_namespace;
-  if (!ros::param::get(private_nh.getNamespace(), private_namespace)) {
-    private_namespace = XmlRpcValue();
-  }
-  return parseScanObstacleSettings(private_namespace);
-}
-
 app::TrackingSettings parseTrackingSettings(const XmlRpcValue& private_namespace) {
   app::TrackingSettings settings;
   if (private_namespace.getType() != XmlRpcValue::TypeStruct ||
@@ -131,14 +121,6 @@ app::TrackingSettings parseTrackingSettings(const XmlRpcValue& private_namespace
     params::fail("parameter ~" + invalid->key, invalid->key, invalid->expected, invalid->actual);
   }
   return settings;
-}
-
-app::TrackingSettings loadTrackingSettings(const ros::NodeHandle& private_nh) {
-  XmlRpcValue private_namespace;
-  if (!ros::param::get(private_nh.getNamespace(), private_namespace)) {
-    private_namespace = XmlRpcValue();
-  }
-  return parseTrackingSettings(private_namespace);
 }
 
 }  // namespace ellipse_collision

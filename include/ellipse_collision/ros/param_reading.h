@@ -9,6 +9,10 @@
 
 #include "ellipse_collision/app/field_error.h"
 
+namespace ros {
+class NodeHandle;
+}
+
 namespace ellipse_collision {
 
 /// A configuration the node cannot run with; what() names the entry, the key, expected and actual.
@@ -25,6 +29,10 @@ std::string describeConfigError(const std::string& where, const app::FieldError&
 /// and of scan_obstacles. `where` names the place in messages ("parameter ~gate", "links[2]"),
 /// `key` the key; every failure throws ConfigError as describeConfigError() renders it.
 namespace params {
+
+/// The whole private namespace of `private_nh` as the parameter server holds it, or an empty
+/// (invalid) value when it holds none: the one read each node parses its parameters from.
+XmlRpc::XmlRpcValue privateNamespace(const ros::NodeHandle& private_nh);
 
 /// The first key of the dict `value` that is not one of `keys`, or nothing: every dict of the
 /// configuration refuses unknown keys (a typo would otherwise be ignored silently).

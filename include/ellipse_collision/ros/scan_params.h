@@ -1,6 +1,5 @@
 #pragma once
 
-#include <ros/node_handle.h>
 #include <xmlrpcpp/XmlRpcValue.h>
 
 #include <functional>
@@ -17,14 +16,10 @@ namespace ellipse_collision {
 /// app::findInvalidSetting()). Throws ConfigError naming the key.
 app::ScanObstacleSettings parseScanObstacleSettings(const XmlRpc::XmlRpcValue& private_namespace);
 
-/// Reads scan_obstacles' private namespace from the parameter server and parses it.
-app::ScanObstacleSettings loadScanObstacleSettings(const ros::NodeHandle& private_nh);
-
 /// Parses the `tracking` dict of scan_obstacles' private namespace (every key optional, defaults
 /// in app::TrackingSettings; ranges from app::findInvalidSetting()). Throws ConfigError naming
 /// the key.
 app::TrackingSettings parseTrackingSettings(const XmlRpc::XmlRpcValue& private_namespace);
-app::TrackingSettings loadTrackingSettings(const ros::NodeHandle& private_nh);
 
 namespace params {
 

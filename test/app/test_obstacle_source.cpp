@@ -1,6 +1,7 @@
-// Several obstacle sources without a master: the source list's rules, each source's messages
-// replacing only its own obstacles in the registry, and the freshness rule (a silent source makes
-// answers incomplete and the gate INCOMPLETE, naming it).
+// Several obstacle sources without a master: the source list's rules (src/app/obstacle_source.cpp),
+// each source's messages replacing only its own obstacles in the registry, and the freshness rule
+// in the monitor (a silent source makes answers incomplete and the gate INCOMPLETE, naming it; the
+// rule on its own: test_source_freshness.cpp).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -94,6 +95,27 @@ TEST(SourceList, EachViolationNamesTheEntryTheKeyAndTheValue) {
   EXPECT_EQ(unknown->actual, "'sonar'");
 }
 
+TEST(SourceList, ObstacleNamesCarryTheSourceAndOnlyRequiredRobotsAreWatched) {
+  EXPECT_EQ(sourceObstacleName("front_scan", "scan_0"), "front_scan/scan_0");
+  EXPECT_NE(sourceObstacleName("front_scan", "scan_0"), sourceObstacleName("rear_scan", "scan_0"));
+  SourceSpec robots = source("fleet", SourceType::Robots, "/fleet/footprints", 1.0);
+  EXPECT_FALSE(watchesSilence(robots));
+  robots.required = true;
+  EXPECT_TRUE(watchesSilence(robots));
+  for (const SourceType type :
+       {SourceType::Ellipses, SourceType::Scan, SourceType::Cloud, SourceType::Range}) {
+    EXPECT_TRUE(watchesSilence(source("s", type, "t", 0.0))) << toString(type);
+  }
+  robots.timeout_s = 0.0;
+  EXPECT_EQ(refusal({robots}), "sources[0].timeout = 0")
+      << "a robot without a timeout never leaves";
+  SourceSpec tracked = source("front_scan", SourceType::Scan, "front/scan", 0.5);
+  tracked.tracking.max_speed = NAN;
+  EXPECT_EQ(refusal({tracked}), "sources[0].tracking/max_speed = nan");
+  tracked.type = SourceType::Range;
+  EXPECT_EQ(refusal({tracked}), "") << "a range source is not tracked";
+}
+
 TEST(SourceList, AMonitorRefusesAListThatBreaksTheRules) {
   MonitorSettings settings;
   settings.sources = {source("a", SourceType::Ellipses, "x", 0.0),
@@ -156,30 +178,6 @@ TEST(SourceRegistry, TheLimitCountsEverySourcesObstacles) {
                 {circle("a/1", "map", 1, 0, 0.1), circle("a/2", "map", 2, 0, 0.1)}, "a", 2.0, 1),
             "")
       << "a's own obstacles are replaced, not added to";
-}
-
-TEST(SourceFreshness, ASourceIsSilentOnlyPastItsTimeout) {
-  SourceFreshness freshness({{"obstacles", 0.0}, {"front", 0.5}, {"rear", 0.5}});
-  EXPECT_EQ(freshness.silent(0.0),
-            (std::vector<std::string>{"source 'front' silent: no message yet",
-                                      "source 'rear' silent: no message yet"}));
-  for (int i = 0; i <= 10; ++i) {
-    freshness.received(1, 1.0 + 0.1 * i, 4);
-    freshness.received(2, 1.0 + 0.1 * i, 2);
-  }
-  EXPECT_TRUE(freshness.silent(2.5).empty()) << "0.5 s after the last message is not past 0.5 s";
-  freshness.received(1, 2.8, 5);
-  EXPECT_EQ(freshness.silent(2.8),
-            std::vector<std::string>{"source 'rear' silent for 0.8 s (timeout 0.5 s)"});
-  const std::vector<SourceFreshness::Stats> stats = freshness.stats(2.8);
-  ASSERT_EQ(stats.size(), 3u);
-  EXPECT_EQ(stats[0].age_s, -1.0) << "~obstacles: no message";
-  EXPECT_EQ(stats[1].obstacles, 5u);
-  EXPECT_EQ(stats[2].obstacles, 2u);
-  EXPECT_NEAR(stats[2].rate_hz, 10.0, 1e-9) << "9 intervals of 0.1 s";
-  EXPECT_NEAR(stats[2].age_s, 0.8, 1e-9);
-  EXPECT_EQ(stats[2].messages, 11u);
-  EXPECT_TRUE(freshness.silent(1e9).size() == 2u) << "~obstacles has no watchdog";
 }
 
 MonitorSettings twoSources() {
