@@ -284,10 +284,13 @@ std::string CollisionMonitor::replaceSourceObstacles(std::size_t source,
   if (source > 0) {
     const SourceSpec& spec_of_source = settings_.sources[source - 1];
     field = "source '" + spec_of_source.name + "' ellipses";
-    // Other robots' links keep the names they were published under ("r2/base_link").
+    // Other robots' links keep the names they were published under ("r2/base_link"), grown by
+    // the room this robot leaves them to stray from their straight lines.
     if (spec_of_source.type != SourceType::Robots) {
       for (EllipseSpec& spec : specs)
         spec.name = sourceObstacleName(spec_of_source.name, spec.name);
+    } else {
+      for (EllipseSpec& spec : specs) spec.padding += spec_of_source.padding_m;
     }
   }
   std::string error = validateAttached(specs, field, settings_.check, lookup);

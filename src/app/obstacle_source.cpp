@@ -2,6 +2,8 @@
 
 #include <map>
 
+#include "ellipse_collision/core/number_format.h"
+
 namespace ellipse_collision::app {
 namespace {
 
@@ -78,8 +80,15 @@ std::optional<FieldError> findInvalidSources(const std::vector<SourceSpec>& sour
                                           kMaxSourceTimeoutS, true)) {
         return invalid;
       }
+      if (auto invalid =
+              findOutsideRange(entry + ".padding", source.padding_m, 0.0, kMaxRobotsPaddingM)) {
+        return invalid;
+      }
     } else if (source.required) {
       return FieldError{entry + ".required", "no 'required' (type robots only)", "true"};
+    } else if (source.padding_m != 0.0) {
+      return FieldError{entry + ".padding", "no 'padding' (type robots only)",
+                        core::formatNumber(source.padding_m)};
     }
     if (source.type == SourceType::Scan || source.type == SourceType::Cloud) {
       if (auto invalid = findInvalidSetting(source.tracking)) {

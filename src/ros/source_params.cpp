@@ -24,6 +24,7 @@ std::vector<app::SourceSpec> readSources(const XmlRpcValue& list, const std::str
   range_source_keys.push_back("min_radius");
   std::vector<std::string> robots_source_keys = kSourceKeys;
   robots_source_keys.push_back("required");
+  robots_source_keys.push_back("padding");
   std::vector<app::SourceSpec> sources;
   for (int i = 0; i < list.size(); ++i) {
     const std::string entry = app::entryName("sources", i);
@@ -63,6 +64,9 @@ std::vector<app::SourceSpec> readSources(const XmlRpcValue& list, const std::str
     }
     if (value.hasMember("required")) {
       source.required = readBool(value["required"], where, entry + ".required");
+    }
+    if (value.hasMember("padding")) {
+      source.padding_m = readNumber(value["padding"], where, entry + ".padding");
     }
     if (source.type != app::SourceType::Ellipses && !robots) {
       readScanSettings(

@@ -339,6 +339,35 @@ TEST(RobotsSource, AMovingFootprintIsJudgedWhereItsVelocityHasTakenItSinceItsSta
   EXPECT_EQ(ahead.time_to_contact_s, fresh_same.time_to_contact_s);
 }
 
+TEST(RobotsSource, ItsPaddingGrowsEveryOtherRobotsLinkForEveryCheckAndTheGate) {
+  // Room for the other robot to stray from its straight line: a link of radius 0.3 m padded by
+  // 0.2 m is judged as one of 0.5 m, by the check and the gate alike.
+  MonitorSettings settings = twoSources();
+  SourceSpec robots = source("robots", SourceType::Robots, "/fleet/footprints", 1.0);
+  robots.padding_m = 0.2;
+  settings.sources = {robots};
+  CollisionMonitor monitor(settings, {circle("body", "base_link", 0, 0, 0.3)}, {}, {}, {});
+  const TransformLookup frames = everyFrameAtOrigin();
+  ASSERT_EQ(monitor.replaceSourceObstacles(1, {circle("r2/front", "map", 0.75, 0.0, 0.3)}, 10.0,
+                                           10.0, frames),
+            "");
+  EXPECT_EQ(monitor.registry().entries().at("r2/front").spec.padding, 0.2);
+  const CheckOutcome& outcome = monitor.serviceCheck({}, 0.0, 10.0, frames, everyFrameAtOriginAt());
+  ASSERT_EQ(outcome.collisions.size(), 1u) << "0.75 m apart, 0.6 m of radii, 0.2 m of padding";
+  VelocityCommand forward;
+  forward.linear.x() = 0.2;
+  EXPECT_EQ(monitor.gateCommand(forward, 10.0, frames, everyFrameAtOriginAt()).action,
+            GateAction::Stop);
+  // Without the padding the two stand 0.15 m apart.
+  settings.sources[0].padding_m = 0.0;
+  CollisionMonitor unpadded(settings, {circle("body", "base_link", 0, 0, 0.3)}, {}, {}, {});
+  ASSERT_EQ(unpadded.replaceSourceObstacles(1, {circle("r2/front", "map", 0.75, 0.0, 0.3)}, 10.0,
+                                            10.0, frames),
+            "");
+  EXPECT_TRUE(
+      unpadded.serviceCheck({}, 0.0, 10.0, frames, everyFrameAtOriginAt()).collisions.empty());
+}
+
 TEST(RobotsSource, RequiredMakesItsSilenceIncomplete) {
   MonitorSettings settings;
   settings.check.fixed_frame = "map";
@@ -367,6 +396,15 @@ TEST(RobotsSource, TheListsRulesForRobots) {
   SourceSpec scan = source("front_scan", SourceType::Scan, "front/scan", 0.5);
   scan.required = true;
   EXPECT_EQ(refusal({robots, scan}), "sources[1].required = true");
+  robots.padding_m = -0.01;
+  EXPECT_EQ(refusal({robots}), "sources[0].padding = -0.01");
+  robots.padding_m = 10.5;
+  EXPECT_EQ(refusal({robots}), "sources[0].padding = 10.5");
+  robots.padding_m = 0.1;
+  EXPECT_EQ(refusal({robots}), "");
+  scan.required = false;
+  scan.padding_m = 0.1;
+  EXPECT_EQ(refusal({robots, scan}), "sources[1].padding = 0.1") << "type robots only";
   SourceType type;
   EXPECT_FALSE(parseSourceType("robots", "type", &type));
   EXPECT_EQ(type, SourceType::Robots);

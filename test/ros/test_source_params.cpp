@@ -224,5 +224,26 @@ TEST(SourceParams, ARobotsSourceListensOnTheFleetTopicAndIsWatchedOnlyWhenRequir
   EXPECT_CONTAINS(errorOf(scan), "key 'sources[0].required'") << "robots sources only";
 }
 
+TEST(SourceParams, ARobotsSourcesPaddingIsReadInMetresAndRefusedOutsideItsRange) {
+  XmlRpcValue p = validParams();
+  p["sources"][0]["name"] = "fleet";
+  p["sources"][0]["type"] = "robots";
+  EXPECT_EQ(parseNodeConfig(p, {}, "r1").monitor.sources[0].padding_m, 0.0) << "default";
+  p["sources"][0]["padding"] = 0.12;
+  EXPECT_EQ(parseNodeConfig(p, {}, "r1").monitor.sources[0].padding_m, 0.12);
+  p["sources"][0]["padding"] = -0.1;
+  EXPECT_CONTAINS(errorOf(p),
+                  "key 'sources[0].padding': expected a number within [0, 10], got -0.1");
+  p["sources"][0]["padding"] = std::nan("");
+  EXPECT_CONTAINS(errorOf(p), "key 'sources[0].padding'");
+  EXPECT_CONTAINS(errorOf(p), "nan");
+  p["sources"][0]["padding"] = "wide";
+  EXPECT_CONTAINS(errorOf(p), "key 'sources[0].padding'");
+  XmlRpcValue scan = validParams();
+  scan["sources"][0] = sourceEntry("front_scan", "scan", "front/scan");
+  scan["sources"][0]["padding"] = 0.1;
+  EXPECT_CONTAINS(errorOf(scan), "key 'sources[0].padding'") << "robots sources only";
+}
+
 }  // namespace
 }  // namespace ellipse_collision

@@ -35,6 +35,11 @@ struct SourceSpec {
   /// Type robots only: no footprint from any robot for `timeout_s` makes answers incomplete
   /// (a fleet that must be there); otherwise robots come and go freely.
   bool required{false};
+  /// Type robots only: [m] added to the padding of every other robot's link, within
+  /// [0, kMaxRobotsPaddingM]. Their velocities are straight lines from their stamps; a robot that
+  /// turns, brakes or swings an arm strays from that line, by about a t^2 / 2 after t [s] at an
+  /// acceleration a: this is the room left for it.
+  double padding_m{0.0};
   /// The pipeline's settings (types scan and cloud; range uses min_radius alone).
   ScanObstacleSettings scan;
   /// Types scan and cloud: the obstacles' velocities (ObstacleTracker); the node's fixed_frame
@@ -48,11 +53,13 @@ struct SourceSpec {
 inline constexpr const char* kDefaultSourceName = "obstacles";
 inline constexpr double kMaxSourceTimeoutS = 3600.0;  ///< timeout within [0, kMaxSourceTimeoutS]
 inline constexpr double kDefaultRobotsTimeoutS = 1.0;  ///< a robots source's timeout unless given
+inline constexpr double kMaxRobotsPaddingM = 10.0;     ///< a robots source's padding within [0, it]
 
 /// The first violation of the source list's rules, its key naming the entry ("sources[1].topic"):
 /// name non-empty of [A-Za-z0-9_] and used once (kDefaultSourceName included); topic non-empty
 /// and used once ("obstacles" and "~obstacles" are the default source's); timeout finite within
-/// [0, kMaxSourceTimeoutS] (> 0 for type robots); `required` on type robots only; a scan, cloud
+/// [0, kMaxSourceTimeoutS] (> 0 for type robots); `required` and `padding` (within
+/// [0, kMaxRobotsPaddingM]) on type robots only; a scan, cloud
 /// or range source's settings pass findInvalidSetting().
 std::optional<FieldError> findInvalidSources(const std::vector<SourceSpec>& sources);
 
