@@ -23,8 +23,10 @@ const char* toString(GateAction action) {
 }
 
 bool stops(GateAction action) {
-  return action == GateAction::Stop || action == GateAction::Timeout ||
-         action == GateAction::Incomplete;
+  // Named by what lets the robot move, so that a value outside the enum (named "STOP" by
+  // toString()) is counted, logged and drawn as the stop it is said to be.
+  return action != GateAction::Pass && action != GateAction::Slow && action != GateAction::Escape &&
+         action != GateAction::Disabled;
 }
 
 }  // namespace ellipse_collision::core

@@ -37,10 +37,11 @@ TEST(GateAction, StopTimeoutAndIncompleteStopTheRobot) {
   EXPECT_FALSE(stops(GateAction::Disabled));
 }
 
-TEST(GateAction, AValueOutsideTheEnumIsNamedAsAStop) {
+TEST(GateAction, AValueOutsideTheEnumIsNamedAndCountedAsAStop) {
   // A corrupted value must not read as a pass in a log or on ~gate_state.
   const auto corrupted = static_cast<GateAction>(99);
   EXPECT_STREQ(toString(corrupted), "STOP");
+  EXPECT_TRUE(stops(corrupted)) << "counted, logged and drawn as the stop it is named";
 }
 
 }  // namespace

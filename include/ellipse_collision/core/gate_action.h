@@ -14,11 +14,12 @@ enum class GateAction {
   Disabled,    ///< the gate is off: sent as given
 };
 
-/// "PASS", "SLOW", "STOP", "ESCAPE", "TIMEOUT", "INCOMPLETE", "DISABLED".
+/// "PASS", "SLOW", "STOP", "ESCAPE", "TIMEOUT", "INCOMPLETE", "DISABLED"; "STOP" for a value
+/// outside the enum.
 const char* toString(GateAction action);
 
-/// The one rule of which actions stop the robot (STOP, TIMEOUT, INCOMPLETE): the counters, the
-/// log and the markers all ask it.
+/// The one rule of which actions stop the robot (STOP, TIMEOUT, INCOMPLETE, and a value outside
+/// the enum): the counters, the log and the markers all ask it.
 bool stops(GateAction action);
 
 }  // namespace ellipse_collision::core
