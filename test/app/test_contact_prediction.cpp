@@ -18,6 +18,19 @@ namespace {
 using test::circle;
 using test::translated;
 
+/// The frame "arm" moving along map's x at 2 m/s through the origin at t = 10 s: its latest
+/// transform (stamped 10 s), and its pose at any time.
+FrameTransform armLatest(const std::string& f) {
+  FrameTransform t = translated({{"map", {0, 0}}, {"arm", {0, 0}}}, f);
+  if (f == "arm") t.stamp_s = 10.0;
+  return t;
+}
+FrameTransform armAt(const std::string& f, double time_s) {
+  FrameTransform t = translated({{"map", {0, 0}}, {"arm", {2.0 * (time_s - 10.0), 0}}}, f);
+  t.stamp_s = time_s;
+  return t;
+}
+
 TEST(PredictAfterCheck, ALinkOnAMovingFrameIsPredictedToMeetAStandingObstacle) {
   // The arm frame moves at 2 m/s along x (its pose 0.1 s ago was 0.2 m behind); its hand
   // (0.1 m) and the post (0.1 m) are 1.2 m apart: 1.0 m of gap at 2 m/s, contact after 0.5 s.
@@ -26,16 +39,8 @@ TEST(PredictAfterCheck, ALinkOnAMovingFrameIsPredictedToMeetAStandingObstacle) {
       {circle("post", "map", 1.2, 0.0, 0.1), circle("far", "map", 0.0, 5.0, 0.1)});
   CheckSettings settings;
   settings.fixed_frame = "map";
-  const auto latest = [](const std::string& f) {
-    FrameTransform t = translated({{"map", {0, 0}}, {"arm", {0, 0}}}, f);
-    if (f == "arm") t.stamp_s = 10.0;
-    return t;
-  };
-  const TransformAtLookup at = [](const std::string& f, double time_s) {
-    FrameTransform t = translated({{"map", {0, 0}}, {"arm", {2.0 * (time_s - 10.0), 0}}}, f);
-    t.stamp_s = time_s;
-    return t;
-  };
+  const TransformLookup latest = armLatest;
+  const TransformAtLookup at = armAt;
   CheckOutcome outcome = runCheck({}, registry, settings, latest, 10.0);
   ASSERT_EQ(outcome.error, "");
   predictAfterCheck(outcome, {}, registry, settings, at, 2.0, 10.0);
@@ -163,16 +168,8 @@ TEST(PredictAfterCheck, ALatestTransformOlderThanTheLagLimitMovesOnByTheLimitOnl
                                  {circle("post", "map", 4.2, 0.0, 0.1)});
   CheckSettings settings;
   settings.fixed_frame = "map";
-  const auto latest = [](const std::string& f) {
-    FrameTransform t = translated({{"map", {0, 0}}, {"arm", {0, 0}}}, f);
-    if (f == "arm") t.stamp_s = 10.0;
-    return t;
-  };
-  const TransformAtLookup at = [](const std::string& f, double time_s) {
-    FrameTransform t = translated({{"map", {0, 0}}, {"arm", {2.0 * (time_s - 10.0), 0}}}, f);
-    t.stamp_s = time_s;
-    return t;
-  };
+  const TransformLookup latest = armLatest;
+  const TransformAtLookup at = armAt;
   CheckOutcome outcome = runCheck({}, registry, settings, latest, 15.0);
   ASSERT_EQ(outcome.error, "");
   predictAfterCheck(outcome, {}, registry, settings, at, 3.0, 15.0);
