@@ -243,8 +243,21 @@ PathCheckOutcome CollisionMonitor::checkPath(
     return outcome;
   }
   advanceClock(now_s);
-  return runPathCheck(request, registry_, settings_.check, lookup_to(request.moving_frame),
-                      lookup_to(request.path_frame), now_s);
+  outcome = runPathCheck(request, registry_, settings_.check, lookup_to(request.moving_frame),
+                         lookup_to(request.path_frame), now_s);
+  if (outcome.error.empty()) outcome.silent_sources = silentSources(now_s);
+  return outcome;
+}
+
+std::vector<std::string> CollisionMonitor::silentSources(double now_s) const {
+  std::vector<std::string> silent = freshness_.silent(now_s);
+  if (topic_obstacles_expired_) silent.push_back(expiredTopicNote());
+  return silent;
+}
+
+std::string CollisionMonitor::expiredTopicNote() const {
+  return "obstacles from ~obstacles dropped, older than obstacle_timeout " +
+         core::formatNumber(settings_.obstacle_timeout_s) + " s";
 }
 
 ChangeAnswer CollisionMonitor::addObstacles(const std::vector<EllipseSpec>& specs,
@@ -360,11 +373,7 @@ GateView CollisionMonitor::gateView(const CheckOutcome& outcome, double now_s,
   const auto known = outcome.frames.find(robot_frame);
   view.robot = known != outcome.frames.end() ? known->second : latest(robot_frame);
   view.silent_sources = outcome.silent_sources;
-  if (topic_obstacles_expired_) {
-    view.silent_sources.push_back(
-        "obstacles from ~obstacles dropped, older than obstacle_timeout " +
-        core::formatNumber(settings_.obstacle_timeout_s) + " s");
-  }
+  if (topic_obstacles_expired_) view.silent_sources.push_back(expiredTopicNote());
   // Obstacles move by their own velocity only: one attached to a moving frame (a scan in the
   // sensor's frame) is where that frame puts it now and does not travel with the robot.
   // Listed by index, the moving ones only: a list of every entry cost a tenth of a command at

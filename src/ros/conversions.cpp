@@ -153,8 +153,11 @@ app::PathCheckRequest fromMsg(const CheckPath::Request& request) {
 void toMsg(const app::PathCheckOutcome& outcome, CheckPath::Response& response) {
   const core::PathCheckResult& r = outcome.result;
   response.success = true;
-  response.message =
-      outcome.skipped.empty() ? "" : "skipped " + app::joinText(outcome.skipped, "; ");
+  std::vector<std::string> notes;
+  if (!outcome.skipped.empty()) notes.push_back("skipped " + app::joinText(outcome.skipped, "; "));
+  notes.insert(notes.end(), outcome.silent_sources.begin(), outcome.silent_sources.end());
+  response.message = app::joinText(notes, "; ");
+  response.complete = outcome.complete();
   response.collision_free = r.collision_free;
   response.segment = static_cast<std::uint32_t>(r.segment);
   response.fraction = r.fraction;

@@ -241,6 +241,15 @@ TEST(SourceFreshness, ASilentSourceMakesAnswersIncompleteAndTheGateIncompleteNam
   EXPECT_EQ(stopped.action, GateAction::Incomplete);
   EXPECT_NE(stopped.reason.find("source 'rear_scan' silent for 0.8 s"), std::string::npos)
       << stopped.reason;
+  // ~check_path says so too: checked without what the rear scanner would have seen.
+  PathCheckRequest path;
+  path.poses.resize(2);
+  path.poses[1].x = 0.5;
+  const auto lookup_to = [&](const std::string&) { return frames; };
+  const PathCheckOutcome blind_path = monitor.checkPath(path, 2.2, lookup_to);
+  ASSERT_EQ(blind_path.error, "");
+  EXPECT_FALSE(blind_path.complete());
+  EXPECT_EQ(blind_path.silent_sources, blind.silent_sources);
   const CollisionMonitor::Health health = monitor.health(2.2);
   EXPECT_EQ(health.health.level, CheckHealth::Level::Error);
   const std::map<std::string, std::string> values(health.values.begin(), health.values.end());
@@ -257,6 +266,7 @@ TEST(SourceFreshness, ASilentSourceMakesAnswersIncompleteAndTheGateIncompleteNam
   EXPECT_TRUE(monitor.serviceCheck({}, 0.0, 2.3, frames, everyFrameAtOriginAt()).complete);
   EXPECT_EQ(monitor.gateCommand(forward, 2.3, frames, everyFrameAtOriginAt()).action,
             GateAction::Pass);
+  EXPECT_TRUE(monitor.checkPath(path, 2.3, lookup_to).complete());
 }
 
 TEST(SourceFreshness, ARefusedMessageIsNotFreshAndIsReportedForItsSource) {

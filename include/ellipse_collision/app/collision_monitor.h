@@ -133,7 +133,7 @@ class CollisionMonitor {
   StatePublishing statePublishing() const { return publishing_; }
   /// A ~check_path call: fills in the default frames (path frame = the fixed frame, moving frame
   /// = robot_frame), validates, and checks with `lookup_to(target)` giving transforms into
-  /// `target`.
+  /// `target`; the obstacle sources silent at `now_s` are listed with the answer.
   PathCheckOutcome checkPath(PathCheckRequest request, double now_s,
                              const std::function<TransformLookup(const std::string&)>& lookup_to);
 
@@ -225,6 +225,11 @@ class CollisionMonitor {
   Health health(double now_s) const;
 
  private:
+  /// The obstacle sources whose data is gone at `now_s`: those silent past their timeouts, and
+  /// ~obstacles when obstacle_timeout dropped its obstacles.
+  std::vector<std::string> silentSources(double now_s) const;
+  /// The note for ~obstacles dropped by obstacle_timeout.
+  std::string expiredTopicNote() const;
   /// Every check starts here: a time jump back is passed on (the hook clears tf), topic obstacles
   /// older than obstacle_timeout are dropped.
   void advanceClock(double now_s);

@@ -51,6 +51,14 @@ struct PathCheckOutcome {
   core::PathCheckResult result;
   std::vector<std::string> unavailable_frames;  ///< sorted; their ellipses were left out
   std::vector<std::string> skipped;             ///< why each left-out ellipse was left out
+  /// Obstacle sources whose data is gone at the check ("source 'rear_scan' silent for 0.8 s
+  /// (timeout 0.5 s)"): the path was checked without what they would have seen.
+  std::vector<std::string> silent_sources;
+  /// Every stored ellipse placed (none unavailable or skipped) and no source silent: an answer
+  /// that leaves nothing out.
+  bool complete() const {
+    return unavailable_frames.empty() && skipped.empty() && silent_sources.empty();
+  }
   std::string error;                            ///< a refused request: nothing checked
   ErrorKind error_kind{ErrorKind::None};        ///< what kind of failure `error` is
 };
