@@ -117,8 +117,18 @@ SensorObstacles scanObstacles(const std::vector<float>& ranges, double angle_min
                               double angle_increment, double range_min, double range_max,
                               const std::string& frame_id, const ScanObstacleSettings& settings,
                               const std::vector<std::size_t>& split_hints) {
-  const core::SensorView view = core::scanView(ranges, angle_min, angle_increment, range_min,
-                                               range_max, settings.free_space_tolerance);
+  ScanBuffers buffers;
+  return scanObstacles(ranges, angle_min, angle_increment, range_min, range_max, frame_id, settings,
+                       split_hints, buffers);
+}
+
+SensorObstacles scanObstacles(const std::vector<float>& ranges, double angle_min,
+                              double angle_increment, double range_min, double range_max,
+                              const std::string& frame_id, const ScanObstacleSettings& settings,
+                              const std::vector<std::size_t>& split_hints, ScanBuffers& buffers) {
+  core::scanView(ranges, angle_min, angle_increment, range_min, range_max,
+                 settings.free_space_tolerance, buffers.beams, buffers.view);
+  const core::SensorView& view = buffers.view;
   const auto contours =
       core::breakContours(view, settings.range_noise_sigma, settings.cluster_distance,
                           static_cast<std::size_t>(settings.min_cluster_points));

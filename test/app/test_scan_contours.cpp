@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <limits>
 #include <map>
 #include <random>
@@ -619,6 +620,99 @@ TEST(ScanObstacleSettings, NewSettingsAreRefusedOutsideTheirRangeNamingTheKey) {
   EXPECT_EQ(findInvalidSetting(s)->actual, "-0.01");
   s.range_noise_sigma = 0.0;  // a perfect sensor is allowed
   EXPECT_FALSE(findInvalidSetting(s).has_value());
+}
+
+/// A scan's view as scanView() made it before it kept its beams: each beam's free segment in
+/// beam order, sorted by FreeSpace's own constructor.
+core::SensorView freshView(const ScanFields& scan, double tolerance) {
+  core::SensorView view;
+  std::vector<core::FreeSegment> free;
+  for (std::size_t i = 0; i < scan.ranges.size(); ++i) {
+    const double angle = scan.angle_min + static_cast<double>(i) * scan.angle_increment;
+    if (!std::isfinite(angle)) continue;
+    const double r = scan.ranges[i];
+    const Eigen::Vector2d direction(std::cos(angle), std::sin(angle));
+    switch (core::readBeam(r, scan.range_min, scan.range_max)) {
+      case core::BeamReading::Return:
+        view.returns.push_back({r * direction, i});
+        free.push_back({direction, std::max(scan.range_min, 0.0), r - tolerance});
+        break;
+      case core::BeamReading::NoReturn:
+        free.push_back({direction, std::max(scan.range_min, 0.0),
+                        std::min(scan.range_max, core::kMaxCoordinate), true});
+        break;
+      case core::BeamReading::Unknown:
+        break;
+    }
+  }
+  view.free_space = core::FreeSpace(std::move(free));
+  return view;
+}
+
+bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+TEST(ScanView, BeamsKeptFromScanToScanGiveTheSameViewBitForBit) {
+  // One ScanBeams and one view kept through scans of changing geometry: a full turn, the same
+  // beams reversed, a partial turn, three turns (the angles wrap), angle_min -0.0 then 0.0 (the
+  // directions' signs differ), beams whose angle is not finite; ranges with NaN, +-inf and
+  // returns below range_min.
+  std::vector<ScanFields> scans;
+  ScanFields room = test::castScan(test::roomWorld(), 720, 10.0, 0.01, 3);
+  for (const int i : {7, 100, 101, 500}) room.ranges[i] = std::numeric_limits<float>::quiet_NaN();
+  room.ranges[200] = -std::numeric_limits<float>::infinity();
+  room.ranges[201] = 0.01f;
+  scans.push_back(room);
+  scans.push_back(room);
+  ScanFields reversed = room;
+  reversed.angle_min = test::kScanPi;
+  reversed.angle_increment = -room.angle_increment;
+  scans.push_back(reversed);
+  ScanFields partial = room;
+  partial.ranges.resize(300);
+  partial.angle_min = -0.0;
+  scans.push_back(partial);
+  partial.angle_min = 0.0;
+  scans.push_back(partial);
+  ScanFields turns = room;
+  turns.ranges.insert(turns.ranges.end(), room.ranges.begin(), room.ranges.end());
+  turns.ranges.insert(turns.ranges.end(), room.ranges.begin(), room.ranges.end());
+  turns.angle_increment = 2.9 * room.angle_increment;
+  scans.push_back(turns);
+  ScanFields huge = partial;
+  huge.angle_increment = 1e306;
+  scans.push_back(huge);
+  ScanFields nan_start = partial;
+  nan_start.angle_min = std::numeric_limits<double>::quiet_NaN();
+  scans.push_back(nan_start);
+  scans.push_back(room);
+  core::ScanBeams beams;
+  core::SensorView view;
+  for (std::size_t k = 0; k < scans.size(); ++k) {
+    const ScanFields& scan = scans[k];
+    const core::SensorView fresh = freshView(scan, 0.1);
+    core::scanView(scan.ranges, scan.angle_min, scan.angle_increment, scan.range_min,
+                   scan.range_max, 0.1, beams, view);
+    ASSERT_EQ(view.returns.size(), fresh.returns.size()) << "scan " << k;
+    for (std::size_t i = 0; i < view.returns.size(); ++i) {
+      EXPECT_EQ(view.returns[i].key, fresh.returns[i].key) << "scan " << k;
+      EXPECT_TRUE(sameBits(view.returns[i].point.x(), fresh.returns[i].point.x()) &&
+                  sameBits(view.returns[i].point.y(), fresh.returns[i].point.y()))
+          << "scan " << k << ", return " << i;
+    }
+    const auto& got = view.free_space.segments();
+    const auto& want = fresh.free_space.segments();
+    ASSERT_EQ(got.size(), want.size()) << "scan " << k;
+    for (std::size_t i = 0; i < got.size(); ++i) {
+      EXPECT_TRUE(sameBits(got[i].direction.x(), want[i].direction.x()) &&
+                  sameBits(got[i].direction.y(), want[i].direction.y()) &&
+                  sameBits(got[i].from, want[i].from) && sameBits(got[i].to, want[i].to) &&
+                  got[i].no_return == want[i].no_return)
+          << "scan " << k << ", segment " << i;
+    }
+    const core::SensorView plain = core::scanView(scan.ranges, scan.angle_min, scan.angle_increment,
+                                                  scan.range_min, scan.range_max, 0.1);
+    EXPECT_EQ(plain.full_turn, view.full_turn) << "scan " << k;
+  }
 }
 
 /// FNV-1a (64 bits) over the bytes of everything the scan pipeline hands on: a change of any bit
