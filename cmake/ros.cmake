@@ -13,6 +13,7 @@ add_library(ellipse_collision_ros
   src/ros/reconfigure.cpp
   src/ros/scan_obstacles.cpp
   src/ros/source_subscribers.cpp
+  src/ros/tf_listener.cpp
   src/ros/tf_lookup.cpp
   src/ros/urdf_links.cpp)
 target_include_directories(ellipse_collision_ros PUBLIC include ${catkin_INCLUDE_DIRS})

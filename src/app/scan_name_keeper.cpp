@@ -1,6 +1,7 @@
 #include "ellipse_collision/app/scan_name_keeper.h"
 
 #include <algorithm>
+#include <array>
 #include <tuple>
 #include <unordered_set>
 
@@ -8,9 +9,15 @@ namespace ellipse_collision::app {
 namespace {
 
 /// The keys of `span` as at most two plain intervals [first, last] of a ring of `ring` keys.
-std::vector<std::pair<std::size_t, std::size_t>> intervals(const KeySpan& span, std::size_t ring) {
-  if (span.first <= span.last) return {{span.first, span.last}};
-  return {{span.first, ring - 1}, {0, span.last}};
+struct Intervals {
+  std::array<std::pair<std::size_t, std::size_t>, 2> interval;
+  std::size_t count;
+  const std::pair<std::size_t, std::size_t>* begin() const { return interval.data(); }
+  const std::pair<std::size_t, std::size_t>* end() const { return interval.data() + count; }
+};
+Intervals intervals(const KeySpan& span, std::size_t ring) {
+  if (span.first <= span.last) return {{{{span.first, span.last}, {0, 0}}}, 1};
+  return {{{{span.first, ring - 1}, {0, span.last}}}, 2};
 }
 
 std::size_t length(const KeySpan& span, std::size_t ring) {

@@ -24,6 +24,7 @@ SensorObstacles toSpecs(const core::ContourEllipses& fit, const std::string& fra
   result.unneeded_hints = fit.unneeded_hints;
   if (!fit.error.empty()) result.skipped.push_back(fit.error);
   result.ellipses.reserve(fit.ellipses.size());
+  result.spans.reserve(fit.ellipses.size());
   std::unordered_map<std::size_t, std::size_t> starts;  // ellipses so far per key
   for (const core::ContourEllipse& contour : fit.ellipses) {
     const core::Ellipse& e = contour.ellipse;
@@ -46,14 +47,21 @@ void addObjects(const std::vector<std::vector<core::SensorReturn>>& contours,
   // A key in two contours (a cloud's angular bin holds points at several ranges) leaves the
   // ellipse starting there in no object: it stands.
   constexpr std::size_t kAmbiguous = static_cast<std::size_t>(-1);
-  std::unordered_map<std::size_t, std::size_t> contour_of_key;
+  constexpr std::size_t kNone = kAmbiguous - 1;
+  // Keys are beams or bins, below key_ring: a table, not a hash map of every return.
+  std::vector<std::size_t> contour_of_key(result.key_ring, kNone);
   result.objects.reserve(contours.size());
   for (const std::vector<core::SensorReturn>& contour : contours) {
     SensorObject object;
     for (const core::SensorReturn& r : contour) {
       object.centroid += r.point;
-      const auto [it, added] = contour_of_key.emplace(r.key, result.objects.size());
-      if (!added && it->second != result.objects.size()) it->second = kAmbiguous;
+      if (r.key >= contour_of_key.size()) contour_of_key.resize(r.key + 1, kNone);
+      std::size_t& of_key = contour_of_key[r.key];
+      if (of_key == kNone) {
+        of_key = result.objects.size();
+      } else if (of_key != result.objects.size()) {
+        of_key = kAmbiguous;
+      }
     }
     if (!contour.empty()) object.centroid /= static_cast<double>(contour.size());
     for (const core::SensorReturn& r : contour) {
@@ -72,10 +80,9 @@ void addObjects(const std::vector<std::vector<core::SensorReturn>>& contours,
     result.objects.push_back(object);
   }
   for (std::size_t i = 0; i < fit.ellipses.size(); ++i) {
-    const auto found = contour_of_key.find(fit.ellipses[i].key);
-    if (found != contour_of_key.end() && found->second != kAmbiguous) {
-      result.objects[found->second].ellipses.push_back(i);
-    }
+    const std::size_t key = fit.ellipses[i].key;
+    const std::size_t of_key = key < contour_of_key.size() ? contour_of_key[key] : kNone;
+    if (of_key != kNone && of_key != kAmbiguous) result.objects[of_key].ellipses.push_back(i);
   }
   // Contours that got no ellipse (too few returns) are no object.
   result.objects.erase(std::remove_if(result.objects.begin(), result.objects.end(),
@@ -117,8 +124,18 @@ SensorObstacles scanObstacles(const std::vector<float>& ranges, double angle_min
                               double angle_increment, double range_min, double range_max,
                               const std::string& frame_id, const ScanObstacleSettings& settings,
                               const std::vector<std::size_t>& split_hints) {
-  const core::SensorView view = core::scanView(ranges, angle_min, angle_increment, range_min,
-                                               range_max, settings.free_space_tolerance);
+  ScanBuffers buffers;
+  return scanObstacles(ranges, angle_min, angle_increment, range_min, range_max, frame_id, settings,
+                       split_hints, buffers);
+}
+
+SensorObstacles scanObstacles(const std::vector<float>& ranges, double angle_min,
+                              double angle_increment, double range_min, double range_max,
+                              const std::string& frame_id, const ScanObstacleSettings& settings,
+                              const std::vector<std::size_t>& split_hints, ScanBuffers& buffers) {
+  core::scanView(ranges, angle_min, angle_increment, range_min, range_max,
+                 settings.free_space_tolerance, buffers.beams, buffers.view);
+  const core::SensorView& view = buffers.view;
   const auto contours =
       core::breakContours(view, settings.range_noise_sigma, settings.cluster_distance,
                           static_cast<std::size_t>(settings.min_cluster_points));

@@ -3,6 +3,7 @@
 #include <Eigen/Cholesky>
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <optional>
 
@@ -231,32 +232,72 @@ BeamReading readBeam(double r, double range_min, double range_max) {
 
 SensorView scanView(const std::vector<float>& ranges, double angle_min, double angle_increment,
                     double range_min, double range_max, double free_space_tolerance) {
+  ScanBeams beams;
   SensorView view;
-  view.returns.reserve(ranges.size());
-  std::vector<FreeSegment> free;
-  free.reserve(ranges.size());
-  const double lowest = std::max(range_min, 0.0);
-  for (std::size_t i = 0; i < ranges.size(); ++i) {
+  scanView(ranges, angle_min, angle_increment, range_min, range_max, free_space_tolerance, beams,
+           view);
+  return view;
+}
+
+void ScanBeams::update(std::size_t count, double angle_min, double angle_increment) {
+  // Bit for bit: -0.0 and 0.0 give directions of different signs.
+  const auto same = [](double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; };
+  if (set_ && count == finite_.size() && same(angle_min, angle_min_) &&
+      same(angle_increment, angle_increment_)) {
+    return;
+  }
+  set_ = true;
+  angle_min_ = angle_min;
+  angle_increment_ = angle_increment;
+  finite_.assign(count, 0);
+  directions_.assign(count, Eigen::Vector2d::Zero());
+  angles_.assign(count, 0.0);
+  order_.clear();
+  for (std::size_t i = 0; i < count; ++i) {
     const double angle = angle_min + static_cast<double>(i) * angle_increment;
     if (!std::isfinite(angle)) continue;
+    finite_[i] = 1;
+    directions_[i] = Eigen::Vector2d(std::cos(angle), std::sin(angle));
+    angles_[i] = std::atan2(directions_[i].y(), directions_[i].x());
+    order_.push_back(i);
+  }
+  std::stable_sort(order_.begin(), order_.end(),
+                   [&](std::size_t a, std::size_t b) { return angles_[a] < angles_[b]; });
+}
+
+void scanView(const std::vector<float>& ranges, double angle_min, double angle_increment,
+              double range_min, double range_max, double free_space_tolerance, ScanBeams& beams,
+              SensorView& view) {
+  beams.update(ranges.size(), angle_min, angle_increment);
+  view.returns.clear();
+  view.returns.reserve(ranges.size());
+  const double lowest = std::max(range_min, 0.0);
+  for (std::size_t i = 0; i < ranges.size(); ++i) {
+    if (beams.finite(i) && readBeam(ranges[i], range_min, range_max) == BeamReading::Return) {
+      view.returns.push_back({static_cast<double>(ranges[i]) * beams.direction(i), i});
+    }
+  }
+  // The free segments in the free space's order (by angle, ties in beam order): as FreeSpace()
+  // would sort the beams', without the atan2 calls and the sort.
+  view.free_space.clear();
+  for (const std::size_t i : beams.order()) {
     const double r = ranges[i];
-    const Eigen::Vector2d direction(std::cos(angle), std::sin(angle));
     switch (readBeam(r, range_min, range_max)) {
       case BeamReading::Return:
-        view.returns.push_back({r * direction, i});
-        free.push_back({direction, lowest, r - free_space_tolerance});
+        view.free_space.appendInOrder({beams.direction(i), lowest, r - free_space_tolerance},
+                                      beams.freeSpaceAngle(i));
         break;
       case BeamReading::NoReturn:
-        free.push_back({direction, lowest, std::min(range_max, kMaxCoordinate), true});
+        view.free_space.appendInOrder(
+            {beams.direction(i), lowest, std::min(range_max, kMaxCoordinate), true},
+            beams.freeSpaceAngle(i));
         break;
       case BeamReading::Unknown:
         break;
     }
   }
-  view.free_space = FreeSpace(std::move(free));
   const double turn = std::abs(angle_increment) * static_cast<double>(ranges.size());
   view.full_turn = std::abs(turn - 2.0 * kPi) <= 0.5 * std::abs(angle_increment);
-  return view;
 }
 
 SensorView cloudView(const std::vector<Eigen::Vector2d>& points, double free_space_tolerance) {

@@ -9,10 +9,13 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <limits>
 #include <map>
 #include <random>
@@ -617,6 +620,242 @@ TEST(ScanObstacleSettings, NewSettingsAreRefusedOutsideTheirRangeNamingTheKey) {
   EXPECT_EQ(findInvalidSetting(s)->actual, "-0.01");
   s.range_noise_sigma = 0.0;  // a perfect sensor is allowed
   EXPECT_FALSE(findInvalidSetting(s).has_value());
+}
+
+/// A scan's view as scanView() made it before it kept its beams: each beam's free segment in
+/// beam order, sorted by FreeSpace's own constructor.
+core::SensorView freshView(const ScanFields& scan, double tolerance) {
+  core::SensorView view;
+  std::vector<core::FreeSegment> free;
+  for (std::size_t i = 0; i < scan.ranges.size(); ++i) {
+    const double angle = scan.angle_min + static_cast<double>(i) * scan.angle_increment;
+    if (!std::isfinite(angle)) continue;
+    const double r = scan.ranges[i];
+    const Eigen::Vector2d direction(std::cos(angle), std::sin(angle));
+    switch (core::readBeam(r, scan.range_min, scan.range_max)) {
+      case core::BeamReading::Return:
+        view.returns.push_back({r * direction, i});
+        free.push_back({direction, std::max(scan.range_min, 0.0), r - tolerance});
+        break;
+      case core::BeamReading::NoReturn:
+        free.push_back({direction, std::max(scan.range_min, 0.0),
+                        std::min(scan.range_max, core::kMaxCoordinate), true});
+        break;
+      case core::BeamReading::Unknown:
+        break;
+    }
+  }
+  view.free_space = core::FreeSpace(std::move(free));
+  return view;
+}
+
+bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+TEST(ScanView, BeamsKeptFromScanToScanGiveTheSameViewBitForBit) {
+  // One ScanBeams and one view kept through scans of changing geometry: a full turn, the same
+  // beams reversed, a partial turn, three turns (the angles wrap), angle_min -0.0 then 0.0 (the
+  // directions' signs differ), beams whose angle is not finite; ranges with NaN, +-inf and
+  // returns below range_min.
+  std::vector<ScanFields> scans;
+  ScanFields room = test::castScan(test::roomWorld(), 720, 10.0, 0.01, 3);
+  for (const int i : {7, 100, 101, 500}) room.ranges[i] = std::numeric_limits<float>::quiet_NaN();
+  room.ranges[200] = -std::numeric_limits<float>::infinity();
+  room.ranges[201] = 0.01f;
+  scans.push_back(room);
+  scans.push_back(room);
+  ScanFields reversed = room;
+  reversed.angle_min = test::kScanPi;
+  reversed.angle_increment = -room.angle_increment;
+  scans.push_back(reversed);
+  ScanFields partial = room;
+  partial.ranges.resize(300);
+  partial.angle_min = -0.0;
+  scans.push_back(partial);
+  partial.angle_min = 0.0;
+  scans.push_back(partial);
+  ScanFields turns = room;
+  turns.ranges.insert(turns.ranges.end(), room.ranges.begin(), room.ranges.end());
+  turns.ranges.insert(turns.ranges.end(), room.ranges.begin(), room.ranges.end());
+  turns.angle_increment = 2.9 * room.angle_increment;
+  scans.push_back(turns);
+  ScanFields huge = partial;
+  huge.angle_increment = 1e306;
+  scans.push_back(huge);
+  ScanFields nan_start = partial;
+  nan_start.angle_min = std::numeric_limits<double>::quiet_NaN();
+  scans.push_back(nan_start);
+  scans.push_back(room);
+  core::ScanBeams beams;
+  core::SensorView view;
+  for (std::size_t k = 0; k < scans.size(); ++k) {
+    const ScanFields& scan = scans[k];
+    const core::SensorView fresh = freshView(scan, 0.1);
+    core::scanView(scan.ranges, scan.angle_min, scan.angle_increment, scan.range_min,
+                   scan.range_max, 0.1, beams, view);
+    ASSERT_EQ(view.returns.size(), fresh.returns.size()) << "scan " << k;
+    for (std::size_t i = 0; i < view.returns.size(); ++i) {
+      EXPECT_EQ(view.returns[i].key, fresh.returns[i].key) << "scan " << k;
+      EXPECT_TRUE(sameBits(view.returns[i].point.x(), fresh.returns[i].point.x()) &&
+                  sameBits(view.returns[i].point.y(), fresh.returns[i].point.y()))
+          << "scan " << k << ", return " << i;
+    }
+    const auto& got = view.free_space.segments();
+    const auto& want = fresh.free_space.segments();
+    ASSERT_EQ(got.size(), want.size()) << "scan " << k;
+    for (std::size_t i = 0; i < got.size(); ++i) {
+      EXPECT_TRUE(sameBits(got[i].direction.x(), want[i].direction.x()) &&
+                  sameBits(got[i].direction.y(), want[i].direction.y()) &&
+                  sameBits(got[i].from, want[i].from) && sameBits(got[i].to, want[i].to) &&
+                  got[i].no_return == want[i].no_return)
+          << "scan " << k << ", segment " << i;
+    }
+    const core::SensorView plain = core::scanView(scan.ranges, scan.angle_min, scan.angle_increment,
+                                                  scan.range_min, scan.range_max, 0.1);
+    EXPECT_EQ(plain.full_turn, view.full_turn) << "scan " << k;
+  }
+}
+
+/// FNV-1a (64 bits) over the bytes of everything the scan pipeline hands on: a change of any bit
+/// of any field of any ellipse, name, span, object, hint or skip note changes it.
+class OutputDigest {
+ public:
+  void add(const void* data, std::size_t size) {
+    const auto* bytes = static_cast<const unsigned char*>(data);
+    for (std::size_t i = 0; i < size; ++i) value_ = (value_ ^ bytes[i]) * 0x100000001b3ULL;
+  }
+  void add(double v) { add(&v, sizeof v); }
+  void add(std::size_t v) { add(&v, sizeof v); }
+  void add(const std::string& s) {
+    add(s.size());
+    add(s.data(), s.size());
+  }
+  void add(const SensorObstacles& o) {
+    add(o.ellipses.size());
+    for (const EllipseSpec& e : o.ellipses) {
+      add(e.name), add(e.frame_id);
+      for (const double v :
+           {e.x, e.y, e.angle, e.radius_x, e.radius_y, e.padding, e.vx, e.vy, e.angular_velocity}) {
+        add(v);
+      }
+      add(static_cast<std::size_t>(e.ellipsoid.has_value()));
+    }
+    add(o.skipped.size());
+    for (const std::string& s : o.skipped) add(s);
+    add(o.spans.size());
+    for (const KeySpan& span : o.spans) add(span.first), add(span.last);
+    add(o.key_ring);
+    add(o.unneeded_hints.size());
+    for (const std::size_t key : o.unneeded_hints) add(key);
+    add(o.objects.size());
+    for (const SensorObject& object : o.objects) {
+      add(object.centroid.x()), add(object.centroid.y()), add(object.extent);
+      add(static_cast<std::size_t>(object.occluded));
+      add(object.ellipses.size());
+      for (const std::size_t i : object.ellipses) add(i);
+    }
+  }
+  std::uint64_t value() const { return value_; }
+
+ private:
+  std::uint64_t value_{0xcbf29ce484222325ULL};
+};
+
+/// The digest of the scan pipeline's output over the scenes of this file and the CPU benchmarks
+/// (bench_scan_obstacles, scripts/nodelet_cpu.sh's moving box), scans alone and in series with
+/// tracking (the sensor standing and driving), partial and reversed scans, a cloud.
+std::uint64_t scanPipelineDigest() {
+  OutputDigest digest;
+  const ScanObstacleSettings settings;
+  const auto alone = [&](const ScanFields& scan) {
+    digest.add(run(scan));
+    return scan;
+  };
+  // Scans alone: the rooms with noise, NaN and inf beams, poles with drop-outs, a glancing wall,
+  // a partial turn and the same beams in reverse order.
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+    alone(test::castScan(test::roomWorld(), 720, 10.0, 0.01, seed));
+  }
+  ScanFields objects = test::castScan(test::objectRoomWorld(), 720, 30.0, 0.005, 40);
+  for (const int i : {5, 200, 400}) objects.ranges[i] = std::numeric_limits<float>::quiet_NaN();
+  objects.ranges[300] = std::numeric_limits<float>::infinity();
+  alone(objects);
+  for (const int beams : {360, 720, 1080, 1440}) {
+    for (const double offset : {0.0, 0.3, 0.5}) {
+      for (const bool wall : {false, true}) {
+        ScanFields pole = poleScan(beams, 2.8, offset, wall);
+        alone(pole);
+        pole.ranges[static_cast<std::size_t>(beams / 2)] = std::numeric_limits<float>::infinity();
+        alone(pole);
+      }
+    }
+  }
+  World glancing;
+  glancing.walls.push_back({{-5.0, 0.4}, {8.0, 1.2}});
+  alone(test::castScan(glancing, 1440, 30.0, 0.005, 3));
+  ScanFields partial = test::castScan(test::roomWorld(), 720, 10.0, 0.01, 11);
+  partial.ranges.resize(500);
+  alone(partial);
+  ScanFields reversed = test::castScan(test::roomWorld(), 720, 10.0, 0.01, 12);
+  std::reverse(reversed.ranges.begin(), reversed.ranges.end());
+  reversed.angle_min = -reversed.angle_min - reversed.angle_increment;
+  reversed.angle_increment = -reversed.angle_increment;
+  alone(reversed);
+  // In series with tracking: the load's posts, wall and moving box (the sensor standing), then
+  // the room driven through (the sensor moving).
+  SensorObstacleSeries standing{settings}, driving{settings};
+  for (int step = 0; step < 80; ++step) {
+    World world;
+    for (const auto& [x, y, r] : std::vector<std::array<double, 3>>{{3.0, 2.0, 0.15},
+                                                                    {3.0, -2.0, 0.15},
+                                                                    {-2.0, 2.5, 0.2},
+                                                                    {-2.5, -1.5, 0.25},
+                                                                    {1.0, 3.0, 0.1},
+                                                                    {5.0, 0.5, 0.3}}) {
+      world.pillars.push_back({{x, y}, r});
+    }
+    const double phase = 2.0 * test::kScanPi * step / 80;
+    world.pillars.push_back({{1.6 + 0.4 * std::cos(phase), 1.2 * std::sin(phase)}, 0.25});
+    world.walls.push_back({{6.0, -100.0}, {6.0, 100.0}});
+    const ScanFields scan = test::castScan(world, 720, 10.0, 0.005, 1000 + step);
+    SensorObstacles obstacles = standing.scan(scan.ranges, scan.angle_min, scan.angle_increment,
+                                              scan.range_min, scan.range_max, "laser");
+    standing.trackScan(0.025 * step, {}, obstacles);
+    digest.add(obstacles);
+  }
+  for (int step = 0; step < 40; ++step) {
+    World world = test::roomWorld();
+    const Eigen::Vector2d shift(-0.02 * step, 0.0);
+    for (test::WorldSegment& w : world.walls) w.a += shift, w.b += shift;
+    for (test::WorldCircle& c : world.pillars) c.centre += shift;
+    const ScanFields scan = test::castScan(world, 720, 10.0, 0.01, 100 + step);
+    SensorObstacles obstacles = driving.scan(scan.ranges, scan.angle_min, scan.angle_increment,
+                                             scan.range_min, scan.range_max, "laser");
+    driving.trackScan(0.025 * step, {0.02 * step, 0.0, 0.0, 0.0}, obstacles);
+    digest.add(obstacles);
+  }
+  // A cloud, alone and in series.
+  ScanObstacleSettings cloud_settings;
+  cloud_settings.z_min = -0.3;
+  cloud_settings.z_max = 1.5;
+  const auto cloud = test::castCloud(test::roomWorld(), 16, 1000);
+  digest.add(cloudObstacles(cloud, "lidar", cloud_settings));
+  SensorObstacleSeries clouds{cloud_settings};
+  for (int step = 0; step < 3; ++step) {
+    SensorObstacles obstacles = clouds.cloud(cloud, "lidar");
+    clouds.trackCloud(0.1 * step, {}, obstacles);
+    digest.add(obstacles);
+  }
+  return digest.value();
+}
+
+TEST(ScanOutputBits, StayAsRecordedWhileTheCodeIsMadeFaster) {
+  // A refactoring or speed-up of the pipeline must leave every bit of its output as it was. The
+  // value was recorded on x86-64 Debian 12 (GCC 12, glibc 2.36); a change meant to change the
+  // output (or another libm's last bits) records the printed value anew, after the guarantee
+  // tests above pass.
+  const std::uint64_t digest = scanPipelineDigest();
+  std::printf("scan pipeline output digest: 0x%016llx\n", static_cast<unsigned long long>(digest));
+  EXPECT_EQ(digest, 0xbee67cb0c6074e1cULL);
 }
 
 }  // namespace

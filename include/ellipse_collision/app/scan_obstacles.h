@@ -7,6 +7,7 @@
 
 #include "ellipse_collision/app/ellipse_spec.h"
 #include "ellipse_collision/app/field_error.h"
+#include "ellipse_collision/core/scan_contours.h"
 
 namespace ellipse_collision::app {
 
@@ -94,6 +95,19 @@ SensorObstacles scanObstacles(const std::vector<float>& ranges, double angle_min
                               double angle_increment, double range_min, double range_max,
                               const std::string& frame_id, const ScanObstacleSettings& settings,
                               const std::vector<std::size_t>& split_hints = {});
+
+/// What scanObstacles() keeps from one scan of a sensor to the next: the beams' trigonometry
+/// (core::ScanBeams) and the storage of the scan's view. The output is the same with fresh ones.
+struct ScanBuffers {
+  core::ScanBeams beams;
+  core::SensorView view;
+};
+
+/// scanObstacles() reusing `buffers` (SensorObstacleSeries keeps one per sensor).
+SensorObstacles scanObstacles(const std::vector<float>& ranges, double angle_min,
+                              double angle_increment, double range_min, double range_max,
+                              const std::string& frame_id, const ScanObstacleSettings& settings,
+                              const std::vector<std::size_t>& split_hints, ScanBuffers& buffers);
 
 /// A point cloud's points [m] (x, y, z in the cloud's frame, any order): those with z within
 /// [z_min, z_max] projected onto the xy-plane (core::cloudView(): the rays from the frame's

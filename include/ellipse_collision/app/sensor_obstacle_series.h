@@ -48,6 +48,7 @@ class SensorObstacleSeries {
   ObstacleTracker scan_tracker_;
   ObstacleTracker cloud_tracker_;
   ScanCutMemory scan_splits_;
+  ScanBuffers scan_buffers_;  ///< the beams' trigonometry and the view's storage, reused
   ScanNameKeeper scan_names_;
   ScanNameKeeper cloud_names_;
 };

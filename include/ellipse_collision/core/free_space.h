@@ -54,6 +54,21 @@ class FreeSpace {
 
   const std::vector<FreeSegment>& segments() const { return segments_; }
 
+  /// Refilling in place, keeping the storage (a sensor's next message): clear(), then
+  /// appendInOrder() of each segment in the order FreeSpace(segments) would keep them, `angle`
+  /// [rad] being the atan2 of its direction (ScanBeams knows both for a scan's beams). The result
+  /// is the same as FreeSpace(segments), without its atan2 calls and sort. An empty segment
+  /// (to <= from) is dropped as the constructor drops it.
+  void clear() {
+    segments_.clear();
+    angles_.clear();
+  }
+  void appendInOrder(const FreeSegment& segment, double angle) {
+    if (!(segment.to > segment.from) || !segment.direction.allFinite()) return;
+    segments_.push_back(segment);
+    angles_.push_back(angle);
+  }
+
  private:
   /// Calls visit(segment) for every segment whose beam angle lies within `half_width` [rad] of
   /// `angle` [rad] (every segment when half_width >= pi); stops when visit returns true.

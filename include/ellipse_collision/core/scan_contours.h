@@ -41,6 +41,38 @@ struct SensorView {
 SensorView scanView(const std::vector<float>& ranges, double angle_min, double angle_increment,
                     double range_min, double range_max, double free_space_tolerance);
 
+/// The beams of one LaserScan geometry (beam i at angle_min + i angle_increment [rad]): whether
+/// each angle is finite, its unit direction, the atan2 of that direction (the angle FreeSpace
+/// orders by) and the finite beams in FreeSpace's order. A sensor's scans share their geometry:
+/// kept from scan to scan, the trigonometry of scanView() is done once instead of per scan.
+class ScanBeams {
+ public:
+  /// Recomputes for this geometry unless it holds it already (the same bits).
+  void update(std::size_t count, double angle_min, double angle_increment);
+
+  std::size_t size() const { return finite_.size(); }
+  bool finite(std::size_t i) const { return finite_[i] != 0; }
+  const Eigen::Vector2d& direction(std::size_t i) const { return directions_[i]; }
+  double freeSpaceAngle(std::size_t i) const { return angles_[i]; }
+  /// The beams with a finite angle by freeSpaceAngle(), ties in beam order.
+  const std::vector<std::size_t>& order() const { return order_; }
+
+ private:
+  bool set_{false};
+  double angle_min_{0.0};
+  double angle_increment_{0.0};
+  std::vector<char> finite_;
+  std::vector<Eigen::Vector2d> directions_;
+  std::vector<double> angles_;
+  std::vector<std::size_t> order_;
+};
+
+/// scanView() written into `view`, reusing its storage, with the trigonometry of `beams`
+/// (updated to this scan's geometry first): the same view, bit for bit.
+void scanView(const std::vector<float>& ranges, double angle_min, double angle_increment,
+              double range_min, double range_max, double free_space_tolerance, ScanBeams& beams,
+              SensorView& view);
+
 /// The angular bins of cloudView(): 16384 a turn (0.022 degrees each), finer than the columns of
 /// common 3D lidars, so that each bin's ray is one column's.
 constexpr std::size_t kCloudBins = 16384;

@@ -8,7 +8,6 @@
 #include <std_srvs/SetBool.h>
 #include <std_srvs/Trigger.h>
 #include <tf2_ros/buffer.h>
-#include <tf2_ros/transform_listener.h>
 
 #include <cstdint>
 #include <memory>
@@ -26,6 +25,7 @@
 #include "ellipse_collision/ros/node_config.h"
 #include "ellipse_collision/ros/reconfigure.h"
 #include "ellipse_collision/ros/source_subscribers.h"
+#include "ellipse_collision/ros/tf_listener.h"
 
 namespace ellipse_collision {
 
@@ -101,7 +101,7 @@ class CollisionNode {
   ros::NodeHandle private_nh_;
   NodeConfig config_;
   tf2_ros::Buffer tf_buffer_;
-  tf2_ros::TransformListener tf_listener_;
+  TfListener tf_listener_;
   /// The algorithm: stored ellipses, checks, state, health, persistence.
   std::unique_ptr<app::CollisionMonitor> monitor_;
 

@@ -4,7 +4,6 @@
 #include <sensor_msgs/LaserScan.h>
 #include <sensor_msgs/PointCloud2.h>
 #include <tf2_ros/buffer.h>
-#include <tf2_ros/transform_listener.h>
 
 #include <Eigen/Core>
 #include <string>
@@ -13,6 +12,7 @@
 #include "ellipse_collision/app/scan_obstacles.h"
 #include "ellipse_collision/app/sensor_obstacle_series.h"
 #include "ellipse_collision/ros/messages.h"
+#include "ellipse_collision/ros/tf_listener.h"
 
 namespace ellipse_collision {
 
@@ -64,7 +64,7 @@ class ScanObstaclesNode {
   ros::Subscriber scan_sub_;
   ros::Subscriber cloud_sub_;
   tf2_ros::Buffer tf_buffer_;
-  tf2_ros::TransformListener tf_listener_{tf_buffer_};
+  TfListener tf_listener_{tf_buffer_};
 };
 
 }  // namespace ellipse_collision
